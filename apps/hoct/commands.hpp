@@ -1,0 +1,13 @@
+// The hoct command-line tool: each subcommand lives in its own cmd_*.cpp and registers itself
+// on the top-level CLI11 app. Commands are thin: they parse options, call the library, print.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+namespace hoct::cli {
+
+void register_info(CLI::App &app);
+void register_generate(CLI::App &app);
+void register_eval(CLI::App &app);
+
+} // namespace hoct::cli

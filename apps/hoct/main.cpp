@@ -1,0 +1,30 @@
+#include "commands.hpp"
+#include "error.hpp"
+
+#include <cstdio>
+#include <exception>
+#include <iostream>
+
+int main(int argc, char **argv) {
+  CLI::App app{"hoct: exact contour trees of piecewise-polynomial fields on triangle meshes"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", "hoct 0.1.0");
+  hoct::cli::register_info(app);
+  hoct::cli::register_generate(app);
+  hoct::cli::register_eval(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError &e) {
+    return app.exit(e);
+  } catch (const hoct::Error &e) {
+    std::cerr << "hoct: error: " << e.what() << "\n";
+    return 1;
+  } catch (const std::bad_alloc &) {
+    std::cerr << "hoct: error: out of memory\n";
+    return 1;
+  } catch (const std::exception &e) {
+    std::cerr << "hoct: internal error: " << e.what() << "\n";
+    return 2;
+  }
+  return 0;
+}

@@ -1,0 +1,25 @@
+// Synthetic datasets modelled on the thesis' chapter 5 (conductor, gauss, heater, sphere,
+// two-triangle) plus a smooth random field of any size and degree. Deterministic for a seed.
+#pragma once
+
+#include "mesh/mesh_input.hpp"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace hoct {
+
+struct DatasetOptions {
+  int degree = 0;          // 0 = the dataset's own default
+  long long cells = 0;     // target number of cells; 0 = the dataset's own default
+  uint64_t seed = 1;
+};
+
+// Names accepted by generate_dataset, in a stable order.
+const std::vector<std::string> &dataset_names();
+
+// Builds the dataset. Throws hoct::Error for an unknown name or options out of range.
+MeshInput generate_dataset(const std::string &name, const DatasetOptions &options);
+
+} // namespace hoct

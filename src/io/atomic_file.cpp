@@ -1,0 +1,47 @@
+#include "io/atomic_file.hpp"
+
+#include "error.hpp"
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <unistd.h>
+
+namespace hoct {
+
+void write_file_atomic(const std::string &path, const std::function<void(std::ostream &)> &write,
+                       bool binary) {
+  namespace fs = std::filesystem;
+  const fs::path target(path);
+  if (target.filename().empty())
+    throw Error(path + ": not a file name");
+  std::random_device rd;
+  const std::string tmp = (target.parent_path() / ("." + target.filename().string() + ".tmp-" +
+                                                   std::to_string(::getpid()) + "-" +
+                                                   std::to_string(rd() % 1000000)))
+                              .string();
+  try {
+    {
+      std::ofstream out(tmp, binary ? std::ios::binary | std::ios::trunc : std::ios::trunc);
+      if (!out)
+        throw Error(path + ": cannot open for writing: " + std::strerror(errno));
+      write(out);
+      out.flush();
+      if (!out)
+        throw Error(path + ": write failed (disk full or I/O error)");
+    }
+    std::error_code ec;
+    fs::rename(tmp, target, ec);
+    if (ec)
+      throw Error(path + ": cannot rename temporary file into place: " + ec.message());
+  } catch (...) {
+    std::error_code ignored;
+    fs::remove(tmp, ignored);
+    throw;
+  }
+}
+
+} // namespace hoct

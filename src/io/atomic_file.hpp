@@ -1,0 +1,17 @@
+// Atomic file output: write to a temporary file beside the target, then rename over it, so a
+// failed or interrupted write never leaves a half-written file under the target's name.
+#pragma once
+
+#include <functional>
+#include <ostream>
+#include <string>
+
+namespace hoct {
+
+// Calls write(stream) on a temporary file in the target's directory, flushes, checks the stream,
+// and renames it to `path`. On any failure (exception from write, I/O error) the temporary file is
+// removed, the target is left untouched, and hoct::Error is thrown naming the file.
+void write_file_atomic(const std::string &path, const std::function<void(std::ostream &)> &write,
+                       bool binary = true);
+
+} // namespace hoct

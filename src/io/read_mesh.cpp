@@ -1,0 +1,23 @@
+#include "io/read_mesh.hpp"
+
+#include "error.hpp"
+#include "io/msh_reader.hpp"
+#include "io/vtu_reader.hpp"
+
+#include <algorithm>
+#include <filesystem>
+
+namespace hoct {
+
+MeshInput read_mesh(const std::string &path, const std::string &scalar) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  if (ext == ".vtu")
+    return read_vtu(path, scalar);
+  if (ext == ".msh")
+    return read_msh(path, scalar);
+  throw InputError(path + ": unknown file type '" + ext +
+                   "' (supported: .vtu VTK XML UnstructuredGrid, .msh Gmsh 4.1)");
+}
+
+} // namespace hoct

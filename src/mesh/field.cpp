@@ -1,0 +1,160 @@
+#include "mesh/field.hpp"
+
+#include "poly/lattice.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace hoct {
+namespace {
+
+// The values of cell c's nodes along local edge k, from corner k to corner k+1.
+void edge_node_values(const MeshInput &in, int64_t c, int k, std::vector<double> &out,
+                      std::vector<int64_t> &ids) {
+  const int d = in.cell_degree[c];
+  out.resize(d + 1);
+  ids.resize(d + 1);
+  for (int t = 0; t <= d; ++t) {
+    const int64_t p = in.cell_nodes[in.cell_offsets[c] + edge_lattice_index(d, k, t)];
+    ids[t] = p;
+    out[t] = in.values[p];
+  }
+}
+
+} // namespace
+
+BernsteinTriangle Field::cell_polynomial(int64_t c) const {
+  auto s = coefficients(c);
+  return BernsteinTriangle(degree_[c], std::vector<double>(s.begin(), s.end()));
+}
+
+BernsteinPoly Field::edge_polynomial(int64_t e) const {
+  return BernsteinPoly(std::vector<double>(edge_coef_.begin() + edge_offset_[e],
+                                           edge_coef_.begin() + edge_offset_[e + 1]));
+}
+
+double Field::value(int64_t c, double u, double v) const { return cell_polynomial(c)(u, v); }
+
+Field Field::build(const MeshInput &in, const Topology &topo, ProblemLog &problems) {
+  Field f;
+  const int64_t nc = topo.num_cells(), ne = topo.num_edges();
+  f.input_degree_ = in.cell_degree;
+  if (!in.values.empty()) {
+    auto [lo, hi] = std::minmax_element(in.values.begin(), in.values.end());
+    f.min_value_ = *lo;
+    f.max_value_ = *hi;
+  }
+  const double scale = std::max({std::abs(f.min_value_), std::abs(f.max_value_), 1e-300});
+  const double tol = kContinuityTolerance * scale;
+
+  // Edge degrees and owners: the lowest-id cell of the highest input degree.
+  f.edge_degree_.assign(ne, 0);
+  std::vector<int64_t> owner(ne, -1);
+  std::vector<int> owner_local(ne, -1);
+  for (int64_t e = 0; e < ne; ++e) {
+    const int64_t *cells = topo.edge_cells_begin(e);
+    for (int i = 0; i < topo.edge_cell_count(e); ++i) {
+      const int64_t c = cells[i];
+      if (in.cell_degree[c] > f.edge_degree_[e]) {
+        f.edge_degree_[e] = in.cell_degree[c];
+        owner[e] = c;
+      }
+    }
+    for (int k = 0; k < 3; ++k)
+      if (topo.cell_edge(owner[e], k) == e)
+        owner_local[e] = k;
+  }
+
+  // Edge polynomials, once per edge, from the owner's edge nodes oriented lo -> hi.
+  f.edge_offset_.assign(ne + 1, 0);
+  for (int64_t e = 0; e < ne; ++e)
+    f.edge_offset_[e + 1] = f.edge_offset_[e] + f.edge_degree_[e] + 1;
+  f.edge_coef_.resize(f.edge_offset_[ne]);
+  std::vector<double> vals, other_vals;
+  std::vector<int64_t> ids, other_ids;
+  for (int64_t e = 0; e < ne; ++e) {
+    const int64_t c = owner[e];
+    const int k = owner_local[e];
+    edge_node_values(in, c, k, vals, ids);
+    if (topo.edge_reversed(c, k)) {
+      std::reverse(vals.begin(), vals.end());
+      std::reverse(ids.begin(), ids.end());
+    }
+    const BernsteinPoly p = bernstein_from_equispaced(vals.data(), f.edge_degree_[e]);
+    std::copy(p.coefficients().begin(), p.coefficients().end(),
+              f.edge_coef_.begin() + f.edge_offset_[e]);
+
+    // Continuity: every other cell of the edge must agree with the owner.
+    const int64_t *cells = topo.edge_cells_begin(e);
+    for (int i = 0; i < topo.edge_cell_count(e); ++i) {
+      const int64_t o = cells[i];
+      if (o == c)
+        continue;
+      int ko = 0;
+      while (topo.cell_edge(o, ko) != e)
+        ++ko;
+      edge_node_values(in, o, ko, other_vals, other_ids);
+      if (topo.edge_reversed(o, ko)) {
+        std::reverse(other_vals.begin(), other_vals.end());
+        std::reverse(other_ids.begin(), other_ids.end());
+      }
+      if (other_ids == ids)
+        continue; // the same nodes: continuous by construction
+      double gap = 0.0;
+      if (other_vals.size() == vals.size()) {
+        for (std::size_t t = 0; t < vals.size(); ++t)
+          gap = std::max(gap, std::abs(other_vals[t] - vals[t]));
+      } else {
+        const BernsteinPoly q =
+            bernstein_from_equispaced(other_vals.data(), static_cast<int>(other_vals.size()) - 1)
+                .elevated(f.edge_degree_[e]);
+        for (int t = 0; t <= f.edge_degree_[e]; ++t)
+          gap = std::max(gap, std::abs(q[t] - p[t]));
+      }
+      if (!(gap <= tol)) {
+        std::ostringstream m;
+        m << "cells " << c << " and " << o << " disagree on their shared edge (points "
+          << topo.vertex_point(topo.edge_vertices(e)[0]) << "-"
+          << topo.vertex_point(topo.edge_vertices(e)[1]) << ") by " << gap
+          << " (the field must be continuous)";
+        problems.add("discontinuous field across an edge", Severity::Error, m.str());
+      }
+    }
+  }
+
+  // Cell polynomials: convert, elevate to the highest degree around, copy the edge polynomials.
+  f.degree_.resize(nc);
+  f.offset_.assign(nc + 1, 0);
+  for (int64_t c = 0; c < nc; ++c) {
+    int d = in.cell_degree[c];
+    for (int k = 0; k < 3; ++k)
+      d = std::max(d, static_cast<int>(f.edge_degree_[topo.cell_edge(c, k)]));
+    f.degree_[c] = static_cast<uint8_t>(d);
+    f.max_degree_ = std::max(f.max_degree_, d);
+    f.offset_[c + 1] = f.offset_[c] + lattice_size(d);
+  }
+  f.coef_.resize(f.offset_[nc]);
+  std::vector<double> node_vals;
+  for (int64_t c = 0; c < nc; ++c) {
+    const int din = in.cell_degree[c];
+    node_vals.resize(lattice_size(din));
+    for (int i = 0; i < lattice_size(din); ++i)
+      node_vals[i] = in.values[in.cell_nodes[in.cell_offsets[c] + i]];
+    BernsteinTriangle poly = bernstein_from_lattice_values(node_vals.data(), din);
+    if (f.degree_[c] != din)
+      poly = poly.elevated(f.degree_[c]);
+    for (int k = 0; k < 3; ++k) {
+      const int64_t e = topo.cell_edge(c, k);
+      BernsteinPoly p = f.edge_polynomial(e);
+      if (p.degree() != f.degree_[c])
+        p = p.elevated(f.degree_[c]);
+      poly.set_edge(k, topo.edge_reversed(c, k) ? p.reversed() : p);
+    }
+    std::copy(poly.coefficients().begin(), poly.coefficients().end(),
+              f.coef_.begin() + f.offset_[c]);
+  }
+  return f;
+}
+
+} // namespace hoct

@@ -1,0 +1,106 @@
+#include "mesh/geometry.hpp"
+
+#include "poly/lagrange_to_bernstein.hpp"
+#include "poly/lattice.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace hoct {
+
+double Geometry::extent() const {
+  double s = 0;
+  for (int i = 0; i < 3; ++i)
+    s += (bounds_[1][i] - bounds_[0][i]) * (bounds_[1][i] - bounds_[0][i]);
+  return std::sqrt(s);
+}
+
+Geometry Geometry::build(const MeshInput &in) {
+  Geometry g;
+  const int64_t nc = static_cast<int64_t>(in.num_cells());
+  if (!in.points.empty()) {
+    g.bounds_ = {in.points[0], in.points[0]};
+    for (const auto &p : in.points)
+      for (int i = 0; i < 3; ++i) {
+        g.bounds_[0][i] = std::min(g.bounds_[0][i], p[i]);
+        g.bounds_[1][i] = std::max(g.bounds_[1][i], p[i]);
+      }
+  }
+  const double ext = g.extent();
+  const double tol = 1e-12 * std::max(ext, 1e-300);
+  g.planar_ = g.bounds_[1][2] - g.bounds_[0][2] <= tol;
+
+  g.degree_.resize(nc);
+  g.offset_.assign(nc + 1, 0);
+  std::vector<Vec3> ctrl;
+  std::vector<double> comp;
+  for (int64_t c = 0; c < nc; ++c) {
+    const int d = in.cell_degree[c];
+    const int n = lattice_size(d);
+    const int64_t *nodes = &in.cell_nodes[in.cell_offsets[c]];
+    ctrl.assign(n, Vec3{0, 0, 0});
+    const auto &m = lagrange_to_bernstein_triangle(d);
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j) {
+        const double w = m[static_cast<std::size_t>(i) * n + j];
+        const Vec3 &p = in.points[nodes[j]];
+        for (int a = 0; a < 3; ++a)
+          ctrl[i][a] += w * p[a];
+      }
+    // Linear if every control point is the affine image of its lattice point.
+    bool linear = true;
+    const Vec3 &p0 = in.points[nodes[corner_index(d, 0)]];
+    const Vec3 &p1 = in.points[nodes[corner_index(d, 1)]];
+    const Vec3 &p2 = in.points[nodes[corner_index(d, 2)]];
+    for (int i = 0; i < n && linear; ++i) {
+      const auto q = lattice_point(d, i);
+      const double u = static_cast<double>(q[0]) / d, v = static_cast<double>(q[1]) / d;
+      for (int a = 0; a < 3; ++a) {
+        const double lin = (1 - u - v) * p0[a] + u * p1[a] + v * p2[a];
+        if (std::abs(ctrl[i][a] - lin) > tol)
+          linear = false;
+      }
+    }
+    if (linear) {
+      ctrl = {p0, p1, p2};
+      g.degree_[c] = 1;
+    } else {
+      g.degree_[c] = static_cast<uint8_t>(d);
+      ++g.curved_cells_;
+    }
+    g.offset_[c + 1] = g.offset_[c] + static_cast<int64_t>(ctrl.size());
+    g.coef_.insert(g.coef_.end(), ctrl.begin(), ctrl.end());
+  }
+  return g;
+}
+
+BernsteinTriangle Geometry::component(int64_t c, int i) const {
+  std::vector<double> v;
+  v.reserve(static_cast<std::size_t>(offset_[c + 1] - offset_[c]));
+  for (int64_t k = offset_[c]; k < offset_[c + 1]; ++k)
+    v.push_back(coef_[k][i]);
+  return BernsteinTriangle(degree_[c], std::move(v));
+}
+
+Vec3 Geometry::position(int64_t c, double u, double v) const {
+  if (degree_[c] == 1) {
+    const Vec3 *p = &coef_[offset_[c]];
+    Vec3 r;
+    for (int a = 0; a < 3; ++a)
+      r[a] = (1 - u - v) * p[0][a] + u * p[1][a] + v * p[2][a];
+    return r;
+  }
+  return {component(c, 0)(u, v), component(c, 1)(u, v), component(c, 2)(u, v)};
+}
+
+std::array<Vec3, 2> Geometry::jacobian(int64_t c, double u, double v) const {
+  std::array<Vec3, 2> j{};
+  for (int a = 0; a < 3; ++a) {
+    const auto g = component(c, a).gradient(u, v);
+    j[0][a] = g[0];
+    j[1][a] = g[1];
+  }
+  return j;
+}
+
+} // namespace hoct

@@ -1,0 +1,46 @@
+// Each cell's geometry map phi: reference triangle -> R^3, a Bernstein polynomial map of the
+// cell's own (input) degree through its Lagrange nodes, flagged linear where its control points
+// are those of the flat triangle. Used to report positions and to build refinements; the
+// algorithms themselves work in the reference triangle (DESIGN.md section 2).
+#pragma once
+
+#include "mesh/mesh_input.hpp"
+#include "poly/bernstein_triangle.hpp"
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace hoct {
+
+class Geometry {
+public:
+  static Geometry build(const MeshInput &input);
+
+  int64_t num_cells() const { return static_cast<int64_t>(degree_.size()); }
+  // Degree of the map (1 for a flat, straight-sided cell even if its input degree is higher).
+  int degree(int64_t c) const { return degree_[c]; }
+  bool is_linear(int64_t c) const { return degree_[c] == 1; }
+  // Component i (0 = x, 1 = y, 2 = z) of the map as a Bernstein polynomial.
+  BernsteinTriangle component(int64_t c, int i) const;
+  Vec3 position(int64_t c, double u, double v) const;
+  // d phi / du and d phi / dv.
+  std::array<Vec3, 2> jacobian(int64_t c, double u, double v) const;
+
+  // All points lie in the plane z = const (to 1e-12 of the extent).
+  bool planar() const { return planar_; }
+  int64_t curved_cells() const { return curved_cells_; }
+  // Axis-aligned bounding box of the input points: {min, max}.
+  const std::array<Vec3, 2> &bounds() const { return bounds_; }
+  double extent() const; // length of the bounding-box diagonal
+
+private:
+  std::vector<uint8_t> degree_;
+  std::vector<int64_t> offset_;     // into coef_, in units of control points
+  std::vector<Vec3> coef_;          // control points, canonical lattice order
+  bool planar_ = true;
+  int64_t curved_cells_ = 0;
+  std::array<Vec3, 2> bounds_{};
+};
+
+} // namespace hoct

@@ -1,0 +1,167 @@
+#include "mesh/mesh_checks.hpp"
+
+#include "poly/lattice.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace hoct {
+
+bool check_input(const MeshInput &in, ProblemLog &problems) {
+  bool ok = true;
+  const int64_t np = static_cast<int64_t>(in.points.size());
+  if (in.values.size() != in.points.size()) {
+    problems.add("inconsistent arrays", Severity::Error,
+                 std::to_string(in.points.size()) + " points but " +
+                     std::to_string(in.values.size()) + " values");
+    return false;
+  }
+  if (in.cell_offsets.size() != in.cell_degree.size() + 1 || in.cell_offsets.front() != 0 ||
+      in.cell_offsets.back() != static_cast<int64_t>(in.cell_nodes.size())) {
+    problems.add("inconsistent arrays", Severity::Error, "cell offsets do not match the cells");
+    return false;
+  }
+  if (in.cell_degree.empty()) {
+    problems.add("empty mesh", Severity::Error, "the mesh has no triangle cells");
+    return false;
+  }
+  for (int64_t p = 0; p < np; ++p) {
+    const auto &x = in.points[p];
+    if (!std::isfinite(x[0]) || !std::isfinite(x[1]) || !std::isfinite(x[2]))
+      problems.add("non-finite point coordinate", Severity::Error,
+                   "point " + std::to_string(p) + " has a NaN or infinite coordinate");
+    if (!std::isfinite(in.values[p]))
+      problems.add("non-finite value", Severity::Error,
+                   "point " + std::to_string(p) + " has value " + std::to_string(in.values[p]));
+  }
+  std::vector<int64_t> seen;
+  for (std::size_t c = 0; c < in.cell_degree.size(); ++c) {
+    const int d = in.cell_degree[c];
+    const int64_t n = in.cell_offsets[c + 1] - in.cell_offsets[c];
+    if (d < 1 || n != lattice_size(d)) {
+      problems.add("bad cell", Severity::Error,
+                   "cell " + std::to_string(c) + " has degree " + std::to_string(d) + " but " +
+                       std::to_string(n) + " nodes");
+      ok = false;
+      continue;
+    }
+    seen.assign(in.cell_nodes.begin() + in.cell_offsets[c],
+                in.cell_nodes.begin() + in.cell_offsets[c + 1]);
+    for (int64_t id : seen)
+      if (id < 0 || id >= np) {
+        problems.add("missing node", Severity::Error,
+                     "cell " + std::to_string(c) + " refers to point " + std::to_string(id) +
+                         ", but there are " + std::to_string(np) + " points");
+        ok = false;
+        break;
+      }
+    std::sort(seen.begin(), seen.end());
+    if (std::adjacent_find(seen.begin(), seen.end()) != seen.end())
+      problems.add("inconsistent nodes", Severity::Error,
+                   "cell " + std::to_string(c) + " uses point " +
+                       std::to_string(*std::adjacent_find(seen.begin(), seen.end())) +
+                       " for two of its nodes");
+  }
+  return ok && problems.count("inconsistent nodes") == 0;
+}
+
+namespace {
+
+// Sample points: the lattice of degree m (including corners and edges).
+template <class F> void for_each_sample(int m, F &&f) {
+  for (int b = 0; b <= m; ++b)
+    for (int a = 0; a <= m - b; ++a)
+      f(static_cast<double>(a) / m, static_cast<double>(b) / m);
+}
+
+std::string cell_str(int64_t c) { return "cell " + std::to_string(c); }
+
+} // namespace
+
+void check_geometry(const Geometry &g, const Topology &topo, ProblemLog &problems) {
+  const int64_t nc = g.num_cells();
+  const double ext = std::max(g.extent(), 1e-300);
+  const double area_tol = 1e-12 * ext * ext;
+  if (g.planar()) {
+    // det J as a Bernstein polynomial of degree 2(p-1); sign relative to a consistent orientation.
+    std::vector<int8_t> sign(nc, 0);
+    int64_t positive = 0, negative = 0;
+    for (int64_t c = 0; c < nc; ++c) {
+      const BernsteinTriangle x = g.component(c, 0), y = g.component(c, 1);
+      const BernsteinTriangle a = x.du() * y.dv(), b = x.dv() * y.du();
+      std::vector<double> dc(a.coefficients().size());
+      for (std::size_t i = 0; i < dc.size(); ++i)
+        dc[i] = a.coefficients()[i] - b.coefficients()[i];
+      const BernsteinTriangle dj(a.degree(), std::move(dc));
+      auto [lo, hi] = dj.bounds();
+      int s = 0;
+      if (lo > area_tol)
+        s = 1;
+      else if (hi < -area_tol)
+        s = -1;
+      else {
+        // Not certified by the coefficients: sample densely.
+        double smin = INFINITY, smax = -INFINITY;
+        for_each_sample(std::max(4, 2 * g.degree(c)), [&](double u, double v) {
+          const double val = dj(u, v);
+          smin = std::min(smin, val);
+          smax = std::max(smax, val);
+        });
+        if (smin > area_tol)
+          s = 1;
+        else if (smax < -area_tol)
+          s = -1;
+        else if (std::max(std::abs(smin), std::abs(smax)) <= area_tol)
+          problems.add("degenerate cell (zero area)", Severity::Error,
+                       cell_str(c) + " has zero area");
+        else
+          problems.add("inverted cell (folded curved cell)", Severity::Error,
+                       cell_str(c) + ": its Jacobian changes sign inside the cell (min " +
+                           std::to_string(smin) + ", max " + std::to_string(smax) + ")");
+      }
+      sign[c] = static_cast<int8_t>(s * (topo.orientable() ? topo.cell_parity(c) : 1));
+      positive += sign[c] > 0;
+      negative += sign[c] < 0;
+    }
+    // The minority orientation (relative to a consistent orientation) is inverted.
+    if (positive > 0 && negative > 0) {
+      const int8_t minority = positive >= negative ? -1 : 1;
+      for (int64_t c = 0; c < nc; ++c)
+        if (sign[c] == minority)
+          problems.add("inverted cell", Severity::Error,
+                       cell_str(c) + " is inverted (its orientation disagrees with its "
+                                     "neighbours': the mesh overlaps itself)");
+    }
+    return;
+  }
+  // Surfaces: n = phi_u x phi_v must not vanish nor flip inside a cell.
+  for (int64_t c = 0; c < nc; ++c) {
+    const int m = g.is_linear(c) ? 1 : std::max(4, 2 * g.degree(c));
+    Vec3 n0{0, 0, 0};
+    {
+      const auto j = g.jacobian(c, 1.0 / 3, 1.0 / 3);
+      n0 = {j[0][1] * j[1][2] - j[0][2] * j[1][1], j[0][2] * j[1][0] - j[0][0] * j[1][2],
+            j[0][0] * j[1][1] - j[0][1] * j[1][0]};
+    }
+    bool degenerate = false, folded = false;
+    for_each_sample(m, [&](double u, double v) {
+      const auto j = g.jacobian(c, u, v);
+      const Vec3 n = {j[0][1] * j[1][2] - j[0][2] * j[1][1], j[0][2] * j[1][0] - j[0][0] * j[1][2],
+                      j[0][0] * j[1][1] - j[0][1] * j[1][0]};
+      const double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+      if (len <= area_tol)
+        degenerate = true;
+      else if (n[0] * n0[0] + n[1] * n0[1] + n[2] * n0[2] <= 0)
+        folded = true;
+    });
+    if (degenerate)
+      problems.add("degenerate cell (zero area)", Severity::Error,
+                   cell_str(c) + " has zero area at some point (its map is singular)");
+    else if (folded)
+      problems.add("inverted cell (folded curved cell)", Severity::Error,
+                   cell_str(c) + ": its surface normal flips inside the cell");
+  }
+}
+
+} // namespace hoct

@@ -1,0 +1,23 @@
+// Checks of a mesh's input data and cell geometry. Each records what it finds in a ProblemLog
+// with the cell or point index, so the user can find the culprit.
+#pragma once
+
+#include "mesh/geometry.hpp"
+#include "mesh/mesh_input.hpp"
+#include "mesh/problem_log.hpp"
+#include "mesh/topology.hpp"
+
+namespace hoct {
+
+// Structure of the input: array sizes, node counts per degree, node indices in range, no node
+// repeated within a cell, finite point coordinates and values. Returns false if the input is too
+// broken to build a topology from (the problems say why).
+bool check_input(const MeshInput &input, ProblemLog &problems);
+
+// Degenerate (zero-area) and inverted cells. Planar meshes: the Jacobian determinant of each
+// cell's map, in Bernstein form (certified where its coefficients share a sign, else sampled), must
+// be bounded away from zero and agree in sign with a consistent orientation of the mesh. Surfaces:
+// the normal must not vanish and must not flip within a cell.
+void check_geometry(const Geometry &geometry, const Topology &topology, ProblemLog &problems);
+
+} // namespace hoct

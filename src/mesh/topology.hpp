@@ -1,0 +1,64 @@
+// The combinatorial skeleton of a triangle mesh: global vertices (the cells' corner nodes),
+// global edges keyed by their vertex pair, each cell's edges with their orientation, edge-cell
+// incidence, and the surface's invariants (Euler characteristic, boundary loops, components).
+//
+// Local edge k of a cell runs from its corner k to corner (k+1) mod 3. A global edge is stored as
+// (lo, hi) with lo < hi by vertex id; `edge_reversed(c, k)` says the cell runs it from hi to lo.
+#pragma once
+
+#include "mesh/mesh_input.hpp"
+#include "mesh/problem_log.hpp"
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace hoct {
+
+class Topology {
+public:
+  // Builds the skeleton; records non-manifold edges and vertices, repeated corners and
+  // inconsistent orientation in `problems`. Cells must reference valid point indices.
+  static Topology build(const MeshInput &input, ProblemLog &problems);
+
+  int64_t num_vertices() const { return static_cast<int64_t>(vertex_point_.size()); }
+  int64_t num_edges() const { return static_cast<int64_t>(edge_vertices_.size()); }
+  int64_t num_cells() const { return static_cast<int64_t>(cell_vertices_.size()); }
+
+  int64_t vertex_point(int64_t v) const { return vertex_point_[v]; }
+  const std::array<int64_t, 3> &cell_vertices(int64_t c) const { return cell_vertices_[c]; }
+  const std::array<int64_t, 2> &edge_vertices(int64_t e) const { return edge_vertices_[e]; }
+  int64_t cell_edge(int64_t c, int k) const { return cell_edges_[c][k]; }
+  bool edge_reversed(int64_t c, int k) const { return (cell_edge_reversed_[c] >> k) & 1u; }
+
+  // Cells incident to edge e (1 on the boundary, 2 inside, more if non-manifold), ascending.
+  const int64_t *edge_cells_begin(int64_t e) const { return &edge_cells_[edge_cell_offset_[e]]; }
+  int edge_cell_count(int64_t e) const {
+    return static_cast<int>(edge_cell_offset_[e + 1] - edge_cell_offset_[e]);
+  }
+  // The cell across local edge k of cell c, or -1 on the boundary (or a non-manifold edge).
+  int64_t neighbor(int64_t c, int k) const;
+  bool is_boundary_edge(int64_t e) const { return edge_cell_count(e) == 1; }
+
+  int64_t euler_characteristic() const { return num_vertices() - num_edges() + num_cells(); }
+  int64_t boundary_loops() const { return boundary_loops_; }
+  int64_t boundary_edges() const { return boundary_edges_; }
+  int64_t components() const { return components_; }
+  bool orientable() const { return orientable_; }
+  // +1 or -1 per cell: a consistent orientation of each component (the first cell of each
+  // component keeps its own). Meaningless where !orientable().
+  int8_t cell_parity(int64_t c) const { return cell_parity_[c]; }
+
+private:
+  std::vector<int64_t> vertex_point_;
+  std::vector<std::array<int64_t, 3>> cell_vertices_;
+  std::vector<std::array<int64_t, 2>> edge_vertices_;
+  std::vector<std::array<int64_t, 3>> cell_edges_;
+  std::vector<uint8_t> cell_edge_reversed_;
+  std::vector<int64_t> edge_cell_offset_, edge_cells_;
+  std::vector<int8_t> cell_parity_;
+  int64_t boundary_loops_ = 0, boundary_edges_ = 0, components_ = 0;
+  bool orientable_ = true;
+};
+
+} // namespace hoct

@@ -1,0 +1,200 @@
+#include "poly/bernstein_triangle.hpp"
+
+#include "poly/binomial.hpp"
+#include "poly/lagrange_to_bernstein.hpp"
+#include "poly/lattice.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace hoct {
+namespace {
+
+// One de Casteljau step: degree-n coefficients -> degree-(n-1), with barycentric weights l.
+void casteljau_step(const double *in, int n, const std::array<double, 3> &l, double *out) {
+  for (int b = 0; b <= n - 1; ++b)
+    for (int a = 0; a <= n - 1 - b; ++a)
+      out[lattice_index(n - 1, a, b)] = l[0] * in[lattice_index(n, a, b)] +
+                                        l[1] * in[lattice_index(n, a + 1, b)] +
+                                        l[2] * in[lattice_index(n, a, b + 1)];
+}
+
+} // namespace
+
+BernsteinTriangle::BernsteinTriangle(int degree, std::vector<double> coefficients)
+    : d_(degree), c_(std::move(coefficients)) {
+  if (degree < 0 || static_cast<int>(c_.size()) != lattice_size(degree))
+    throw std::invalid_argument("BernsteinTriangle: coefficient count does not match degree");
+}
+
+BernsteinTriangle::BernsteinTriangle(int degree)
+    : d_(degree), c_(static_cast<std::size_t>(lattice_size(degree)), 0.0) {}
+
+double BernsteinTriangle::coefficient(int a, int b) const { return c_[lattice_index(d_, a, b)]; }
+
+double BernsteinTriangle::operator()(double u, double v) const {
+  const auto l = barycentric(u, v);
+  std::vector<double> w = c_, next(c_.size());
+  for (int n = d_; n > 0; --n) {
+    casteljau_step(w.data(), n, l, next.data());
+    std::swap(w, next);
+  }
+  return w[0];
+}
+
+BernsteinTriangle BernsteinTriangle::du() const {
+  if (d_ == 0)
+    return BernsteinTriangle(0);
+  BernsteinTriangle r(d_ - 1);
+  for (int b = 0; b <= d_ - 1; ++b)
+    for (int a = 0; a <= d_ - 1 - b; ++a)
+      r.c_[lattice_index(d_ - 1, a, b)] = d_ * (coefficient(a + 1, b) - coefficient(a, b));
+  return r;
+}
+
+BernsteinTriangle BernsteinTriangle::dv() const {
+  if (d_ == 0)
+    return BernsteinTriangle(0);
+  BernsteinTriangle r(d_ - 1);
+  for (int b = 0; b <= d_ - 1; ++b)
+    for (int a = 0; a <= d_ - 1 - b; ++a)
+      r.c_[lattice_index(d_ - 1, a, b)] = d_ * (coefficient(a, b + 1) - coefficient(a, b));
+  return r;
+}
+
+Vec2 BernsteinTriangle::gradient(double u, double v) const { return {du()(u, v), dv()(u, v)}; }
+
+Mat2 BernsteinTriangle::hessian(double u, double v) const {
+  const BernsteinTriangle gu = du(), gv = dv();
+  const double uu = gu.du()(u, v), uv = gu.dv()(u, v), vv = gv.dv()(u, v);
+  return {{{uu, uv}, {uv, vv}}};
+}
+
+BernsteinPoly BernsteinTriangle::edge(int k) const {
+  std::vector<double> e(d_ + 1);
+  for (int t = 0; t <= d_; ++t) {
+    switch (k) {
+    case 0:
+      e[t] = coefficient(t, 0);
+      break;
+    case 1:
+      e[t] = coefficient(d_ - t, t);
+      break;
+    case 2:
+      e[t] = coefficient(0, d_ - t);
+      break;
+    default:
+      throw std::invalid_argument("BernsteinTriangle::edge: k must be 0, 1 or 2");
+    }
+  }
+  return BernsteinPoly(std::move(e));
+}
+
+void BernsteinTriangle::set_edge(int k, const BernsteinPoly &p) {
+  if (p.degree() != d_)
+    throw std::invalid_argument("BernsteinTriangle::set_edge: degree mismatch");
+  for (int t = 0; t <= d_; ++t) {
+    switch (k) {
+    case 0:
+      c_[lattice_index(d_, t, 0)] = p[t];
+      break;
+    case 1:
+      c_[lattice_index(d_, d_ - t, t)] = p[t];
+      break;
+    case 2:
+      c_[lattice_index(d_, 0, d_ - t)] = p[t];
+      break;
+    default:
+      throw std::invalid_argument("BernsteinTriangle::set_edge: k must be 0, 1 or 2");
+    }
+  }
+}
+
+BernsteinPoly BernsteinTriangle::restrict_to_segment(const Vec2 &p, const Vec2 &q) const {
+  // Blossom: coefficient m = g[p^(d-m), q^m]. Apply k steps with p, then d-k steps with q.
+  const auto lp = barycentric(p[0], p[1]);
+  const auto lq = barycentric(q[0], q[1]);
+  std::vector<double> out(d_ + 1);
+  std::vector<double> level = c_, a(c_.size()), b(c_.size());
+  for (int k = 0; k <= d_; ++k) {
+    // `level` holds the degree-(d-k) coefficients after k steps with p.
+    const int m = d_ - k; // remaining steps, all with q -> coefficient index m
+    std::copy(level.begin(), level.begin() + lattice_size(d_ - k), a.begin());
+    for (int n = d_ - k; n > 0; --n) {
+      casteljau_step(a.data(), n, lq, b.data());
+      std::swap(a, b);
+    }
+    out[m] = a[0];
+    if (k < d_) {
+      casteljau_step(level.data(), d_ - k, lp, b.data());
+      std::copy(b.begin(), b.begin() + lattice_size(d_ - k - 1), level.begin());
+    }
+  }
+  return BernsteinPoly(std::move(out));
+}
+
+BernsteinTriangle BernsteinTriangle::elevated(int target) const {
+  if (target < d_)
+    throw std::invalid_argument("BernsteinTriangle::elevated: target below degree");
+  BernsteinTriangle cur = *this;
+  for (int n = d_; n < target; ++n) {
+    BernsteinTriangle next(n + 1);
+    for (int b = 0; b <= n + 1; ++b)
+      for (int a = 0; a <= n + 1 - b; ++a) {
+        const int k = n + 1 - a - b;
+        double s = 0.0;
+        if (k > 0)
+          s += k * cur.coefficient(a, b);
+        if (a > 0)
+          s += a * cur.coefficient(a - 1, b);
+        if (b > 0)
+          s += b * cur.coefficient(a, b - 1);
+        next.c_[lattice_index(n + 1, a, b)] = s / (n + 1);
+      }
+    cur = std::move(next);
+  }
+  return cur;
+}
+
+BernsteinTriangle BernsteinTriangle::operator*(const BernsteinTriangle &o) const {
+  const int n = d_ + o.d_;
+  BernsteinTriangle r(n);
+  for (int b1 = 0; b1 <= d_; ++b1)
+    for (int a1 = 0; a1 <= d_ - b1; ++a1) {
+      const double w1 = trinomial(d_ - a1 - b1, a1, b1) * coefficient(a1, b1);
+      for (int b2 = 0; b2 <= o.d_; ++b2)
+        for (int a2 = 0; a2 <= o.d_ - b2; ++a2) {
+          const double w2 = trinomial(o.d_ - a2 - b2, a2, b2) * o.coefficient(a2, b2);
+          r.c_[lattice_index(n, a1 + a2, b1 + b2)] += w1 * w2;
+        }
+    }
+  for (int b = 0; b <= n; ++b)
+    for (int a = 0; a <= n - b; ++a)
+      r.c_[lattice_index(n, a, b)] /= trinomial(n - a - b, a, b);
+  return r;
+}
+
+std::pair<double, double> BernsteinTriangle::bounds() const {
+  auto [lo, hi] = std::minmax_element(c_.begin(), c_.end());
+  return {*lo, *hi};
+}
+
+bool BernsteinTriangle::is_constant() const {
+  return std::all_of(c_.begin(), c_.end(), [&](double x) { return x == c_[0]; });
+}
+
+BernsteinTriangle bernstein_from_lattice_values(const double *values, int degree) {
+  const auto &m = lagrange_to_bernstein_triangle(degree);
+  const int n = lattice_size(degree);
+  std::vector<double> c(n);
+  for (int i = 0; i < n; ++i) {
+    double s = 0.0;
+    const double *row = &m[static_cast<std::size_t>(i) * n];
+    for (int j = 0; j < n; ++j)
+      s += row[j] * values[j];
+    c[i] = s;
+  }
+  return BernsteinTriangle(degree, std::move(c));
+}
+
+} // namespace hoct

@@ -1,0 +1,159 @@
+// Topology invariants and the problems the mesh checks must find.
+#include "error.hpp"
+#include "mesh/mesh.hpp"
+#include "test_meshes.hpp"
+
+#include <gtest/gtest.h>
+
+#include <limits>
+
+namespace hoct {
+namespace {
+
+MeshInput linear_mesh(const std::vector<Vec3> &v, const std::vector<std::array<int64_t, 3>> &t) {
+  MeshInput m;
+  m.points = v;
+  m.values.assign(v.size(), 0.0);
+  for (std::size_t i = 0; i < v.size(); ++i)
+    m.values[i] = v[i][0] + 2 * v[i][1];
+  for (const auto &tri : t)
+    m.add_cell(1, tri.data());
+  m.source = "test";
+  return m;
+}
+
+bool message_contains(const Mesh &m, const std::string &kind, const std::string &text) {
+  auto it = m.problems.kinds().find(kind);
+  if (it == m.problems.kinds().end())
+    return false;
+  for (const auto &e : it->second.examples)
+    if (e.find(text) != std::string::npos)
+      return true;
+  return false;
+}
+
+TEST(Topology, DiskSphereAndAnnulus) {
+  std::mt19937_64 rng(1);
+  std::vector<Vec3> v;
+  std::vector<std::array<int64_t, 3>> t;
+  testing::square_grid(4, rng, v, t);
+  Mesh disk = build_mesh(linear_mesh(v, t));
+  EXPECT_EQ(disk.topology.num_vertices(), 25);
+  EXPECT_EQ(disk.topology.num_edges(), 56);
+  EXPECT_EQ(disk.topology.num_cells(), 32);
+  EXPECT_EQ(disk.topology.euler_characteristic(), 1);
+  EXPECT_EQ(disk.topology.boundary_loops(), 1);
+  EXPECT_EQ(disk.topology.boundary_edges(), 16);
+  EXPECT_EQ(disk.topology.components(), 1);
+  EXPECT_TRUE(disk.geometry.planar());
+
+  testing::octahedron(2, v, t);
+  for (auto &p : v)
+    p = testing::sphere_projection(p);
+  Mesh sphere = build_mesh(linear_mesh(v, t));
+  EXPECT_EQ(sphere.topology.euler_characteristic(), 2);
+  EXPECT_EQ(sphere.topology.boundary_loops(), 0);
+  EXPECT_TRUE(sphere.topology.orientable());
+
+  // Annulus: the 4x4 grid without its 2x2 centre block... (remove the 8 central triangles).
+  testing::square_grid(4, rng, v, t);
+  std::vector<std::array<int64_t, 3>> ring;
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    const int sq = static_cast<int>(i / 2), si = sq % 4, sj = sq / 4;
+    if (!(si >= 1 && si <= 2 && sj >= 1 && sj <= 2))
+      ring.push_back(t[i]);
+  }
+  Mesh annulus = build_mesh(linear_mesh(v, ring));
+  EXPECT_EQ(annulus.topology.euler_characteristic(), 0);
+  EXPECT_EQ(annulus.topology.boundary_loops(), 2);
+}
+
+TEST(MeshChecks, NonManifoldEdge) {
+  const std::vector<Vec3> v = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}};
+  const Mesh m = build_mesh(linear_mesh(v, {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}}), {false});
+  EXPECT_EQ(m.problems.count("non-manifold edge"), 1);
+  EXPECT_TRUE(message_contains(m, "non-manifold edge", "shared by 3 cells (0, 1, 2)"));
+  EXPECT_THROW(build_mesh(linear_mesh(v, {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}})), Error);
+}
+
+TEST(MeshChecks, PinchedVertex) {
+  // Two triangles touching at one vertex (a bow tie).
+  const std::vector<Vec3> v = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {-1, 0, 0}, {0, -1, 0}};
+  const Mesh m = build_mesh(linear_mesh(v, {{0, 1, 2}, {0, 3, 4}}), {false});
+  EXPECT_GE(m.problems.count("non-manifold vertex"), 1);
+  EXPECT_TRUE(message_contains(m, "non-manifold vertex", "point 0"));
+}
+
+TEST(MeshChecks, InvertedAndZeroAreaCells) {
+  std::mt19937_64 rng(2);
+  std::vector<Vec3> v;
+  std::vector<std::array<int64_t, 3>> t;
+  testing::square_grid(3, rng, v, t);
+  // Move interior vertex (1,1) across its neighbours: some cells flip.
+  v[5] = {0.9, 0.9, 0};
+  Mesh inverted = build_mesh(linear_mesh(v, t), {false});
+  EXPECT_GE(inverted.problems.count("inverted cell"), 1) << inverted.problems.summary();
+  // A cell whose corners are collinear.
+  const std::vector<Vec3> w = {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {0, 1, 0}};
+  Mesh flat = build_mesh(linear_mesh(w, {{0, 1, 2}, {0, 1, 3}}), {false});
+  EXPECT_TRUE(message_contains(flat, "degenerate cell (zero area)", "cell 0"))
+      << flat.problems.summary();
+  // A consistently clockwise mesh is fine.
+  testing::square_grid(3, rng, v, t);
+  for (auto &tri : t)
+    std::swap(tri[1], tri[2]);
+  Mesh cw = build_mesh(linear_mesh(v, t), {false});
+  EXPECT_FALSE(cw.problems.has_errors()) << cw.problems.summary();
+}
+
+TEST(MeshChecks, BadInputData) {
+  std::mt19937_64 rng(3);
+  std::vector<Vec3> v;
+  std::vector<std::array<int64_t, 3>> t;
+  testing::square_grid(2, rng, v, t);
+  MeshInput nan_value = linear_mesh(v, t);
+  nan_value.values[4] = std::numeric_limits<double>::quiet_NaN();
+  Mesh a = build_mesh(nan_value, {false});
+  EXPECT_TRUE(message_contains(a, "non-finite value", "point 4"));
+
+  MeshInput inf_point = linear_mesh(v, t);
+  inf_point.points[2][1] = std::numeric_limits<double>::infinity();
+  Mesh b = build_mesh(inf_point, {false});
+  EXPECT_TRUE(message_contains(b, "non-finite point coordinate", "point 2"));
+
+  MeshInput missing = linear_mesh(v, t);
+  missing.cell_nodes[7] = 99;
+  Mesh c = build_mesh(missing, {false});
+  EXPECT_TRUE(message_contains(c, "missing node", "cell 2 refers to point 99"));
+  EXPECT_FALSE(c.complete);
+  try {
+    build_mesh(missing);
+    FAIL();
+  } catch (const Error &e) {
+    EXPECT_NE(std::string(e.what()).find("cell 2 refers to point 99"), std::string::npos);
+  }
+
+  MeshInput repeated = linear_mesh(v, t);
+  repeated.cell_nodes[1] = repeated.cell_nodes[0];
+  Mesh d = build_mesh(repeated, {false});
+  EXPECT_TRUE(message_contains(d, "inconsistent nodes", "cell 0 uses point"));
+
+  MeshInput empty;
+  Mesh e = build_mesh(empty, {false});
+  EXPECT_EQ(e.problems.count("empty mesh"), 1);
+}
+
+TEST(MeshChecks, CurvedCellFoldedInside) {
+  // A quadratic cell whose hypotenuse midpoint node is pulled across the opposite corner.
+  MeshInput m;
+  m.points = {{0, 0, 0}, {0.5, 0, 0}, {1, 0, 0}, {0, 0.5, 0}, {-0.5, -0.5, 0}, {0, 1, 0}};
+  m.values = {0, 1, 2, 3, 4, 5};
+  const int64_t nodes[6] = {0, 1, 2, 3, 4, 5};
+  m.add_cell(2, nodes);
+  Mesh r = build_mesh(m, {false});
+  EXPECT_EQ(r.problems.count("inverted cell (folded curved cell)"), 1) << r.problems.summary();
+  EXPECT_EQ(r.geometry.curved_cells(), 1);
+}
+
+} // namespace
+} // namespace hoct
