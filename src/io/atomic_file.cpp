@@ -19,10 +19,14 @@ void write_file_atomic(const std::string &path, const std::function<void(std::os
   if (target.filename().empty())
     throw Error(path + ": not a file name");
   std::random_device rd;
-  const std::string tmp = (target.parent_path() / ("." + target.filename().string() + ".tmp-" +
-                                                   std::to_string(::getpid()) + "-" +
-                                                   std::to_string(rd() % 1000000)))
-                              .string();
+  // Built with append: GCC 12 warns falsely (-Wrestrict) on "." + std::string.
+  std::string name(1, '.');
+  name.append(target.filename().string());
+  name.append(".tmp-");
+  name.append(std::to_string(::getpid()));
+  name.push_back('-');
+  name.append(std::to_string(rd() % 1000000));
+  const std::string tmp = (target.parent_path() / name).string();
   try {
     {
       std::ofstream out(tmp, binary ? std::ios::binary | std::ios::trunc : std::ios::trunc);

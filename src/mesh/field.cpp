@@ -123,38 +123,136 @@ Field Field::build(const MeshInput &in, const Topology &topo, ProblemLog &proble
     }
   }
 
-  // Cell polynomials: convert, elevate to the highest degree around, copy the edge polynomials.
-  f.degree_.resize(nc);
-  f.offset_.assign(nc + 1, 0);
-  for (int64_t c = 0; c < nc; ++c) {
-    int d = in.cell_degree[c];
-    for (int k = 0; k < 3; ++k)
-      d = std::max(d, static_cast<int>(f.edge_degree_[topo.cell_edge(c, k)]));
-    f.degree_[c] = static_cast<uint8_t>(d);
-    f.max_degree_ = std::max(f.max_degree_, d);
-    f.offset_[c + 1] = f.offset_[c] + lattice_size(d);
-  }
-  f.coef_.resize(f.offset_[nc]);
+  f.vertex_value_.resize(topo.num_vertices());
+  for (int64_t v = 0; v < topo.num_vertices(); ++v)
+    f.vertex_value_[v] = in.values[topo.vertex_point(v)];
+  f.pin_edge_ends(topo);
+
+  // Cell polynomials from the node values, then elevation and the shared edges.
+  std::vector<BernsteinTriangle> cells(nc);
   std::vector<double> node_vals;
   for (int64_t c = 0; c < nc; ++c) {
     const int din = in.cell_degree[c];
     node_vals.resize(lattice_size(din));
     for (int i = 0; i < lattice_size(din); ++i)
       node_vals[i] = in.values[in.cell_nodes[in.cell_offsets[c] + i]];
-    BernsteinTriangle poly = bernstein_from_lattice_values(node_vals.data(), din);
-    if (f.degree_[c] != din)
-      poly = poly.elevated(f.degree_[c]);
+    cells[c] = bernstein_from_lattice_values(node_vals.data(), din);
+  }
+  f.assemble_cells(topo, cells);
+  return f;
+}
+
+void Field::assemble_cells(const Topology &topo, const std::vector<BernsteinTriangle> &cells) {
+  const int64_t nc = topo.num_cells();
+  degree_.resize(nc);
+  offset_.assign(nc + 1, 0);
+  max_degree_ = 0;
+  for (int64_t c = 0; c < nc; ++c) {
+    int d = cells[c].degree();
+    for (int k = 0; k < 3; ++k)
+      d = std::max(d, static_cast<int>(edge_degree_[topo.cell_edge(c, k)]));
+    degree_[c] = static_cast<uint8_t>(d);
+    max_degree_ = std::max(max_degree_, d);
+    offset_[c + 1] = offset_[c] + lattice_size(d);
+  }
+  coef_.resize(offset_[nc]);
+  for (int64_t c = 0; c < nc; ++c) {
+    BernsteinTriangle poly =
+        cells[c].degree() == degree_[c] ? cells[c] : cells[c].elevated(degree_[c]);
     for (int k = 0; k < 3; ++k) {
-      const int64_t e = topo.cell_edge(c, k);
-      BernsteinPoly p = f.edge_polynomial(e);
-      if (p.degree() != f.degree_[c])
-        p = p.elevated(f.degree_[c]);
+      BernsteinPoly p = edge_polynomial(topo.cell_edge(c, k));
+      if (p.degree() != degree_[c])
+        p = p.elevated(degree_[c]);
       poly.set_edge(k, topo.edge_reversed(c, k) ? p.reversed() : p);
     }
-    std::copy(poly.coefficients().begin(), poly.coefficients().end(),
-              f.coef_.begin() + f.offset_[c]);
+    std::copy(poly.coefficients().begin(), poly.coefficients().end(), coef_.begin() + offset_[c]);
   }
+}
+
+Field Field::build_from_polynomials(const Topology &topo,
+                                    const std::vector<BernsteinTriangle> &cells,
+                                    ProblemLog &problems) {
+  Field f;
+  const int64_t nc = topo.num_cells(), ne = topo.num_edges();
+  if (static_cast<int64_t>(cells.size()) != nc)
+    throw std::invalid_argument("Field::build_from_polynomials: one polynomial per cell needed");
+  f.input_degree_.resize(nc);
+  double lo = INFINITY, hi = -INFINITY;
+  for (int64_t c = 0; c < nc; ++c) {
+    f.input_degree_[c] = static_cast<uint8_t>(cells[c].degree());
+    auto [a, b] = cells[c].bounds();
+    lo = std::min(lo, a);
+    hi = std::max(hi, b);
+  }
+  // Without node values, the range is the (certified) coefficient enclosure.
+  f.min_value_ = nc ? lo : 0.0;
+  f.max_value_ = nc ? hi : 0.0;
+  const double tol =
+      kContinuityTolerance * std::max({std::abs(f.min_value_), std::abs(f.max_value_), 1e-300});
+  f.edge_degree_.assign(ne, 0);
+  f.edge_offset_.assign(ne + 1, 0);
+  std::vector<BernsteinPoly> edges(ne);
+  for (int64_t e = 0; e < ne; ++e) {
+    const int64_t *ec = topo.edge_cells_begin(e);
+    int64_t owner = ec[0];
+    for (int i = 1; i < topo.edge_cell_count(e); ++i)
+      if (cells[ec[i]].degree() > cells[owner].degree())
+        owner = ec[i];
+    auto restriction = [&](int64_t c) {
+      int k = 0;
+      while (topo.cell_edge(c, k) != e)
+        ++k;
+      const BernsteinPoly p = cells[c].edge(k);
+      return topo.edge_reversed(c, k) ? p.reversed() : p;
+    };
+    edges[e] = restriction(owner);
+    f.edge_degree_[e] = static_cast<uint8_t>(edges[e].degree());
+    f.edge_offset_[e + 1] = f.edge_offset_[e] + edges[e].degree() + 1;
+    for (int i = 0; i < topo.edge_cell_count(e); ++i) {
+      if (ec[i] == owner)
+        continue;
+      const BernsteinPoly q = restriction(ec[i]).elevated(edges[e].degree());
+      double gap = 0.0;
+      for (int t = 0; t <= q.degree(); ++t)
+        gap = std::max(gap, std::abs(q[t] - edges[e][t]));
+      if (!(gap <= tol)) {
+        std::ostringstream m;
+        m << "cells " << owner << " and " << ec[i] << " disagree on their shared edge (points "
+          << topo.vertex_point(topo.edge_vertices(e)[0]) << "-"
+          << topo.vertex_point(topo.edge_vertices(e)[1]) << ") by " << gap
+          << " (the field must be continuous)";
+        problems.add("discontinuous field across an edge", Severity::Error, m.str());
+      }
+    }
+  }
+  f.edge_coef_.resize(f.edge_offset_[ne]);
+  for (int64_t e = 0; e < ne; ++e)
+    std::copy(edges[e].coefficients().begin(), edges[e].coefficients().end(),
+              f.edge_coef_.begin() + f.edge_offset_[e]);
+  // Vertex values from the lowest-id cell at each vertex; the others must agree.
+  f.vertex_value_.assign(topo.num_vertices(), NAN);
+  for (int64_t c = 0; c < nc; ++c)
+    for (int k = 0; k < 3; ++k) {
+      const int64_t v = topo.cell_vertices(c)[k];
+      const double val = cells[c].coefficients()[corner_index(cells[c].degree(), k)];
+      if (std::isnan(f.vertex_value_[v]))
+        f.vertex_value_[v] = val;
+      else if (!(std::abs(val - f.vertex_value_[v]) <= tol))
+        problems.add("discontinuous field at a vertex", Severity::Error,
+                     "cell " + std::to_string(c) + " disagrees with a neighbour at point " +
+                         std::to_string(topo.vertex_point(v)) + " by " +
+                         std::to_string(std::abs(val - f.vertex_value_[v])));
+    }
+  f.pin_edge_ends(topo);
+  f.assemble_cells(topo, cells);
   return f;
+}
+
+void Field::pin_edge_ends(const Topology &topo) {
+  for (int64_t e = 0; e < topo.num_edges(); ++e) {
+    edge_coef_[edge_offset_[e]] = vertex_value_[topo.edge_vertices(e)[0]];
+    edge_coef_[edge_offset_[e + 1] - 1] = vertex_value_[topo.edge_vertices(e)[1]];
+  }
 }
 
 } // namespace hoct

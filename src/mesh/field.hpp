@@ -22,8 +22,17 @@ public:
   // share node ids or have different degrees.
   static constexpr double kContinuityTolerance = 1e-9;
 
-  // Builds the field; records discontinuities across edges in `problems`.
+  // Builds the field from the Lagrange node values of `input`; records discontinuities across
+  // edges in `problems`.
   static Field build(const MeshInput &input, const Topology &topology, ProblemLog &problems);
+
+  // Builds the field from one polynomial per cell (the thesis' general case: e.g. fitted to
+  // arbitrary samples with bernstein_from_samples). Each edge's polynomial is taken from the
+  // lowest-id cell of highest degree around it; the other cell must agree within
+  // kContinuityTolerance, else a discontinuity is recorded.
+  static Field build_from_polynomials(const Topology &topology,
+                                      const std::vector<BernsteinTriangle> &cells,
+                                      ProblemLog &problems);
 
   int64_t num_cells() const { return static_cast<int64_t>(degree_.size()); }
   int degree(int64_t c) const { return degree_[c]; }
@@ -37,6 +46,10 @@ public:
   // The edge's polynomial, parameterised from its lower to its higher vertex.
   BernsteinPoly edge_polynomial(int64_t e) const;
 
+  // The field at mesh vertex v: the one value every edge and cell uses there (the edge
+  // polynomials' end coefficients are set to it exactly).
+  double vertex_value(int64_t v) const { return vertex_value_[v]; }
+
   double value(int64_t c, double u, double v) const;
   // Smallest and largest node value of the input (the data range).
   double min_value() const { return min_value_; }
@@ -44,9 +57,14 @@ public:
   int max_degree() const { return max_degree_; }
 
 private:
+  // Elevates each cell to the highest degree around it and copies its edges' polynomials in.
+  void assemble_cells(const Topology &topology, const std::vector<BernsteinTriangle> &cells);
+  // Sets each edge polynomial's end coefficients to its vertices' values, bit-exactly.
+  void pin_edge_ends(const Topology &topology);
+
   std::vector<uint8_t> degree_, input_degree_, edge_degree_;
   std::vector<int64_t> offset_, edge_offset_;
-  std::vector<double> coef_, edge_coef_;
+  std::vector<double> coef_, edge_coef_, vertex_value_;
   double min_value_ = 0, max_value_ = 0;
   int max_degree_ = 0;
 };

@@ -36,8 +36,8 @@ public:
 
 private:
   std::vector<uint8_t> degree_;
-  std::vector<int64_t> offset_;     // into coef_, in units of control points
-  std::vector<Vec3> coef_;          // control points, canonical lattice order
+  std::vector<int64_t> offset_; // into coef_, in units of control points
+  std::vector<Vec3> coef_;      // control points, canonical lattice order
   bool planar_ = true;
   int64_t curved_cells_ = 0;
   std::array<Vec3, 2> bounds_{};

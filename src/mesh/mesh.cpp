@@ -2,6 +2,7 @@
 
 #include "error.hpp"
 #include "mesh/mesh_checks.hpp"
+#include "poly/sample_fit.hpp"
 
 namespace hoct {
 
@@ -17,6 +18,43 @@ Mesh build_mesh(const MeshInput &input, const MeshBuildOptions &options) {
     m.geometry = Geometry::build(input);
     check_geometry(m.geometry, m.topology, m.problems);
     m.complete = true;
+  }
+  if (options.throw_on_error && m.problems.has_errors())
+    throw Error((input.source.empty() ? std::string("mesh") : input.source) +
+                ": the mesh is not valid:\n" + m.problems.summary());
+  return m;
+}
+
+Mesh build_mesh_from_samples(const MeshInput &input, const std::vector<CellSamples> &samples,
+                             const MeshBuildOptions &options) {
+  Mesh m;
+  m.source = input.source;
+  m.field_name = input.field_name;
+  m.num_points = static_cast<int64_t>(input.points.size());
+  if (samples.size() != input.num_cells())
+    m.problems.add("inconsistent arrays", Severity::Error,
+                   std::to_string(samples.size()) + " sample sets for " +
+                       std::to_string(input.num_cells()) + " cells");
+  else if (check_input(input, m.problems)) {
+    m.topology = Topology::build(input, m.problems);
+    std::vector<BernsteinTriangle> polys(samples.size());
+    bool fitted = true;
+    for (std::size_t c = 0; c < samples.size(); ++c) {
+      try {
+        polys[c] =
+            bernstein_from_samples(samples[c].positions, samples[c].values, samples[c].degree);
+      } catch (const Error &e) {
+        m.problems.add("bad sample set", Severity::Error,
+                       "cell " + std::to_string(c) + ": " + e.what());
+        fitted = false;
+      }
+    }
+    if (fitted) {
+      m.field = Field::build_from_polynomials(m.topology, polys, m.problems);
+      m.geometry = Geometry::build(input);
+      check_geometry(m.geometry, m.topology, m.problems);
+      m.complete = true;
+    }
   }
   if (options.throw_on_error && m.problems.has_errors())
     throw Error((input.source.empty() ? std::string("mesh") : input.source) +

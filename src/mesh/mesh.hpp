@@ -31,4 +31,17 @@ struct MeshBuildOptions {
 
 Mesh build_mesh(const MeshInput &input, const MeshBuildOptions &options = {});
 
+// Values of one cell's polynomial at arbitrary parametric positions (the thesis' general case).
+struct CellSamples {
+  int degree = 0;
+  std::vector<Vec2> positions; // (u, v) in the reference triangle
+  std::vector<double> values;
+};
+
+// Topology and geometry from `input` (its node values are not used for the field), the field
+// from one sample set per cell, fitted exactly (bernstein_from_samples). An ill-conditioned sample
+// set or a discontinuity across an edge is an error naming the cell.
+Mesh build_mesh_from_samples(const MeshInput &input, const std::vector<CellSamples> &samples,
+                             const MeshBuildOptions &options = {});
+
 } // namespace hoct

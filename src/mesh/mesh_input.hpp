@@ -17,8 +17,8 @@ struct MeshInput {
   // Every node of the mesh (corner and higher-order nodes), with its 3D position and field value.
   std::vector<Vec3> points;
   std::vector<double> values;
-  std::string field_name;   // name of the scalar array, for reports
-  std::string source;       // file name or generator description, for messages
+  std::string field_name; // name of the scalar array, for reports
+  std::string source;     // file name or generator description, for messages
 
   // Cells in compressed-row form: the nodes of cell c are
   // cell_nodes[cell_offsets[c] .. cell_offsets[c+1]), (d+1)(d+2)/2 of them for degree d,

@@ -36,8 +36,7 @@ std::string ProblemLog::summary() const {
       for (const auto &e : k.examples)
         out << "    " << e << "\n";
       if (k.count > static_cast<int64_t>(k.examples.size()))
-        out << "    ... and " << (k.count - static_cast<int64_t>(k.examples.size()))
-            << " more\n";
+        out << "    ... and " << (k.count - static_cast<int64_t>(k.examples.size())) << " more\n";
     }
   return out.str();
 }

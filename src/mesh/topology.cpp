@@ -180,8 +180,9 @@ Topology Topology::build(const MeshInput &in, ProblemLog &problems) {
     }
   for (std::size_t v = 0; v < vcells.size(); ++v) {
     // One fan: a cycle (links == cells, no boundary) or a path (links == cells - 1).
-    const bool ok = boundary_degree[v] == 0 ? vlinks[v] == vcells[v]
-                                            : (boundary_degree[v] == 2 && vlinks[v] == vcells[v] - 1);
+    const bool ok = boundary_degree[v] == 0
+                        ? vlinks[v] == vcells[v]
+                        : (boundary_degree[v] == 2 && vlinks[v] == vcells[v] - 1);
     if (!ok && boundary_degree[v] <= 2 && t.num_edges() > 0 &&
         problems.count("non-manifold edge") == 0)
       problems.add("non-manifold vertex", Severity::Error,

@@ -20,8 +20,7 @@ void recursive_order(int d, int a0, int b0, int n, std::vector<int> &out) {
     out.push_back(lattice_index(d, a0, b0));
     return;
   }
-  const std::array<std::array<int, 2>, 3> corner = {
-      {{a0, b0}, {a0 + n, b0}, {a0, b0 + n}}};
+  const std::array<std::array<int, 2>, 3> corner = {{{a0, b0}, {a0 + n, b0}, {a0, b0 + n}}};
   for (const auto &c : corner)
     out.push_back(lattice_index(d, c[0], c[1]));
   for (int e = 0; e < 3; ++e) {

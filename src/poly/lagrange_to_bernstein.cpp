@@ -40,8 +40,8 @@ std::vector<double> build_triangle(int d) {
     for (int j = 0; j < n; ++j) {
       const auto q = lattice_point(d, j);
       const int a = q[0], b = q[1], k = d - a - b;
-      v(i, j) = static_cast<long double>(trinomial(k, a, b)) * ipow(l0, k) * ipow(u, a) *
-                ipow(w, b);
+      v(i, j) =
+          static_cast<long double>(trinomial(k, a, b)) * ipow(l0, k) * ipow(u, a) * ipow(w, b);
     }
   }
   return to_row_major(v.fullPivLu().inverse());

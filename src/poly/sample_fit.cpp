@@ -53,8 +53,7 @@ BernsteinTriangle bernstein_from_samples(const std::vector<Vec2> &positions,
     if (residual > options.max_relative_residual * std::max(range, 1e-300)) {
       std::ostringstream msg;
       msg << "sample fit: the samples are not values of a degree-" << degree
-          << " polynomial (least-squares residual " << residual << ", value range " << range
-          << ")";
+          << " polynomial (least-squares residual " << residual << ", value range " << range << ")";
       throw Error(msg.str());
     }
   }

@@ -45,8 +45,8 @@ TEST_P(FieldDegree, SharedEdgesAreBitIdenticalAndNodesInterpolated) {
   std::vector<Vec3> verts;
   std::vector<std::array<int64_t, 3>> tris;
   testing::square_grid(6, rng, verts, tris);
-  const MeshInput in =
-      testing::lagrange_mesh(verts, tris, [&](int64_t) { return d; }, nullptr, nullptr, rng);
+  const MeshInput in = testing::lagrange_mesh(
+      verts, tris, [&](int64_t) { return d; }, nullptr, nullptr, rng);
   const Mesh m = build_mesh(in);
   EXPECT_EQ(m.topology.euler_characteristic(), 1);
   expect_bit_identical_edges(m);
@@ -56,8 +56,7 @@ TEST_P(FieldDegree, SharedEdgesAreBitIdenticalAndNodesInterpolated) {
     for (int i = 0; i < lattice_size(d); ++i) {
       const auto q = lattice_point(d, i);
       const double val = in.values[in.cell_nodes[in.cell_offsets[c] + i]];
-      EXPECT_NEAR(poly(static_cast<double>(q[0]) / d, static_cast<double>(q[1]) / d), val,
-                  1e-11);
+      EXPECT_NEAR(poly(static_cast<double>(q[0]) / d, static_cast<double>(q[1]) / d), val, 1e-11);
     }
   }
 }
@@ -135,6 +134,62 @@ TEST(Field, DuplicatedEdgeNodesWithEqualValuesAreAccepted) {
   EXPECT_FALSE(m.problems.has_errors());
   in.values[ac2] += 0.5;
   EXPECT_THROW(build_mesh(in), Error);
+}
+
+} // namespace
+} // namespace hoct
+
+namespace hoct {
+namespace {
+
+TEST(FieldFromSamples, ArbitrarySamplesGiveAContinuousExactField) {
+  // A global cubic sampled at random (well-spread) parametric points in every cell of a
+  // straight-sided mesh: the fitted field reproduces it and the edges are shared bit-for-bit.
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> U(0, 1);
+  std::vector<Vec3> verts;
+  std::vector<std::array<int64_t, 3>> tris;
+  testing::square_grid(4, rng, verts, tris);
+  auto f = [](double x, double y) { return x * x * x - 2 * x * y * y + 0.5 * y - x * y + 3; };
+  const MeshInput in = testing::lagrange_mesh(
+      verts, tris, [](int64_t) { return 1; }, nullptr, nullptr, rng);
+  std::vector<CellSamples> samples(in.num_cells());
+  for (std::size_t c = 0; c < in.num_cells(); ++c) {
+    samples[c].degree = 3;
+    const Vec3 &p0 = in.points[in.cell_nodes[in.cell_offsets[c]]];
+    const Vec3 &p1 = in.points[in.cell_nodes[in.cell_offsets[c] + 1]];
+    const Vec3 &p2 = in.points[in.cell_nodes[in.cell_offsets[c] + 2]];
+    for (int i = 0; i < 12; ++i) { // more samples than the 10 coefficients: least squares
+      double u = U(rng), v = U(rng);
+      if (u + v > 1) {
+        u = 1 - u;
+        v = 1 - v;
+      }
+      const double x = (1 - u - v) * p0[0] + u * p1[0] + v * p2[0];
+      const double y = (1 - u - v) * p0[1] + u * p1[1] + v * p2[1];
+      samples[c].positions.push_back({u, v});
+      samples[c].values.push_back(f(x, y));
+    }
+  }
+  const Mesh m = build_mesh_from_samples(in, samples);
+  expect_bit_identical_edges(m);
+  for (int64_t c = 0; c < m.topology.num_cells(); ++c) {
+    const Vec3 p = m.geometry.position(c, 0.3, 0.3);
+    EXPECT_NEAR(m.field.value(c, 0.3, 0.3), f(p[0], p[1]), 1e-9);
+  }
+  // One cell sampled from another function: a discontinuity, reported with its cell.
+  auto bad = samples;
+  for (auto &v : bad[5].values)
+    v += 0.1;
+  const Mesh b = build_mesh_from_samples(in, bad, {false});
+  EXPECT_GT(b.problems.count("discontinuous field across an edge"), 0);
+  // A degenerate sample set: all samples of cell 3 on one line.
+  auto line = samples;
+  for (auto &p : line[3].positions)
+    p = {p[0], 0.0};
+  const Mesh l = build_mesh_from_samples(in, line, {false});
+  ASSERT_EQ(l.problems.count("bad sample set"), 1);
+  EXPECT_NE(l.problems.kinds().at("bad sample set").examples[0].find("cell 3"), std::string::npos);
 }
 
 } // namespace
