@@ -1,7 +1,7 @@
 #include "mesh/topology.hpp"
 
 #include "poly/lattice.hpp"
-#include "util/union_find.hpp"
+#include "tree/union_find.hpp"
 
 #include <algorithm>
 #include <sstream>

@@ -1,0 +1,45 @@
+#include "pl/pl_mesh.hpp"
+
+#include "poly/lattice.hpp"
+
+namespace hoct {
+
+ScalarGraph PlMesh::graph() const {
+  std::vector<std::pair<int64_t, int64_t>> edges;
+  edges.reserve(triangles.size() * 3);
+  for (const auto &t : triangles)
+    for (int k = 0; k < 3; ++k) {
+      const int64_t a = t[k], b = t[(k + 1) % 3];
+      edges.emplace_back(std::min(a, b), std::max(a, b));
+    }
+  return ScalarGraph(values, edges);
+}
+
+PlMesh split_lagrange_cells(const MeshInput &in) {
+  PlMesh m;
+  m.points = in.points;
+  m.values = in.values;
+  m.source_cell.assign(in.points.size(), -1);
+  m.source_uv.assign(in.points.size(), {0.0, 0.0});
+  for (std::size_t c = 0; c < in.num_cells(); ++c) {
+    const int d = in.cell_degree[c];
+    const int64_t *nodes = &in.cell_nodes[in.cell_offsets[c]];
+    for (int i = 0; i < lattice_size(d); ++i) {
+      const auto p = lattice_point(d, i);
+      m.source_cell[nodes[i]] = static_cast<int64_t>(c);
+      m.source_uv[nodes[i]] = {static_cast<double>(p[0]) / d, static_cast<double>(p[1]) / d};
+    }
+    for (int b = 0; b < d; ++b)
+      for (int a = 0; a + b < d; ++a) {
+        m.triangles.push_back({nodes[lattice_index(d, a, b)], nodes[lattice_index(d, a + 1, b)],
+                               nodes[lattice_index(d, a, b + 1)]});
+        if (a + b + 1 < d)
+          m.triangles.push_back({nodes[lattice_index(d, a + 1, b)],
+                                 nodes[lattice_index(d, a + 1, b + 1)],
+                                 nodes[lattice_index(d, a, b + 1)]});
+      }
+  }
+  return m;
+}
+
+} // namespace hoct

@@ -1,0 +1,33 @@
+// A piecewise-linear scalar field on a triangle mesh: vertex positions and values, triangles.
+// The input of the PL contour tree; built from a file's linear cells, by splitting higher-order
+// cells through their Lagrange nodes, or by refining the exact field (pl/refinement.hpp).
+#pragma once
+
+#include "mesh/mesh_input.hpp"
+#include "tree/scalar_graph.hpp"
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace hoct {
+
+struct PlMesh {
+  std::vector<Vec3> points;
+  std::vector<double> values;
+  std::vector<std::array<int64_t, 3>> triangles;
+  // Where each vertex comes from in the higher-order mesh (for reports): the cell and the
+  // parametric position in it; -1 if unknown.
+  std::vector<int64_t> source_cell;
+  std::vector<std::array<double, 2>> source_uv;
+
+  int64_t num_vertices() const { return static_cast<int64_t>(values.size()); }
+  // The 1-skeleton as a scalar graph (every triangle edge once).
+  ScalarGraph graph() const;
+};
+
+// Each Lagrange cell of degree d split into d^2 linear triangles through its nodes (the "linear
+// interpretation" of the input's nodes).
+PlMesh split_lagrange_cells(const MeshInput &input);
+
+} // namespace hoct

@@ -1,0 +1,41 @@
+// The contour tree, merged from the augmented join and split trees (Carr, Snoeyink, Axen 2003),
+// and its reduction to critical nodes (degree != 2, or degree 2 with both arcs on one side).
+#pragma once
+
+#include "tree/merge_tree.hpp"
+#include "tree/scalar_graph.hpp"
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace hoct {
+
+enum class NodeType : uint8_t { Minimum, Maximum, Saddle, Regular };
+const char *to_string(NodeType t);
+
+struct ContourTree {
+  // The nodes kept, as ids of the graph they came from, ascending in the total order.
+  std::vector<int64_t> nodes;
+  std::vector<double> values; // values[i] = value of nodes[i]
+  // Arcs as pairs of indices into `nodes`, lower node first.
+  std::vector<std::array<int64_t, 2>> arcs;
+
+  int64_t size() const { return static_cast<int64_t>(nodes.size()); }
+  // Up- and down-degree of each node (arcs to higher / lower nodes).
+  std::vector<std::array<int32_t, 2>> degrees() const;
+  // Minimum: no lower arc; maximum: no upper arc; regular: one of each; else saddle.
+  std::vector<NodeType> types() const;
+};
+
+// Merges augmented join and split trees of the same graph into the augmented contour tree (every
+// graph node, n - 1 arcs per connected component). Requires both trees from one ScalarGraph.
+ContourTree merge_trees(const ScalarGraph &graph, const MergeTree &join, const MergeTree &split);
+
+// Removes regular nodes (exactly one lower and one upper arc), splicing their arcs.
+ContourTree reduce(const ContourTree &augmented);
+
+// Both steps: the join and split trees of `graph`, merged, optionally reduced.
+ContourTree contour_tree(const ScalarGraph &graph, bool augmented = false);
+
+} // namespace hoct

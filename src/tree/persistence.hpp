@@ -1,0 +1,38 @@
+// Persistence diagrams of a scalar graph (or of a contour tree, viewed as a graph) by the elder
+// rule: (minimum, join saddle) pairs from the ascending sweep, (split saddle, maximum) pairs from
+// the descending sweep, and one (minimum, maximum) pair per connected component. And the
+// bottleneck distance between diagrams.
+#pragma once
+
+#include "tree/scalar_graph.hpp"
+
+#include <cstdint>
+#include <vector>
+
+namespace hoct {
+
+struct PersistencePair {
+  enum class Kind : uint8_t { Join, Split, Global };
+  Kind kind;
+  int64_t birth, death; // graph node ids (Join: min, saddle; Split: max, saddle)
+  double birth_value, death_value;
+  double persistence() const {
+    return death_value > birth_value ? death_value - birth_value : birth_value - death_value;
+  }
+};
+const char *to_string(PersistencePair::Kind k);
+
+struct PersistenceDiagram {
+  std::vector<PersistencePair> pairs;
+  // The points of one kind, as (birth_value, death_value).
+  std::vector<std::array<double, 2>> points(PersistencePair::Kind kind) const;
+};
+
+PersistenceDiagram persistence_diagram(const ScalarGraph &graph);
+
+// Bottleneck distance (L-infinity ground metric, points may match the diagonal) between two
+// point sets. Exact: binary search over the candidate values with a matching test.
+double bottleneck_distance(const std::vector<std::array<double, 2>> &a,
+                           const std::vector<std::array<double, 2>> &b);
+
+} // namespace hoct
