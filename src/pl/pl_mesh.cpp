@@ -15,6 +15,16 @@ ScalarGraph PlMesh::graph() const {
   return ScalarGraph(values, edges);
 }
 
+MeshInput to_mesh_input(const PlMesh &pl) {
+  MeshInput m;
+  m.points = pl.points;
+  m.values = pl.values;
+  m.cell_nodes.reserve(pl.triangles.size() * 3);
+  for (const auto &t : pl.triangles)
+    m.add_cell(1, t.data());
+  return m;
+}
+
 PlMesh split_lagrange_cells(const MeshInput &in) {
   PlMesh m;
   m.points = in.points;

@@ -26,6 +26,9 @@ struct PlMesh {
   ScalarGraph graph() const;
 };
 
+// The PL mesh as linear cells (for writers and for the mesh checks).
+MeshInput to_mesh_input(const PlMesh &pl);
+
 // Each Lagrange cell of degree d split into d^2 linear triangles through its nodes (the "linear
 // interpretation" of the input's nodes).
 PlMesh split_lagrange_cells(const MeshInput &input);

@@ -34,11 +34,26 @@ double BernsteinTriangle::coefficient(int a, int b) const { return c_[lattice_in
 
 double BernsteinTriangle::operator()(double u, double v) const {
   const auto l = barycentric(u, v);
-  std::vector<double> w = c_, next(c_.size());
-  for (int n = d_; n > 0; --n) {
-    casteljau_step(w.data(), n, l, next.data());
-    std::swap(w, next);
+  // In place: step n overwrites the lower-degree coefficients it no longer needs. A stack buffer
+  // covers degrees up to 12 without allocating.
+  constexpr int kStack = 91; // lattice_size(12)
+  double stack_buf[kStack];
+  std::vector<double> heap;
+  double *w = stack_buf;
+  if (c_.size() > kStack) {
+    heap = c_;
+    w = heap.data();
+  } else {
+    std::copy(c_.begin(), c_.end(), w);
   }
+  for (int n = d_; n > 0; --n)
+    for (int b = 0; b <= n - 1; ++b)
+      for (int a = 0; a <= n - 1 - b; ++a)
+        // Index (a, b) in degree n-1 is <= index (a, b) in degree n, and entries of degree n
+        // read later, (a+1, b) and (a, b+1), have larger indices: safe in place.
+        w[lattice_index(n - 1, a, b)] = l[0] * w[lattice_index(n, a, b)] +
+                                        l[1] * w[lattice_index(n, a + 1, b)] +
+                                        l[2] * w[lattice_index(n, a, b + 1)];
   return w[0];
 }
 
