@@ -1,0 +1,22 @@
+// The contour-tree JSON format every tree hoct writes shares:
+//   {"format": "hoct-contour-tree", "version": 1, "method", "augmented",
+//    "nodes": [{"id", "type", "value", "position": [x,y,z], "cell", "uv": [u,v], "location"}],
+//    "arcs": [[id, id], ...], "pairs": [{"birth", "death", "persistence", "kind"}],
+//    "stats": {"nodes_by_type": {...}, "nodes_by_location": {...}, <named statistics>}}
+// Node ids are indices into "nodes", which are ascending in the total order (value, id).
+#pragma once
+
+#include "tree/tree_result.hpp"
+
+#include <string>
+
+namespace hoct {
+
+// Writes atomically (temporary file, then rename).
+void write_tree_json(const std::string &path, const TreeResult &tree);
+std::string tree_to_json(const TreeResult &tree, int indent = 1);
+
+// Reads a file written by write_tree_json; throws InputError naming the file and the problem.
+TreeResult read_tree_json(const std::string &path);
+
+} // namespace hoct

@@ -1,0 +1,14 @@
+// The piecewise-linear contour tree of a PlMesh, reported as a TreeResult (positions, types,
+// where each node sits in the higher-order mesh, persistence pairs, timings).
+#pragma once
+
+#include "pl/pl_mesh.hpp"
+#include "tree/tree_result.hpp"
+
+#include <string>
+
+namespace hoct {
+
+TreeResult pl_contour_tree(const PlMesh &mesh, bool augmented, const std::string &method);
+
+} // namespace hoct

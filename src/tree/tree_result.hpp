@@ -1,0 +1,51 @@
+// What hoct reports for a contour tree, independent of how it was computed (exact, PL of the
+// input's nodes, PL of a refinement) and of the output format: nodes with type, value, position
+// and where they sit in the input mesh; arcs; persistence pairs; and named statistics (counts,
+// timings, fallbacks). Writers (io/tree_json_writer, io/tree_vtp_writer) consume it.
+#pragma once
+
+#include "mesh/mesh_input.hpp"
+#include "tree/contour_tree.hpp"
+#include "tree/persistence.hpp"
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace hoct {
+
+enum class NodeLocation : uint8_t { Vertex, Edge, Interior, Unknown };
+const char *to_string(NodeLocation l);
+
+struct TreeNode {
+  NodeType type = NodeType::Regular;
+  double value = 0;
+  Vec3 position{0, 0, 0};
+  int64_t cell = -1;              // a cell of the input mesh containing the node
+  std::array<double, 2> uv{0, 0}; // its parametric position in that cell
+  NodeLocation location = NodeLocation::Unknown;
+  int32_t up = 0, down = 0; // arcs to higher / lower nodes
+};
+
+struct TreeResult {
+  std::string method; // "exact", "linear", "refine k=4", ...
+  bool augmented = false;
+  std::vector<TreeNode> nodes;              // ascending in the total order (value, id)
+  std::vector<std::array<int64_t, 2>> arcs; // indices into nodes, lower node first
+  std::vector<PersistencePair> pairs;       // birth/death are indices into nodes
+  std::vector<std::pair<std::string, double>> stats;
+
+  void add_stat(const std::string &name, double value) { stats.emplace_back(name, value); }
+  // Counts of nodes by type: minimum, maximum, saddle, regular.
+  std::array<int64_t, 4> type_counts() const;
+};
+
+// Persistence pairs of a (reduced or augmented) contour tree, with node indices of the tree.
+std::vector<PersistencePair> tree_pairs(const ContourTree &tree);
+
+// Parametric location class of (u, v) in the reference triangle (tolerance 1e-12).
+NodeLocation classify_location(double u, double v);
+
+} // namespace hoct

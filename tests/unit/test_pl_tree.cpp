@@ -1,0 +1,150 @@
+// The PL contour tree of a fine exact refinement against an analytic field with known critical
+// points, and the JSON output contract (round trip, errors).
+#include "error.hpp"
+#include "io/tree_json.hpp"
+#include "mesh/mesh.hpp"
+#include "pl/pl_contour_tree.hpp"
+#include "pl/refinement.hpp"
+#include "test_meshes.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+
+namespace hoct {
+namespace {
+
+// f = x'y'z' in a rotated frame p' = R p on the unit sphere: maxima at R^T (s1,s2,s3)/sqrt(3)
+// with s1 s2 s3 = +1, minima with -1, saddles at R^T (+-e_i). 4 + 4 + 6 critical points.
+struct RotatedXyz {
+  double r[3][3];
+  RotatedXyz() {
+    const double a = 0.3, b = 0.7, c = 1.1; // Euler angles: no mesh vertex on a zero circle
+    const double ca = std::cos(a), sa = std::sin(a), cb = std::cos(b), sb = std::sin(b),
+                 cc = std::cos(c), sc = std::sin(c);
+    const double m[3][3] = {{ca * cc - sa * cb * sc, -ca * sc - sa * cb * cc, sa * sb},
+                            {sa * cc + ca * cb * sc, -sa * sc + ca * cb * cc, -ca * sb},
+                            {sb * sc, sb * cc, cb}};
+    std::memcpy(r, m, sizeof(r));
+  }
+  Vec3 rotate(const Vec3 &p) const {
+    return {r[0][0] * p[0] + r[0][1] * p[1] + r[0][2] * p[2],
+            r[1][0] * p[0] + r[1][1] * p[1] + r[1][2] * p[2],
+            r[2][0] * p[0] + r[2][1] * p[1] + r[2][2] * p[2]};
+  }
+  Vec3 unrotate(const Vec3 &q) const {
+    return {r[0][0] * q[0] + r[1][0] * q[1] + r[2][0] * q[2],
+            r[0][1] * q[0] + r[1][1] * q[1] + r[2][1] * q[2],
+            r[0][2] * q[0] + r[1][2] * q[1] + r[2][2] * q[2]};
+  }
+  double operator()(const Vec3 &p) const {
+    const Vec3 q = rotate(p);
+    return q[0] * q[1] * q[2];
+  }
+};
+
+double dist(const Vec3 &a, const Vec3 &b) {
+  return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) +
+                   (a[2] - b[2]) * (a[2] - b[2]));
+}
+
+TEST(PlTree, FineRefinementFindsTheKnownCriticalPointsOfXyzOnTheSphere) {
+  const RotatedXyz f;
+  std::mt19937_64 rng(3);
+  std::vector<Vec3> v;
+  std::vector<std::array<int64_t, 3>> t;
+  testing::octahedron(6, v, t);
+  const MeshInput in = testing::lagrange_mesh(
+      v, t, [](int64_t) { return 4; }, testing::sphere_projection, f, rng);
+  const Mesh mesh = build_mesh(in);
+  const PlMesh pl = refine(mesh, 4);
+  const TreeResult tree = pl_contour_tree(pl, false, "refine k=4");
+  const auto counts = tree.type_counts();
+  EXPECT_EQ(counts[0], 4);
+  EXPECT_EQ(counts[1], 4);
+  EXPECT_EQ(counts[2], 6);
+  EXPECT_EQ(tree.arcs.size(), tree.nodes.size() - 1);
+  // Each found node is within the refinement's resolution of a true critical point of its type.
+  std::vector<std::pair<Vec3, NodeType>> truth;
+  const double s = 1 / std::sqrt(3.0);
+  for (int i = 0; i < 8; ++i) {
+    const Vec3 q = {i & 1 ? s : -s, i & 2 ? s : -s, i & 4 ? s : -s};
+    truth.push_back(
+        {f.unrotate(q), q[0] * q[1] * q[2] > 0 ? NodeType::Maximum : NodeType::Minimum});
+  }
+  for (int i = 0; i < 3; ++i)
+    for (double sign : {-1.0, 1.0}) {
+      Vec3 q{0, 0, 0};
+      q[i] = sign;
+      truth.push_back({f.unrotate(q), NodeType::Saddle});
+    }
+  const double h = 1.0 / (6 * 4); // about one sub-triangle edge on the sphere
+  std::vector<int> matched(truth.size(), 0);
+  for (const auto &n : tree.nodes) {
+    int best = -1;
+    for (std::size_t i = 0; i < truth.size(); ++i)
+      if (truth[i].second == n.type &&
+          (best < 0 || dist(n.position, truth[i].first) < dist(n.position, truth[best].first)))
+        best = static_cast<int>(i);
+    ASSERT_GE(best, 0);
+    EXPECT_LT(dist(n.position, truth[best].first), 3 * h) << to_string(n.type);
+    EXPECT_NEAR(n.value, f(n.position), 1e-12);
+    ++matched[best];
+  }
+  for (int m : matched)
+    EXPECT_EQ(m, 1);
+}
+
+TEST(TreeJson, RoundTripAndErrors) {
+  const RotatedXyz f;
+  std::mt19937_64 rng(4);
+  std::vector<Vec3> v;
+  std::vector<std::array<int64_t, 3>> t;
+  testing::octahedron(2, v, t);
+  const Mesh mesh = build_mesh(testing::lagrange_mesh(
+      v, t, [](int64_t) { return 2; }, testing::sphere_projection, f, rng));
+  TreeResult tree = pl_contour_tree(refine(mesh, 2), false, "refine k=2");
+  const auto dir = std::filesystem::temp_directory_path() / "hoct_tree_json_test";
+  std::filesystem::create_directories(dir);
+  const std::string path = (dir / "t.json").string();
+  write_tree_json(path, tree);
+  const TreeResult back = read_tree_json(path);
+  ASSERT_EQ(back.nodes.size(), tree.nodes.size());
+  for (std::size_t i = 0; i < tree.nodes.size(); ++i) {
+    EXPECT_EQ(back.nodes[i].value, tree.nodes[i].value);
+    EXPECT_EQ(back.nodes[i].type, tree.nodes[i].type);
+    EXPECT_EQ(back.nodes[i].position, tree.nodes[i].position);
+    EXPECT_EQ(back.nodes[i].location, tree.nodes[i].location);
+  }
+  EXPECT_EQ(back.arcs, tree.arcs);
+  ASSERT_EQ(back.pairs.size(), tree.pairs.size());
+  for (std::size_t i = 0; i < tree.pairs.size(); ++i)
+    EXPECT_EQ(back.pairs[i].persistence(), tree.pairs[i].persistence());
+
+  auto expect_error = [&](const std::string &content, const std::string &phrase) {
+    const std::string bad = (dir / "bad.json").string();
+    std::ofstream(bad) << content;
+    try {
+      read_tree_json(bad);
+      ADD_FAILURE() << "accepted: " << content;
+    } catch (const InputError &e) {
+      EXPECT_NE(std::string(e.what()).find(phrase), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("bad.json"), std::string::npos) << e.what();
+    }
+  };
+  expect_error("{", "not valid JSON");
+  expect_error("{\"nodes\": []}", "not a hoct contour-tree file");
+  expect_error(R"({"format":"hoct-contour-tree","nodes":[{"id":0,"type":"minimum","value":1,
+      "position":[0,0,0]}],"arcs":[[0,5]],"pairs":[]})",
+               "refers to node 5");
+  expect_error(R"({"format":"hoct-contour-tree","nodes":[{"id":0,"type":"peak","value":1,
+      "position":[0,0,0]}],"arcs":[],"pairs":[]})",
+               "unknown node type");
+  std::filesystem::remove_all(dir);
+}
+
+} // namespace
+} // namespace hoct
