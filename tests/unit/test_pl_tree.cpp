@@ -148,3 +148,49 @@ TEST(TreeJson, RoundTripAndErrors) {
 
 } // namespace
 } // namespace hoct
+
+namespace hoct {
+namespace {
+
+TEST(PlTree, DiagramsOfFinerRefinementsConverge) {
+  // A smooth random field (sum of cosines) on a cubic disk mesh: the diagrams of the PL trees of
+  // refinements k = 2, 4, 8 approach the one of k = 32 (the reference), monotonically.
+  std::mt19937_64 rng(17);
+  std::uniform_real_distribution<double> U(-1, 1);
+  std::vector<std::array<double, 4>> modes;
+  for (int i = 0; i < 8; ++i)
+    modes.push_back({6 * U(rng), 6 * U(rng), 3 * U(rng), U(rng)});
+  auto f = [&](const Vec3 &p) {
+    double s = 0;
+    for (const auto &m : modes)
+      s += m[3] * std::cos(m[0] * p[0] + m[1] * p[1] + m[2]);
+    return s;
+  };
+  std::vector<Vec3> v;
+  std::vector<std::array<int64_t, 3>> t;
+  testing::square_grid(4, rng, v, t);
+  const Mesh mesh =
+      build_mesh(testing::lagrange_mesh(v, t, [](int64_t) { return 3; }, nullptr, f, rng));
+  auto diagram = [&](int k, PersistencePair::Kind kind) {
+    const TreeResult r = pl_contour_tree(refine(mesh, k), false, "");
+    std::vector<std::array<double, 2>> p;
+    for (const auto &x : r.pairs)
+      if (x.kind == kind)
+        p.push_back({x.birth_value, x.death_value});
+    return p;
+  };
+  for (auto kind : {PersistencePair::Kind::Join, PersistencePair::Kind::Split,
+                    PersistencePair::Kind::Global}) {
+    const auto ref = diagram(32, kind);
+    double last = INFINITY;
+    for (int k : {2, 4, 8}) {
+      const double d = bottleneck_distance(diagram(k, kind), ref);
+      EXPECT_LE(d, last) << to_string(kind) << " k=" << k;
+      last = d;
+    }
+    EXPECT_LT(last, 0.005) << to_string(kind);
+  }
+}
+
+} // namespace
+} // namespace hoct
