@@ -1,0 +1,172 @@
+#include "poly/root_isolation.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace hoct {
+namespace {
+
+struct Interval {
+  double a, b;
+  BernsteinPoly p; // p reparameterised to [a, b]
+};
+
+int sign(double x) { return (x > 0) - (x < 0); }
+
+// Sign changes of the coefficients, zeros skipped. Exact zeros at the ends (roots at the ends,
+// recorded separately) are skipped too: they are not roots in the open interval.
+int sign_changes(const BernsteinPoly &q) {
+  int changes = 0, last = 0;
+  for (double x : q.coefficients()) {
+    const int s = sign(x);
+    if (s == 0)
+      continue;
+    if (last != 0 && s != last)
+      ++changes;
+    last = s;
+  }
+  return changes;
+}
+
+// The sign of q just inside its left (or right) end: its first (last) non-zero coefficient.
+int end_sign(const BernsteinPoly &q, bool left) {
+  const auto &c = q.coefficients();
+  if (left) {
+    for (double x : c)
+      if (x != 0)
+        return sign(x);
+  } else {
+    for (auto it = c.rbegin(); it != c.rend(); ++it)
+      if (*it != 0)
+        return sign(*it);
+  }
+  return 0;
+}
+
+// The single root of p in (lo, hi), with p of sign `slo` just right of lo.
+double refine_simple(const BernsteinPoly &p, const BernsteinPoly &dp, double lo, double hi,
+                     int slo) {
+  double x = 0.5 * (lo + hi);
+  for (int it = 0; it < 300; ++it) {
+    const double fx = p(x);
+    if (fx == 0)
+      return x;
+    if (sign(fx) == slo)
+      lo = x;
+    else
+      hi = x;
+    const double d = dp(x);
+    double next = d != 0 ? x - fx / d : 0.5 * (lo + hi);
+    if (!(next > lo && next < hi))
+      next = 0.5 * (lo + hi);
+    if (next == x || hi - lo <= 2 * std::numeric_limits<double>::epsilon() * std::abs(x))
+      break;
+    x = next;
+  }
+  return x;
+}
+
+} // namespace
+
+// Roots found by sign changes alone (no tangency check).
+std::vector<Root> find_sign_change_roots(const BernsteinPoly &p, const RootOptions &opt,
+                                         bool *identically_zero);
+
+std::vector<Root> find_roots(const BernsteinPoly &p, const RootOptions &opt,
+                             bool *identically_zero) {
+  std::vector<Root> roots = find_sign_change_roots(p, opt, identically_zero);
+  if (opt.near_zero <= 0 || p.degree() < 2 || (identically_zero && *identically_zero))
+    return roots;
+  double scale = 0;
+  for (double c : p.coefficients())
+    scale = std::max(scale, std::abs(c));
+  if (scale == 0)
+    return roots;
+  RootOptions inner = opt;
+  inner.near_zero = 0;
+  const BernsteinPoly dp = p.derivative();
+  bool added = false;
+  for (const Root &s : find_sign_change_roots(dp, inner, nullptr)) {
+    if (!(std::abs(p(s.t)) <= opt.near_zero * scale))
+      continue;
+    bool known = false;
+    for (const Root &r : roots)
+      known = known || std::abs(r.t - s.t) < opt.cluster_distance || (s.t >= r.lo && s.t <= r.hi);
+    if (!known) {
+      roots.push_back({s.t, s.lo, s.hi, false, 2});
+      added = true;
+    }
+  }
+  if (added)
+    std::sort(roots.begin(), roots.end(), [](const Root &x, const Root &y) { return x.t < y.t; });
+  // A tangency next to a found root makes that root non-simple.
+  for (std::size_t i = 0; i + 1 < roots.size(); ++i)
+    if (roots[i + 1].t - roots[i].t < opt.cluster_distance)
+      roots[i].simple = roots[i + 1].simple = false;
+  return roots;
+}
+
+std::vector<Root> find_sign_change_roots(const BernsteinPoly &p, const RootOptions &opt,
+                                         bool *identically_zero) {
+  std::vector<Root> roots;
+  const bool zero_poly = std::all_of(p.coefficients().begin(), p.coefficients().end(),
+                                     [](double c) { return c == 0; });
+  if (identically_zero)
+    *identically_zero = zero_poly;
+  if (zero_poly || p.degree() < 1)
+    return roots;
+  const BernsteinPoly dp = p.derivative();
+  const int n = p.degree();
+  auto exact_root = [&](double t) {
+    const bool simple = dp(t) != 0;
+    roots.push_back({t, t, t, simple, simple ? 1 : 2});
+  };
+  if (p[0] == 0)
+    exact_root(0.0);
+  if (p[n] == 0)
+    exact_root(1.0);
+  std::vector<Interval> stack;
+  stack.push_back({0.0, 1.0, p});
+  while (!stack.empty()) {
+    Interval iv = std::move(stack.back());
+    stack.pop_back();
+    const int v = sign_changes(iv.p);
+    if (v == 0)
+      continue;
+    if (v == 1) {
+      const double t = refine_simple(p, dp, iv.a, iv.b, end_sign(iv.p, true));
+      roots.push_back({t, iv.a, iv.b, true, 1});
+      continue;
+    }
+    if (iv.b - iv.a <= opt.resolution) {
+      roots.push_back({0.5 * (iv.a + iv.b), iv.a, iv.b, false, v});
+      continue;
+    }
+    const double m = 0.5 * (iv.a + iv.b);
+    auto [left, right] = iv.p.split(0.5);
+    if (right[0] == 0)
+      exact_root(m);
+    stack.push_back({m, iv.b, std::move(right)});
+    stack.push_back({iv.a, m, std::move(left)});
+  }
+  std::sort(roots.begin(), roots.end(), [](const Root &x, const Root &y) { return x.t < y.t; });
+  // Roots closer than the cluster distance, and clusters that touch, are one cluster.
+  std::vector<Root> merged;
+  for (const Root &r : roots) {
+    if (!merged.empty() && (r.t - merged.back().t < opt.cluster_distance ||
+                            (!r.simple && !merged.back().simple && r.lo <= merged.back().hi))) {
+      Root &m = merged.back();
+      m.lo = std::min(m.lo, r.lo);
+      m.hi = std::max(m.hi, r.hi);
+      m.t = 0.5 * (m.lo + m.hi);
+      m.simple = false;
+      m.multiplicity += r.multiplicity;
+      continue;
+    }
+    merged.push_back(r);
+  }
+  return merged;
+}
+
+} // namespace hoct

@@ -1,0 +1,97 @@
+// Univariate root isolation against polynomials built from known roots.
+#include "poly/root_isolation.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <random>
+
+namespace hoct {
+namespace {
+
+// Bernstein coefficients of c * prod (t - r_i) on [0, 1], by multiplying linear factors
+// (t - r) = (-r)(1 - t) + (1 - r) t in Bernstein form.
+BernsteinPoly from_roots(const std::vector<double> &r, double c = 1.0) {
+  std::vector<double> p = {c};
+  for (double root : r) {
+    const int n = static_cast<int>(p.size()) - 1; // degree of p
+    std::vector<double> q(n + 2, 0.0);
+    // Product of degree-n and degree-1 Bernstein polynomials.
+    const double a0 = -root, a1 = 1 - root;
+    for (int i = 0; i <= n; ++i) {
+      q[i] += p[i] * a0 * (n + 1 - i) / (n + 1.0);
+      q[i + 1] += p[i] * a1 * (i + 1) / (n + 1.0);
+    }
+    p = q;
+  }
+  return BernsteinPoly(p);
+}
+
+TEST(RootIsolation, FindsEveryRootOfRandomPolynomials) {
+  std::mt19937_64 rng(1);
+  std::uniform_real_distribution<double> U(-0.3, 1.3);
+  for (int trial = 0; trial < 500; ++trial) {
+    const int deg = 1 + static_cast<int>(rng() % 9);
+    std::vector<double> r;
+    for (int i = 0; i < deg; ++i)
+      r.push_back(U(rng));
+    const BernsteinPoly p = from_roots(r, 1.0 + trial % 3);
+    std::vector<double> inside;
+    for (double x : r)
+      if (x >= 0 && x <= 1)
+        inside.push_back(x);
+    std::sort(inside.begin(), inside.end());
+    // Skip near-coincident roots here (covered below).
+    bool close = false;
+    for (std::size_t i = 1; i < inside.size(); ++i)
+      close = close || inside[i] - inside[i - 1] < 1e-3;
+    if (close)
+      continue;
+    const auto roots = find_roots(p);
+    ASSERT_EQ(roots.size(), inside.size()) << "trial " << trial;
+    for (std::size_t i = 0; i < inside.size(); ++i) {
+      // Roots 1e-3 apart in a degree-9 polynomial are conditioned to about 1e-11.
+      EXPECT_NEAR(roots[i].t, inside[i], 1e-10) << "trial " << trial;
+      EXPECT_TRUE(roots[i].simple);
+      EXPECT_LE(roots[i].lo, inside[i]);
+      EXPECT_GE(roots[i].hi, inside[i]);
+    }
+  }
+}
+
+TEST(RootIsolation, EndsMidpointsMultipleAndZero) {
+  auto r = find_roots(from_roots({0.0, 0.5, 1.0}));
+  ASSERT_EQ(r.size(), 3u);
+  EXPECT_EQ(r[0].t, 0.0);
+  EXPECT_EQ(r[1].t, 0.5);
+  EXPECT_EQ(r[2].t, 1.0);
+  for (const auto &x : r)
+    EXPECT_TRUE(x.simple);
+  // A double root is reported once, as non-simple.
+  r = find_roots(from_roots({0.3, 0.3, 0.8}));
+  ASSERT_EQ(r.size(), 2u);
+  EXPECT_NEAR(r[0].t, 0.3, 1e-6);
+  EXPECT_FALSE(r[0].simple);
+  EXPECT_TRUE(r[1].simple);
+  // A double root exactly at the end.
+  r = find_roots(from_roots({0.0, 0.0, 0.6}));
+  ASSERT_EQ(r.size(), 2u);
+  EXPECT_EQ(r[0].t, 0.0);
+  EXPECT_FALSE(r[0].simple);
+  bool zero = false;
+  EXPECT_TRUE(find_roots(BernsteinPoly({0.0, 0.0, 0.0}), {}, &zero).empty());
+  EXPECT_TRUE(zero);
+  EXPECT_TRUE(find_roots(BernsteinPoly({1.0, -0.1, 2.0})).empty()); // no real root in [0,1]
+  // Two roots 1e-6 apart are separated; 1e-9 apart they are one (degenerate) cluster.
+  r = find_roots(from_roots({0.4, 0.4 + 1e-6}));
+  ASSERT_EQ(r.size(), 2u);
+  EXPECT_TRUE(r[0].simple && r[1].simple);
+  EXPECT_NEAR(r[1].t - r[0].t, 1e-6, 1e-9);
+  r = find_roots(from_roots({0.4, 0.4 + 1e-9}));
+  ASSERT_EQ(r.size(), 1u);
+  EXPECT_FALSE(r[0].simple);
+  EXPECT_NEAR(r[0].t, 0.4, 1e-8);
+}
+
+} // namespace
+} // namespace hoct
