@@ -1,0 +1,42 @@
+// All zeros of the gradient of a triangle polynomial g in the closed reference triangle: the
+// interior critical points of a cell (at most (d-1)^2 isolated ones). Boxes covering the triangle
+// are subdivided, pruned where a gradient component's Bernstein coefficients share a sign, and
+// each zero is certified unique in its box by the Krawczyk test (interval Newton with the
+// Hessian's Bernstein enclosure), which also proves the Hessian non-singular there. What cannot be
+// certified down to the resolution is reported, never dropped: unresolved clusters (degenerate
+// zeros) and a critical-curve flag when the box budget runs out.
+#pragma once
+
+#include "poly/bernstein_triangle.hpp"
+
+#include <cstdint>
+#include <vector>
+
+namespace hoct {
+
+struct GradientZero {
+  double u = 0, v = 0;
+  bool certified = false;     // unique and non-degenerate (Krawczyk)
+  bool near_boundary = false; // within boundary_tolerance of the triangle's boundary
+  double radius = 0;          // half-width of the box it was found in
+};
+
+struct GradientZeroOptions {
+  double resolution = 1e-10;         // boxes below this width are reported unresolved
+  double boundary_tolerance = 1e-9;  // "on or near the boundary"
+  int64_t max_boxes = 200000;        // budget: exhausted means a curve of critical points
+  double constant_tolerance = 1e-12; // |gradient coefficients| <= this * |values|: constant
+};
+
+struct GradientZeros {
+  std::vector<GradientZero> zeros;
+  bool constant = false;         // the gradient vanishes identically
+  bool budget_exhausted = false; // likely a curve of critical points (degenerate cell)
+  int64_t boxes = 0;             // boxes examined
+  int64_t unresolved = 0;        // zeros reported uncertified
+};
+
+GradientZeros find_gradient_zeros(const BernsteinTriangle &g,
+                                  const GradientZeroOptions &options = {});
+
+} // namespace hoct
