@@ -121,6 +121,7 @@ GradientZeros find_gradient_zeros(const BernsteinTriangle &g, const GradientZero
   stack.push_back(
       {0.0, 0.0, 1.0, TensorBernstein::from_triangle(gu), TensorBernstein::from_triangle(gv)});
   const double tol = opt.boundary_tolerance;
+  int64_t deep = 0;
   while (!stack.empty()) {
     Box b = std::move(stack.back());
     stack.pop_back();
@@ -151,6 +152,10 @@ GradientZeros find_gradient_zeros(const BernsteinTriangle &g, const GradientZero
           found.push_back({x, y, cx, cy, r, r, true});
         continue;
       }
+    }
+    if (b.w <= opt.deep_width && ++deep > opt.deep_limit) {
+      out.budget_exhausted = true;
+      break;
     }
     if (b.w <= opt.resolution) {
       found.push_back({cx, cy, cx, cy, h, h, false});

@@ -22,9 +22,13 @@ struct GradientZero {
 };
 
 struct GradientZeroOptions {
-  double resolution = 1e-10;         // boxes below this width are reported unresolved
+  double resolution = 1e-9; // boxes below this width are reported unresolved
+  // Boxes narrower than deep_width still undecided: more than deep_limit of them means the
+  // zeros form a curve (or a region), not isolated points.
+  double deep_width = 1e-6;
+  int64_t deep_limit = 64;
   double boundary_tolerance = 1e-9;  // "on or near the boundary"
-  int64_t max_boxes = 200000;        // budget: exhausted means a curve of critical points
+  int64_t max_boxes = 50000;         // budget: exhausted means a curve of critical points
   double constant_tolerance = 1e-12; // |gradient coefficients| <= this * |values|: constant
 };
 

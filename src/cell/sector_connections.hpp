@@ -1,0 +1,39 @@
+// The local connections of one non-degenerate cell: for every lower sector of its nodes that
+// lies inside the cell (interior maxima and saddles, edge nodes whose interior descends while the
+// edge ascends), a certified path to a lower node; the same for upper sectors. Sectors along an
+// edge are covered by the edge chains and need no path (DESIGN.md sections 4-5).
+#pragma once
+
+#include "cell/cell_nodes.hpp"
+#include "cell/certified_path.hpp"
+
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+namespace hoct {
+
+struct InteriorCritical {
+  Vec2 uv;
+  double value;
+};
+
+// An edge node of the cell as classification needs it.
+struct CellEdgeNode {
+  int local_edge;
+  double s;      // parameter along the local edge from its first corner
+  double second; // second derivative of the edge polynomial (orientation-independent)
+  int node;      // index into CellNodes::nodes
+};
+
+struct SectorResult {
+  std::vector<std::pair<int64_t, int64_t>> join, split; // node refs (see LocalNode::ref)
+  bool failed = false;     // some sector could not be connected: fall back
+  bool degenerate = false; // an edge node with vanishing normal derivative: fall back
+};
+
+SectorResult connect_sectors(const BernsteinTriangle &g, const CellNodes &nodes,
+                             const std::vector<int> &interior_nodes,
+                             const std::vector<CellEdgeNode> &edge_nodes, PathCounters &counters);
+
+} // namespace hoct

@@ -1,0 +1,352 @@
+#include "tree/exact_contour_tree.hpp"
+
+#include "cell/edge_nodes.hpp"
+#include "cell/sector_connections.hpp"
+#include "pl/cell_refinement.hpp"
+#include "poly/gradient_zeros.hpp"
+#include "tree/contour_tree.hpp"
+#include "tree/merge_tree.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <map>
+
+namespace hoct {
+namespace {
+
+using clock_type = std::chrono::steady_clock;
+double seconds(clock_type::time_point a, clock_type::time_point b) {
+  return std::chrono::duration<double>(b - a).count();
+}
+
+enum FallbackReason : uint8_t {
+  kConstantCell = 1,
+  kCriticalCurve = 2,
+  kUncertifiedZero = 4,
+  kZeroNearBoundary = 8,
+  kDegenerateEdge = 16,
+  kDegenerateEdgeNode = 32,
+  kCertificationFailed = 64,
+};
+
+// Where a global node comes from, for positions and reports.
+struct NodeSource {
+  int64_t cell;
+  Vec2 uv;
+  NodeLocation location;
+};
+
+} // namespace
+
+TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
+  const auto t0 = clock_type::now();
+  const Topology &topo = mesh.topology;
+  const Field &field = mesh.field;
+  const int64_t nv = topo.num_vertices(), ne = topo.num_edges(), nc = topo.num_cells();
+
+  // Edge nodes: once per mesh edge.
+  const EdgeNodes en = find_edge_nodes(topo, field);
+  const int64_t edge_base = nv;
+  const auto t1 = clock_type::now();
+
+  // Pass 1: interior critical points of every cell; degeneracy decisions.
+  std::vector<std::vector<InteriorCritical>> interior(nc);
+  std::vector<uint8_t> fallback(nc, 0);
+  int64_t unresolved_zeros = 0;
+  for (int64_t c = 0; c < nc; ++c) {
+    const BernsteinTriangle g = field.cell_polynomial(c);
+    const GradientZeros z = find_gradient_zeros(g);
+    uint8_t why = 0;
+    if (z.constant)
+      why |= kConstantCell;
+    if (z.budget_exhausted)
+      why |= kCriticalCurve;
+    for (const GradientZero &p : z.zeros) {
+      if (!p.certified) {
+        why |= kUncertifiedZero;
+        ++unresolved_zeros;
+      } else if (p.near_boundary) {
+        why |= kZeroNearBoundary;
+      } else {
+        interior[c].push_back({{p.u, p.v}, g(p.u, p.v)});
+      }
+    }
+    for (int k = 0; k < 3; ++k)
+      if (en.degeneracy[topo.cell_edge(c, k)] != kEdgeOk)
+        why |= kDegenerateEdge;
+    fallback[c] = why;
+  }
+  const auto t2 = clock_type::now();
+
+  // Pass 2: local connections of every non-degenerate cell, in node references.
+  std::vector<std::pair<int64_t, int64_t>> join_edges, split_edges;
+  std::vector<std::vector<std::pair<int64_t, int64_t>>> cell_join(nc), cell_split(nc);
+  PathCounters counters;
+  CellNodes cn;
+  std::vector<int> interior_idx;
+  std::vector<CellEdgeNode> cell_edge_nodes;
+  for (int64_t c = 0; c < nc; ++c) {
+    if (fallback[c])
+      continue;
+    const BernsteinTriangle g = field.cell_polynomial(c);
+    cn.nodes.clear();
+    interior_idx.clear();
+    cell_edge_nodes.clear();
+    static constexpr double kCorner[3][2] = {{0, 0}, {1, 0}, {0, 1}};
+    for (int k = 0; k < 3; ++k) {
+      const int64_t v = topo.cell_vertices(c)[k];
+      cn.nodes.push_back({{kCorner[k][0], kCorner[k][1]}, field.vertex_value(v), v});
+    }
+    for (int k = 0; k < 3; ++k) {
+      const int64_t e = topo.cell_edge(c, k);
+      const bool rev = topo.edge_reversed(c, k);
+      auto &chain = cn.chain[k];
+      auto &cs = cn.chain_s[k];
+      chain.assign(1, k);
+      cs.assign(1, 0.0);
+      const int64_t n = en.count(e);
+      for (int64_t i = 0; i < n; ++i) {
+        const int64_t gi = rev ? en.offset[e] + n - 1 - i : en.offset[e] + i;
+        const EdgeNode &node = en.nodes[gi];
+        const double s = rev ? 1 - node.t : node.t;
+        const int idx = static_cast<int>(cn.nodes.size());
+        cn.nodes.push_back({point_on_edge(k, s), node.value, edge_base + gi});
+        chain.push_back(idx);
+        cs.push_back(s);
+        cell_edge_nodes.push_back({k, s, node.second, idx});
+      }
+      chain.push_back((k + 1) % 3);
+      cs.push_back(1.0);
+    }
+    for (std::size_t i = 0; i < interior[c].size(); ++i) {
+      interior_idx.push_back(static_cast<int>(cn.nodes.size()));
+      cn.nodes.push_back({interior[c][i].uv, interior[c][i].value, -1 - static_cast<int64_t>(i)});
+    }
+    const SectorResult r = connect_sectors(g, cn, interior_idx, cell_edge_nodes, counters);
+    if (r.failed || r.degenerate) {
+      fallback[c] = r.failed ? kCertificationFailed : kDegenerateEdgeNode;
+      continue;
+    }
+    cell_join[c] = r.join;
+    cell_split[c] = r.split;
+  }
+  const auto t3 = clock_type::now();
+
+  // Global ids: vertices, edge nodes, then the interior nodes of regular cells, then extra
+  // lattice nodes on edges of fallback cells, then fallback cells' interior sub-vertices.
+  int64_t next = edge_base + static_cast<int64_t>(en.nodes.size());
+  std::vector<int64_t> interior_base(nc, -1);
+  for (int64_t c = 0; c < nc; ++c)
+    if (!fallback[c]) {
+      interior_base[c] = next;
+      next += static_cast<int64_t>(interior[c].size());
+    }
+  std::vector<double> values(next);
+  std::vector<NodeSource> source(next);
+  // Sources and values of vertices and edge nodes.
+  {
+    std::vector<int64_t> vcell(nv, -1);
+    std::vector<int> vcorner(nv, 0);
+    for (int64_t c = nc - 1; c >= 0; --c)
+      for (int k = 0; k < 3; ++k) {
+        vcell[topo.cell_vertices(c)[k]] = c;
+        vcorner[topo.cell_vertices(c)[k]] = k;
+      }
+    for (int64_t v = 0; v < nv; ++v) {
+      values[v] = field.vertex_value(v);
+      source[v] = {vcell[v], point_on_edge(vcorner[v], 0.0), NodeLocation::Vertex};
+    }
+    for (int64_t e = 0; e < ne; ++e) {
+      const int64_t c = topo.edge_cells_begin(e)[0];
+      int k = 0;
+      while (topo.cell_edge(c, k) != e)
+        ++k;
+      for (int64_t i = en.offset[e]; i < en.offset[e + 1]; ++i) {
+        const double s = topo.edge_reversed(c, k) ? 1 - en.nodes[i].t : en.nodes[i].t;
+        values[edge_base + i] = en.nodes[i].value;
+        source[edge_base + i] = {c, point_on_edge(k, s), NodeLocation::Edge};
+      }
+    }
+  }
+  for (int64_t c = 0; c < nc; ++c) {
+    if (fallback[c])
+      continue;
+    for (std::size_t i = 0; i < interior[c].size(); ++i) {
+      values[interior_base[c] + i] = interior[c][i].value;
+      source[interior_base[c] + i] = {c, interior[c][i].uv, NodeLocation::Interior};
+    }
+    auto resolve = [&](int64_t ref) { return ref >= 0 ? ref : interior_base[c] + (-1 - ref); };
+    for (auto [a, b] : cell_join[c])
+      join_edges.emplace_back(resolve(a), resolve(b));
+    for (auto [a, b] : cell_split[c])
+      split_edges.emplace_back(resolve(a), resolve(b));
+  }
+
+  // Fallback cells: k x k refinement through the edge nodes, PL rule (all sub-edges in both
+  // graphs). Lattice points on an edge are shared by both cells of the edge.
+  int max_degree = 1;
+  for (int64_t c = 0; c < nc; ++c)
+    max_degree = std::max(max_degree, field.degree(c));
+  const int K = opt.fallback_refinement > 0 ? opt.fallback_refinement : std::max(4, 2 * max_degree);
+  std::map<std::pair<int64_t, int>, int64_t> lattice_node; // (edge, step from lo) -> id
+  auto add_node = [&](double value, int64_t cell, const Vec2 &uv, NodeLocation loc) {
+    values.push_back(value);
+    source.push_back({cell, uv, loc});
+    return next++;
+  };
+  std::array<int64_t, 8> reason_count{};
+  int64_t fallback_cells = 0;
+  std::array<std::vector<double>, 3> extra;
+  std::vector<int64_t> ids;
+  for (int64_t c = 0; c < nc; ++c) {
+    if (!fallback[c])
+      continue;
+    ++fallback_cells;
+    for (int b = 0; b < 7; ++b)
+      if (fallback[c] & (1u << b))
+        ++reason_count[b];
+    const BernsteinTriangle g = field.cell_polynomial(c);
+    // Edge nodes of each local edge (local parameters, ascending), minus lattice coincidences.
+    std::array<std::vector<int64_t>, 3> extra_ids;
+    std::array<std::map<int, int64_t>, 3> lattice_hits; // local step -> edge node id
+    for (int k = 0; k < 3; ++k) {
+      const int64_t e = topo.cell_edge(c, k);
+      const bool rev = topo.edge_reversed(c, k);
+      extra[k].clear();
+      const int64_t n = en.count(e);
+      for (int64_t i = 0; i < n; ++i) {
+        const int64_t gi = rev ? en.offset[e] + n - 1 - i : en.offset[e] + i;
+        const double s = rev ? 1 - en.nodes[gi].t : en.nodes[gi].t;
+        const double step = std::round(s * K);
+        if (std::abs(s * K - step) <= 1e-9 && step > 0 && step < K) {
+          lattice_hits[k][static_cast<int>(step)] = edge_base + gi;
+          continue;
+        }
+        extra[k].push_back(s);
+        extra_ids[k].push_back(edge_base + gi);
+      }
+    }
+    const CellRefinement cr = refine_cell(K, extra);
+    ids.resize(cr.vertices.size());
+    for (std::size_t i = 0; i < cr.vertices.size(); ++i) {
+      const CellSubVertex &sv = cr.vertices[i];
+      switch (sv.kind) {
+      case CellSubVertex::Kind::Corner:
+        ids[i] = topo.cell_vertices(c)[sv.corner];
+        break;
+      case CellSubVertex::Kind::EdgeExtra:
+        ids[i] = extra_ids[sv.edge][sv.index];
+        break;
+      case CellSubVertex::Kind::EdgeLattice: {
+        auto hit = lattice_hits[sv.edge].find(sv.index);
+        if (hit != lattice_hits[sv.edge].end()) {
+          ids[i] = hit->second;
+          break;
+        }
+        const int64_t e = topo.cell_edge(c, sv.edge);
+        const int step = topo.edge_reversed(c, sv.edge) ? K - sv.index : sv.index;
+        auto [it, fresh] = lattice_node.try_emplace({e, step}, -1);
+        if (fresh)
+          it->second = add_node(field.edge_polynomial(e)(static_cast<double>(step) / K), c,
+                                {sv.u, sv.v}, NodeLocation::Edge);
+        ids[i] = it->second;
+        break;
+      }
+      case CellSubVertex::Kind::Interior:
+        ids[i] = add_node(g(sv.u, sv.v), c, {sv.u, sv.v}, NodeLocation::Interior);
+        break;
+      }
+    }
+    for (const auto &t : cr.triangles)
+      for (int j = 0; j < 3; ++j) {
+        join_edges.emplace_back(ids[t[j]], ids[t[(j + 1) % 3]]);
+        split_edges.emplace_back(ids[t[j]], ids[t[(j + 1) % 3]]);
+      }
+  }
+
+  // Edge chains: consecutive nodes along every edge (vertices, edge nodes, lattice nodes).
+  {
+    std::vector<std::pair<double, int64_t>> chain;
+    std::map<int64_t, std::vector<std::pair<double, int64_t>>> lattice_by_edge;
+    for (const auto &[key, id] : lattice_node)
+      lattice_by_edge[key.first].push_back({static_cast<double>(key.second) / K, id});
+    for (int64_t e = 0; e < ne; ++e) {
+      chain.clear();
+      chain.push_back({0.0, topo.edge_vertices(e)[0]});
+      for (int64_t i = en.offset[e]; i < en.offset[e + 1]; ++i)
+        chain.push_back({en.nodes[i].t, edge_base + i});
+      auto it = lattice_by_edge.find(e);
+      if (it != lattice_by_edge.end())
+        chain.insert(chain.end(), it->second.begin(), it->second.end());
+      chain.push_back({1.0, topo.edge_vertices(e)[1]});
+      std::sort(chain.begin(), chain.end());
+      for (std::size_t i = 0; i + 1 < chain.size(); ++i) {
+        join_edges.emplace_back(chain[i].second, chain[i + 1].second);
+        split_edges.emplace_back(chain[i].second, chain[i + 1].second);
+      }
+    }
+  }
+  const auto t4 = clock_type::now();
+
+  // Global sweeps and merge.
+  const ScalarGraph jg(values, join_edges), sg(values, split_edges);
+  const MergeTree jt = join_tree(jg), st = split_tree(sg);
+  const auto t5 = clock_type::now();
+  const ContourTree aug = merge_trees(jg, jt, st);
+  const ContourTree ct = opt.augmented ? aug : reduce(aug);
+  const auto t6 = clock_type::now();
+
+  TreeResult r;
+  r.method = "exact";
+  r.augmented = opt.augmented;
+  const auto types = ct.types();
+  const auto deg = ct.degrees();
+  r.nodes.resize(ct.size());
+  for (int64_t i = 0; i < ct.size(); ++i) {
+    const int64_t id = ct.nodes[i];
+    TreeNode &n = r.nodes[i];
+    n.type = types[i];
+    n.value = ct.values[i];
+    n.cell = source[id].cell;
+    n.uv = source[id].uv;
+    n.location = source[id].location;
+    n.position = mesh.geometry.position(n.cell, n.uv[0], n.uv[1]);
+    n.up = deg[i][0];
+    n.down = deg[i][1];
+  }
+  r.arcs = ct.arcs;
+  r.pairs = tree_pairs(ct);
+  const auto t7 = clock_type::now();
+
+  int64_t interior_nodes = 0;
+  for (int64_t c = 0; c < nc; ++c)
+    if (!fallback[c])
+      interior_nodes += static_cast<int64_t>(interior[c].size());
+  r.add_stat("cells", static_cast<double>(nc));
+  r.add_stat("graph_nodes", static_cast<double>(values.size()));
+  r.add_stat("edge_critical_points", static_cast<double>(en.nodes.size()));
+  r.add_stat("interior_critical_points", static_cast<double>(interior_nodes));
+  r.add_stat("connections_direct", static_cast<double>(counters.direct));
+  r.add_stat("connections_traced", static_cast<double>(counters.traced));
+  r.add_stat("connections_failed", static_cast<double>(counters.failed));
+  r.add_stat("descent_steps", static_cast<double>(counters.steps));
+  r.add_stat("fallback_cells", static_cast<double>(fallback_cells));
+  static const char *reason_names[7] = {
+      "fallback_constant_cell",       "fallback_critical_curve",  "fallback_uncertified_zero",
+      "fallback_zero_near_boundary",  "fallback_degenerate_edge", "fallback_degenerate_edge_node",
+      "fallback_certification_failed"};
+  for (int b = 0; b < 7; ++b)
+    r.add_stat(reason_names[b], static_cast<double>(reason_count[b]));
+  r.add_stat("unresolved_interior_zeros", static_cast<double>(unresolved_zeros));
+  r.add_stat("time_edge_nodes_s", seconds(t0, t1));
+  r.add_stat("time_interior_critical_points_s", seconds(t1, t2));
+  r.add_stat("time_connections_s", seconds(t2, t3));
+  r.add_stat("time_fallback_and_chains_s", seconds(t3, t4));
+  r.add_stat("time_sweeps_s", seconds(t4, t5));
+  r.add_stat("time_merge_s", seconds(t5, t6));
+  r.add_stat("time_output_s", seconds(t6, t7));
+  return r;
+}
+
+} // namespace hoct

@@ -1,0 +1,258 @@
+// The exact contour tree against fields with known critical points, the PL tree of a fine
+// refinement, and the tree invariants.
+#include "mesh/mesh.hpp"
+#include "pl/pl_contour_tree.hpp"
+#include "pl/refinement.hpp"
+#include "test_meshes.hpp"
+#include "tree/exact_contour_tree.hpp"
+#include "tree/persistence.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cstring>
+
+namespace hoct {
+namespace {
+
+struct Rotation {
+  double r[3][3];
+  explicit Rotation(double a = 0.3, double b = 0.7, double c = 1.1) {
+    const double ca = std::cos(a), sa = std::sin(a), cb = std::cos(b), sb = std::sin(b),
+                 cc = std::cos(c), sc = std::sin(c);
+    const double m[3][3] = {{ca * cc - sa * cb * sc, -ca * sc - sa * cb * cc, sa * sb},
+                            {sa * cc + ca * cb * sc, -sa * sc + ca * cb * cc, -ca * sb},
+                            {sb * sc, sb * cc, cb}};
+    std::memcpy(r, m, sizeof(r));
+  }
+  Vec3 apply(const Vec3 &p) const {
+    return {r[0][0] * p[0] + r[0][1] * p[1] + r[0][2] * p[2],
+            r[1][0] * p[0] + r[1][1] * p[1] + r[1][2] * p[2],
+            r[2][0] * p[0] + r[2][1] * p[1] + r[2][2] * p[2]};
+  }
+  Vec3 inverse(const Vec3 &q) const {
+    return {r[0][0] * q[0] + r[1][0] * q[1] + r[2][0] * q[2],
+            r[0][1] * q[0] + r[1][1] * q[1] + r[2][1] * q[2],
+            r[0][2] * q[0] + r[1][2] * q[1] + r[2][2] * q[2]};
+  }
+};
+
+double stat(const TreeResult &t, const std::string &name) {
+  for (const auto &[k, v] : t.stats)
+    if (k == name)
+      return v;
+  return -1;
+}
+
+// Invariants every tree must satisfy.
+void check_invariants(const TreeResult &t, const Mesh &m) {
+  ASSERT_EQ(t.arcs.size() + 1, t.nodes.size());
+  int64_t sum = 0;
+  for (const auto &n : t.nodes) {
+    sum += n.up + n.down - 2;
+    EXPECT_NE(n.up + n.down, 0);
+    // Values equal the field at the node's position.
+    EXPECT_NEAR(n.value, m.field.value(n.cell, n.uv[0], n.uv[1]),
+                1e-10 * std::max(1.0, std::abs(n.value)));
+    if (!t.augmented) {
+      EXPECT_NE(n.type, NodeType::Regular);
+    }
+  }
+  EXPECT_EQ(sum, -2);
+}
+
+std::vector<std::array<double, 2>> diagram(const TreeResult &t, PersistencePair::Kind kind,
+                                           double min_persistence = 0) {
+  std::vector<std::array<double, 2>> p;
+  for (const auto &x : t.pairs)
+    if (x.kind == kind && x.persistence() > min_persistence)
+      p.push_back({x.birth_value, x.death_value});
+  return p;
+}
+
+TEST(ExactTree, FieldOnTheSphereMatchesTheAnalyticTopologyAndTheFinePlTree) {
+  // g = x'y'z' (rotated frame) sampled at the nodes of curved cells: 4 maxima, 4 minima and
+  // 6 saddles of high persistence, near the analytic ones. The interpolated field may add tiny
+  // features near cell edges (it is only C0 there): those are real extrema of the
+  // piecewise-polynomial field, below the resolution of a PL refinement.
+  const Rotation rot;
+  std::mt19937_64 rng(3);
+  std::vector<Vec3> v;
+  std::vector<std::array<int64_t, 3>> t;
+  testing::octahedron(4, v, t);
+  const double s3 = 1 / std::sqrt(3.0);
+  for (int degree : {2, 3, 4, 6, 8}) {
+    const MeshInput in = testing::lagrange_mesh(
+        v, t, [&](int64_t) { return degree; }, testing::sphere_projection,
+        [&](const Vec3 &p) {
+          const Vec3 q = rot.apply(p);
+          return q[0] * q[1] * q[2];
+        },
+        rng);
+    const Mesh mesh = build_mesh(in);
+    const TreeResult tree = exact_contour_tree(mesh);
+    check_invariants(tree, mesh);
+    EXPECT_EQ(stat(tree, "fallback_cells"), 0) << "degree " << degree;
+    EXPECT_EQ(diagram(tree, PersistencePair::Kind::Join, 0.01).size(), 3u) << degree;
+    EXPECT_EQ(diagram(tree, PersistencePair::Kind::Split, 0.01).size(), 3u) << degree;
+    // The high-persistence extrema sit near the analytic ones (interpolation error: quadratics
+    // on this coarse mesh are off by a few percent).
+    const double tol = degree == 2 ? 0.06 : 0.02;
+    for (const auto &n : tree.nodes) {
+      if (n.type != NodeType::Maximum || n.value < 0.15)
+        continue;
+      const Vec3 q = rot.apply(n.position);
+      EXPECT_NEAR(std::abs(q[0]), s3, tol) << "degree " << degree;
+      EXPECT_NEAR(std::abs(q[1]), s3, tol) << "degree " << degree;
+      EXPECT_GT(q[0] * q[1] * q[2], 0);
+    }
+    // Against the PL tree of a fine refinement: the diagrams agree to the PL resolution.
+    const TreeResult pl = pl_contour_tree(refine(mesh, 16), false, "");
+    for (auto kind :
+         {PersistencePair::Kind::Join, PersistencePair::Kind::Split, PersistencePair::Kind::Global})
+      EXPECT_LT(bottleneck_distance(diagram(tree, kind), diagram(pl, kind)), 2e-3)
+          << "degree " << degree << " " << to_string(kind);
+  }
+}
+
+// A(u) with A' = prod (u - r_i), as monomial coefficients.
+std::vector<double> antiderivative_of_roots(const std::vector<double> &r, double scale) {
+  std::vector<double> p = {scale};
+  for (double root : r) {
+    std::vector<double> q(p.size() + 1, 0.0);
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      q[i] -= root * p[i];
+      q[i + 1] += p[i];
+    }
+    p = q;
+  }
+  std::vector<double> a(p.size() + 1, 0.0);
+  for (std::size_t i = 0; i < p.size(); ++i)
+    a[i + 1] = p[i] / static_cast<double>(i + 1);
+  return a;
+}
+
+double horner(const std::vector<double> &a, double x) {
+  double s = 0;
+  for (auto it = a.rbegin(); it != a.rend(); ++it)
+    s = s * x + *it;
+  return s;
+}
+
+TEST(ExactTree, GlobalPolynomialOnStraightCellsHasExactlyItsCriticalPoints) {
+  // f = A(x) + B(y) on the unit square, represented exactly by straight cells of degree >= 4:
+  // interior critical points exactly at (r_i, s_j), minima where A'' > 0 and B'' > 0, maxima
+  // where both < 0, saddles otherwise. Every one is a node of the tree, within 1e-8.
+  const std::vector<double> r = {0.23, 0.61, 0.83}, s = {0.17, 0.52, 0.79};
+  const auto A = antiderivative_of_roots(r, 1.0), B = antiderivative_of_roots(s, -1.3);
+  auto f = [&](const Vec3 &p) { return horner(A, p[0]) + horner(B, p[1]); };
+  auto second = [](const std::vector<double> &a, double x) {
+    double sum = 0;
+    for (std::size_t i = 2; i < a.size(); ++i)
+      sum += a[i] * static_cast<double>(i * (i - 1)) * std::pow(x, static_cast<double>(i - 2));
+    return sum;
+  };
+  for (int degree : {4, 5, 8}) {
+    std::mt19937_64 rng(7 + degree);
+    std::vector<Vec3> v;
+    std::vector<std::array<int64_t, 3>> t;
+    testing::square_grid(5, rng, v, t);
+    const Mesh mesh = build_mesh(testing::lagrange_mesh(
+        v, t, [&](int64_t) { return degree; }, nullptr, f, rng));
+    const TreeResult tree = exact_contour_tree(mesh);
+    check_invariants(tree, mesh);
+    int found = 0;
+    for (double x : r)
+      for (double y : s) {
+        const double ax = second(A, x), by = second(B, y);
+        const NodeType want = ax > 0 && by > 0   ? NodeType::Minimum
+                              : ax < 0 && by < 0 ? NodeType::Maximum
+                                                 : NodeType::Saddle;
+        bool hit = false;
+        for (const auto &n : tree.nodes)
+          if (std::abs(n.position[0] - x) < 1e-8 && std::abs(n.position[1] - y) < 1e-8) {
+            hit = true;
+            EXPECT_EQ(n.type, want) << "(" << x << ", " << y << ") degree " << degree;
+          }
+        EXPECT_TRUE(hit) << "missing (" << x << ", " << y << ") degree " << degree;
+        found += hit;
+      }
+    EXPECT_EQ(found, 9);
+  }
+}
+
+TEST(ExactTree, RandomFieldsAgreeWithFinePlRefinements) {
+  for (bool sphere : {false, true})
+    for (int degree : {2, 3, 5}) {
+      std::mt19937_64 rng(31 + degree + (sphere ? 100 : 0));
+      std::uniform_real_distribution<double> U(-1, 1);
+      std::vector<std::array<double, 4>> modes;
+      for (int i = 0; i < 6; ++i)
+        modes.push_back({4 * U(rng), 4 * U(rng), 4 * U(rng), U(rng)});
+      auto f = [&](const Vec3 &p) {
+        double sum = 0;
+        for (const auto &m : modes)
+          sum += m[3] * std::cos(m[0] * p[0] + m[1] * p[1] + m[2] * p[2]);
+        return sum;
+      };
+      std::vector<Vec3> v;
+      std::vector<std::array<int64_t, 3>> t;
+      if (sphere)
+        testing::octahedron(3, v, t);
+      else
+        testing::square_grid(4, rng, v, t);
+      const Mesh mesh = build_mesh(testing::lagrange_mesh(
+          v, t, [&](int64_t) { return degree; }, sphere ? testing::sphere_projection : nullptr, f,
+          rng));
+      const TreeResult tree = exact_contour_tree(mesh);
+      check_invariants(tree, mesh);
+      for (auto kind : {PersistencePair::Kind::Join, PersistencePair::Kind::Split,
+                        PersistencePair::Kind::Global}) {
+        double last = INFINITY;
+        for (int k : {4, 16, 64}) {
+          const double d = bottleneck_distance(
+              diagram(tree, kind), diagram(pl_contour_tree(refine(mesh, k), false, ""), kind));
+          EXPECT_LE(d, last * 1.0001 + 1e-12) << to_string(kind) << " k=" << k;
+          last = d;
+        }
+        EXPECT_LT(last, 1e-3) << to_string(kind) << " degree " << degree << " sphere " << sphere;
+      }
+    }
+}
+
+TEST(ExactTree, DegenerateDataGivesAValidTreeAndCountsFallbacks) {
+  std::mt19937_64 rng(77);
+  std::vector<Vec3> v;
+  std::vector<std::array<int64_t, 3>> t;
+  testing::square_grid(6, rng, v, t);
+  // A ridge: the maximum is the whole segment y = 0.47 (exactly quadratic, so the ridge cells
+  // have a curve of critical points).
+  {
+    const Mesh mesh = build_mesh(testing::lagrange_mesh(
+        v, t, [](int64_t) { return 2; }, nullptr,
+        [](const Vec3 &p) { return -(p[1] - 0.47) * (p[1] - 0.47); }, rng));
+    const TreeResult tree = exact_contour_tree(mesh);
+    check_invariants(tree, mesh);
+    EXPECT_GT(stat(tree, "fallback_cells"), 0);
+  }
+  // A plateau: constant where x < 0.4, a bowl elsewhere; constant cells fall back.
+  {
+    const Mesh mesh = build_mesh(testing::lagrange_mesh(
+        v, t, [](int64_t) { return 3; }, nullptr,
+        [](const Vec3 &p) { return p[0] < 0.4 ? 0.0 : std::sin(9 * (p[0] - 0.4)) * p[1]; }, rng));
+    const TreeResult tree = exact_contour_tree(mesh);
+    check_invariants(tree, mesh);
+    EXPECT_GT(stat(tree, "fallback_constant_cell"), 0);
+  }
+  // Equal vertex values everywhere on a coarse level set: values rounded to 0.25 steps.
+  {
+    const Mesh mesh = build_mesh(testing::lagrange_mesh(
+        v, t, [](int64_t) { return 2; }, nullptr,
+        [](const Vec3 &p) { return std::round(4 * std::sin(5 * p[0]) * std::cos(4 * p[1])) / 4; },
+        rng));
+    const TreeResult tree = exact_contour_tree(mesh);
+    check_invariants(tree, mesh);
+  }
+}
+
+} // namespace
+} // namespace hoct
