@@ -9,5 +9,7 @@ namespace hoct::cli {
 void register_info(CLI::App &app);
 void register_generate(CLI::App &app);
 void register_eval(CLI::App &app);
+void register_tree(CLI::App &app);
+void register_compare(CLI::App &app);
 
 } // namespace hoct::cli

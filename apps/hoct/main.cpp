@@ -12,6 +12,8 @@ int main(int argc, char **argv) {
   hoct::cli::register_info(app);
   hoct::cli::register_generate(app);
   hoct::cli::register_eval(app);
+  hoct::cli::register_tree(app);
+  hoct::cli::register_compare(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError &e) {

@@ -11,13 +11,16 @@
 namespace hoct {
 
 struct DatasetOptions {
-  int degree = 0;          // 0 = the dataset's own default
-  long long cells = 0;     // target number of cells; 0 = the dataset's own default
+  int degree = 0;      // 0 = the dataset's own default
+  long long cells = 0; // target number of cells; 0 = the dataset's own default
   uint64_t seed = 1;
 };
 
 // Names accepted by generate_dataset, in a stable order.
 const std::vector<std::string> &dataset_names();
+
+// One line describing a dataset (empty for an unknown name).
+const std::string &dataset_description(const std::string &name);
 
 // Builds the dataset. Throws hoct::Error for an unknown name or options out of range.
 MeshInput generate_dataset(const std::string &name, const DatasetOptions &options);

@@ -11,7 +11,8 @@ namespace hoct {
 
 MeshInput read_mesh(const std::string &path, const std::string &scalar) {
   std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return std::tolower(c); });
   if (ext == ".vtu")
     return read_vtu(path, scalar);
   if (ext == ".msh")

@@ -1,7 +1,7 @@
 #include "io/tree_vtp_writer.hpp"
 
 #include "io/atomic_file.hpp"
-#include "io/vtk_xml_appended.hpp"
+#include "io/vtk_xml_arrays.hpp"
 
 #include <algorithm>
 
@@ -33,7 +33,7 @@ void write_tree_vtp(const std::string &path, const TreeResult &t) {
     line_offsets[a] = static_cast<int64_t>(2 * a + 2);
     arc_pers[a] = std::min(node_pers[t.arcs[a][0]], node_pers[t.arcs[a][1]]);
   }
-  VtkAppendedData data;
+  VtkXmlArrays data(VtkEncoding::AppendedRaw);
   const std::string e_points = data.array("Points", points, 3);
   const std::string e_type = data.array("type", type), e_value = data.array("value", value),
                     e_pers = data.array("persistence", node_pers),
@@ -49,8 +49,7 @@ void write_tree_vtp(const std::string &path, const TreeResult &t) {
                     e_lo = data.array("offsets", line_offsets);
   write_file_atomic(path, [&](std::ostream &out) {
     out << "<?xml version=\"1.0\"?>\n"
-        << "<VTKFile type=\"PolyData\" version=\"1.0\" byte_order=\"LittleEndian\" "
-           "header_type=\"UInt64\">\n"
+        << "<VTKFile type=\"PolyData\" " << data.file_attributes() << ">\n"
         << " <PolyData>\n"
         << "  <Piece NumberOfPoints=\"" << n << "\" NumberOfVerts=\"" << n << "\" NumberOfLines=\""
         << m << "\" NumberOfStrips=\"0\" NumberOfPolys=\"0\">\n"
@@ -62,7 +61,7 @@ void write_tree_vtp(const std::string &path, const TreeResult &t) {
         << "   <Verts>\n    " << e_vc << "\n    " << e_vo << "\n   </Verts>\n"
         << "   <Lines>\n    " << e_lc << "\n    " << e_lo << "\n   </Lines>\n"
         << "  </Piece>\n </PolyData>\n";
-    data.write(out);
+    data.write_appended(out);
     out << "</VTKFile>\n";
   });
 }

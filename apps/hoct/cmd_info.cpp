@@ -1,0 +1,129 @@
+// `hoct info FILE`: what the file holds and whether hoct can compute its contour tree.
+#include "commands.hpp"
+#include "load_mesh.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <cstdio>
+#include <iostream>
+#include <map>
+#include <memory>
+
+namespace hoct::cli {
+namespace {
+
+struct InfoOptions {
+  std::string file, scalar;
+  bool json = false;
+};
+
+std::string domain_kind(const Topology &t) {
+  if (t.components() != 1)
+    return std::to_string(t.components()) + " separate components";
+  if (t.euler_characteristic() == 1 && t.boundary_loops() == 1)
+    return "disk";
+  if (t.euler_characteristic() == 2 && t.boundary_loops() == 0)
+    return "sphere";
+  return "not simply connected (Euler characteristic " + std::to_string(t.euler_characteristic()) +
+         ", " + std::to_string(t.boundary_loops()) + " boundary loops)";
+}
+
+int run_info(const InfoOptions &o) {
+  const LoadedMesh lm = load_mesh(o.file, o.scalar, /*strict=*/false);
+  const Mesh &m = lm.mesh;
+  std::map<int, int64_t> degrees;
+  for (int64_t c = 0; c < m.field.num_cells(); ++c)
+    ++degrees[m.field.input_degree(c)];
+  const bool ok = m.complete && !m.problems.has_errors();
+  const std::string geometry = !m.complete
+                                   ? "unknown"
+                                   : std::string(m.geometry.planar() ? "planar" : "surface") +
+                                         (m.geometry.curved_cells() > 0 ? "-curved" : "-straight");
+
+  if (o.json) {
+    nlohmann::ordered_json j;
+    j["file"] = o.file;
+    j["field"] = m.field_name;
+    j["cells"] = m.complete ? m.topology.num_cells() : 0;
+    j["points"] = m.num_points;
+    nlohmann::ordered_json deg = nlohmann::ordered_json::object();
+    for (auto [d, n] : degrees)
+      deg[std::to_string(d)] = n;
+    j["degrees"] = deg;
+    if (m.complete) {
+      j["vertices"] = m.topology.num_vertices();
+      j["edges"] = m.topology.num_edges();
+      j["boundary_edges"] = m.topology.boundary_edges();
+      j["euler_characteristic"] = m.topology.euler_characteristic();
+      j["boundary_loops"] = m.topology.boundary_loops();
+      j["components"] = m.topology.components();
+      j["domain"] = domain_kind(m.topology);
+      j["value_range"] = {m.field.min_value(), m.field.max_value()};
+      j["geometry"] = geometry;
+      j["curved_cells"] = m.geometry.curved_cells();
+      j["bounds"] = m.geometry.bounds();
+    }
+    nlohmann::ordered_json probs = nlohmann::ordered_json::array();
+    for (const auto &[kind, k] : m.problems.kinds())
+      probs.push_back({{"kind", kind},
+                       {"severity", k.severity == Severity::Error ? "error" : "warning"},
+                       {"count", k.count},
+                       {"examples", k.examples}});
+    j["problems"] = probs;
+    j["valid"] = ok;
+    j["timings"] = {{"read", lm.read_seconds}, {"build", lm.build_seconds}};
+    std::cout << j.dump(2) << "\n";
+    return ok ? 0 : 1;
+  }
+
+  std::printf("file:        %s\n", o.file.c_str());
+  std::printf("field:       %s\n", m.field_name.c_str());
+  if (m.complete) {
+    std::printf("cells:       %lld (", static_cast<long long>(m.topology.num_cells()));
+    bool first = true;
+    for (auto [d, n] : degrees) {
+      std::printf("%sdegree %d: %lld", first ? "" : ", ", d, static_cast<long long>(n));
+      first = false;
+    }
+    std::printf(")\n");
+    std::printf("points:      %lld (vertices %lld, edges %lld, boundary edges %lld)\n",
+                static_cast<long long>(m.num_points),
+                static_cast<long long>(m.topology.num_vertices()),
+                static_cast<long long>(m.topology.num_edges()),
+                static_cast<long long>(m.topology.boundary_edges()));
+    std::printf("geometry:    %s (%lld curved cells)\n", geometry.c_str(),
+                static_cast<long long>(m.geometry.curved_cells()));
+    std::printf("topology:    Euler characteristic %lld, %lld boundary loop(s), %lld "
+                "component(s): %s\n",
+                static_cast<long long>(m.topology.euler_characteristic()),
+                static_cast<long long>(m.topology.boundary_loops()),
+                static_cast<long long>(m.topology.components()), domain_kind(m.topology).c_str());
+    std::printf("values:      [%.17g, %.17g]\n", m.field.min_value(), m.field.max_value());
+  } else {
+    std::printf("points:      %lld\n", static_cast<long long>(m.num_points));
+  }
+  std::printf("timings:     read %.3f s, checks %.3f s\n", lm.read_seconds, lm.build_seconds);
+  if (m.problems.empty())
+    std::printf("problems:    none\n");
+  else
+    std::printf("problems:\n%s", m.problems.summary().c_str());
+  return ok ? 0 : 1;
+}
+
+} // namespace
+
+void register_info(CLI::App &app) {
+  auto o = std::make_shared<InfoOptions>();
+  auto *sub = app.add_subcommand("info", "Describe a mesh file: cells, degrees, topology, value "
+                                         "range, geometry and any problems (exit 1 if invalid)");
+  sub->add_option("file", o->file, "Input file (.vtu, .msh)")->required();
+  sub->add_option("--scalar", o->scalar, "Point-data array / node-data view (default: the first)");
+  sub->add_flag("--json", o->json, "Print JSON instead of text");
+  sub->callback([o] {
+    const int rc = run_info(*o);
+    if (rc != 0)
+      throw CLI::RuntimeError(rc);
+  });
+}
+
+} // namespace hoct::cli

@@ -1,0 +1,92 @@
+// `hoct tree INPUT`: the contour tree, written as JSON and VTP and summarised on the terminal.
+#include "commands.hpp"
+#include "domain_check.hpp"
+#include "error.hpp"
+#include "io/tree_json.hpp"
+#include "io/tree_vtp_writer.hpp"
+#include "load_mesh.hpp"
+#include "pl/pl_contour_tree.hpp"
+#include "pl/refinement.hpp"
+#include "tree/exact_contour_tree.hpp"
+#include "tree_summary.hpp"
+
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+
+namespace hoct::cli {
+namespace {
+
+struct TreeOptions {
+  std::string file, scalar, json, vtp;
+  bool linear = false, augmented = false, allow_other = false, quiet = false;
+  int refine = 0;
+};
+
+void run_tree(const TreeOptions &o) {
+  using clock = std::chrono::steady_clock;
+  if (o.linear && o.refine > 0)
+    throw Error("--linear and --refine exclude each other");
+  const auto t0 = clock::now();
+  const LoadedMesh lm = load_mesh(o.file, o.scalar, /*strict=*/true);
+  const std::string warning = check_domain(lm.mesh.topology, o.file, o.allow_other);
+  if (!warning.empty())
+    std::fprintf(stderr, "hoct: warning: %s\n", warning.c_str());
+  const auto t1 = clock::now();
+  TreeResult tree;
+  auto t2 = t1;
+  if (o.linear || o.refine > 0) {
+    const PlMesh pl = o.linear ? split_lagrange_cells(lm.input) : refine(lm.mesh, o.refine);
+    t2 = clock::now();
+    tree = pl_contour_tree(pl, o.augmented,
+                           o.linear ? "linear" : "refine k=" + std::to_string(o.refine));
+  } else {
+    ExactTreeOptions eo;
+    eo.augmented = o.augmented;
+    tree = exact_contour_tree(lm.mesh, eo);
+  }
+  const auto t3 = clock::now();
+  auto seconds = [](clock::time_point a, clock::time_point b) {
+    return std::chrono::duration<double>(b - a).count();
+  };
+  tree.add_stat("input_cells", static_cast<double>(lm.mesh.topology.num_cells()));
+  tree.add_stat("time_read_s", lm.read_seconds);
+  tree.add_stat("time_check_s", lm.build_seconds);
+  if (t2 != t1)
+    tree.add_stat("time_pl_mesh_s", seconds(t1, t2));
+  tree.add_stat("time_tree_s", seconds(t2, t3));
+  if (!o.json.empty())
+    write_tree_json(o.json, tree);
+  if (!o.vtp.empty())
+    write_tree_vtp(o.vtp, tree);
+  const auto t4 = clock::now();
+  if (!o.quiet)
+    print_tree_summary(o.file, lm.mesh, tree, seconds(t0, t4));
+}
+
+} // namespace
+
+void register_tree(CLI::App &app) {
+  auto o = std::make_shared<TreeOptions>();
+  auto *sub = app.add_subcommand(
+      "tree", "Compute the contour tree of a field: exact (default) or piecewise-linear");
+  sub->add_option("file", o->file, "Input file (.vtu, .msh)")->required();
+  sub->add_option("--scalar", o->scalar, "Point-data array / node-data view (default: the first)");
+  sub->add_flag("--linear", o->linear,
+                "Piecewise-linear tree of the input's nodes (each cell split into linear "
+                "triangles through its Lagrange nodes)");
+  sub->add_option("--refine", o->refine,
+                  "Piecewise-linear tree of the exact field on K x K sub-triangles per cell")
+      ->check(CLI::Range(1, 1024));
+  sub->add_option("--json", o->json, "Write the tree as JSON");
+  sub->add_option("--vtp", o->vtp, "Write critical points and arcs as VTK PolyData (.vtp)");
+  sub->add_flag("--augmented", o->augmented, "Keep regular (degree-2) nodes");
+  sub->add_flag("--allow-non-simply-connected", o->allow_other,
+                "Go on when the domain is not a disk or a sphere (the result is not a contour "
+                "tree then)");
+  sub->add_flag("-q,--quiet", o->quiet, "No summary on the terminal");
+  sub->callback([o] { run_tree(*o); });
+}
+
+} // namespace hoct::cli

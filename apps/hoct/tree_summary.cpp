@@ -1,0 +1,48 @@
+#include "tree_summary.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <map>
+
+namespace hoct::cli {
+
+void print_tree_summary(const std::string &file, const Mesh &mesh, const TreeResult &tree,
+                        double total_seconds) {
+  const auto counts = tree.type_counts();
+  std::map<std::string, int64_t> loc;
+  for (const auto &n : tree.nodes)
+    ++loc[to_string(n.location)];
+  std::printf("%s: %lld cells (max degree %d), %s tree\n", file.c_str(),
+              static_cast<long long>(mesh.topology.num_cells()), mesh.field.max_degree(),
+              tree.method.c_str());
+  std::printf("  nodes: %zu (minima %lld, maxima %lld, saddles %lld", tree.nodes.size(),
+              static_cast<long long>(counts[0]), static_cast<long long>(counts[1]),
+              static_cast<long long>(counts[2]));
+  if (tree.augmented)
+    std::printf(", regular %lld", static_cast<long long>(counts[3]));
+  std::printf("), arcs: %zu\n", tree.arcs.size());
+  std::printf("  where:");
+  for (const auto &[k, v] : loc)
+    std::printf(" %s %lld", k.c_str(), static_cast<long long>(v));
+  std::printf("\n");
+  std::vector<double> pers;
+  for (const auto &p : tree.pairs)
+    pers.push_back(p.persistence());
+  std::sort(pers.rbegin(), pers.rend());
+  std::printf("  persistence pairs: %zu", pers.size());
+  if (!pers.empty()) {
+    std::printf(" (largest");
+    for (std::size_t i = 0; i < std::min<std::size_t>(5, pers.size()); ++i)
+      std::printf(" %.6g", pers[i]);
+    std::printf(")");
+  }
+  std::printf("\n  stats:");
+  int col = 0;
+  for (const auto &[k, v] : tree.stats) {
+    std::printf("%s %s=%.6g", col % 4 == 0 ? "\n   " : "", k.c_str(), v);
+    ++col;
+  }
+  std::printf("\n  total %.3f s\n", total_seconds);
+}
+
+} // namespace hoct::cli

@@ -1,0 +1,14 @@
+// The short terminal summary of a computed tree.
+#pragma once
+
+#include "mesh/mesh.hpp"
+#include "tree/tree_result.hpp"
+
+#include <string>
+
+namespace hoct::cli {
+
+void print_tree_summary(const std::string &file, const Mesh &mesh, const TreeResult &tree,
+                        double total_seconds);
+
+} // namespace hoct::cli

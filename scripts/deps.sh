@@ -1,0 +1,45 @@
+# Debian packages hoct needs to build, test and run; sourced by scripts/setup and scripts/test.
+# ensure_packages installs the missing ones with apt-get (as root, or through sudo).
+
+HOCT_PACKAGES=(
+  build-essential cmake ninja-build
+  libeigen3-dev libcli11-dev nlohmann-json3-dev libpugixml-dev zlib1g-dev
+  libgtest-dev libgmock-dev
+  python3 python3-numpy python3-vtk9 python3-meshio python3-gmsh
+)
+
+ensure_packages() {
+  local missing=()
+  local p
+  for p in "${HOCT_PACKAGES[@]}"; do
+    if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+      missing+=("$p")
+    fi
+  done
+  if [ ${#missing[@]} -eq 0 ]; then
+    return 0
+  fi
+  echo "hoct: installing missing Debian packages: ${missing[*]}"
+  local sudo=""
+  if [ "$(id -u)" -ne 0 ]; then
+    if command -v sudo >/dev/null 2>&1; then
+      sudo="sudo"
+    else
+      echo "hoct: need root (or sudo) to install: ${missing[*]}" >&2
+      return 1
+    fi
+  fi
+  $sudo apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
+}
+
+# Configure (if needed) and build into $HOCT_BUILD (default: build/), Release, with Ninja.
+build_hoct() {
+  local root build
+  root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+  build="${HOCT_BUILD:-$root/build}"
+  if [ ! -f "$build/build.ninja" ]; then
+    cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release
+  fi
+  cmake --build "$build" -j "$(nproc)"
+}

@@ -1,0 +1,556 @@
+#include "io/vtu_reader.hpp"
+
+#include "error.hpp"
+#include "io/base64.hpp"
+#include "poly/lagrange_node_order.hpp"
+
+#include <pugixml.hpp>
+#include <zlib.h>
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <limits>
+#include <sstream>
+
+namespace hoct {
+namespace {
+
+enum class Scalar { F32, F64, I8, U8, I16, U16, I32, U32, I64, U64 };
+
+struct TypeInfo {
+  const char *name;
+  Scalar type;
+  int size;
+};
+constexpr TypeInfo kTypes[] = {
+    {"Float32", Scalar::F32, 4}, {"Float64", Scalar::F64, 8}, {"Int8", Scalar::I8, 1},
+    {"UInt8", Scalar::U8, 1},    {"Int16", Scalar::I16, 2},   {"UInt16", Scalar::U16, 2},
+    {"Int32", Scalar::I32, 4},   {"UInt32", Scalar::U32, 4},  {"Int64", Scalar::I64, 8},
+    {"UInt64", Scalar::U64, 8},  {"Float", Scalar::F32, 4},   {"Double", Scalar::F64, 8}};
+
+class VtuFile {
+public:
+  VtuFile(std::string path, std::string scalar)
+      : path_(std::move(path)), scalar_(std::move(scalar)) {}
+  MeshInput read();
+
+private:
+  [[noreturn]] void fail(const std::string &what) const { throw InputError(path_ + ": " + what); }
+  void load();
+  const TypeInfo &type_of(const pugi::xml_node &a) const;
+  std::string describe(const pugi::xml_node &a) const;
+  std::vector<uint8_t> binary_payload(const pugi::xml_node &a) const;
+  std::vector<uint8_t> decode_blocks(const uint8_t *p, std::size_t avail, const pugi::xml_node &a,
+                                     std::size_t *consumed) const;
+  std::vector<double> read_doubles(const pugi::xml_node &a, std::size_t expected) const;
+  std::vector<int64_t> read_ints(const pugi::xml_node &a, std::size_t expected) const;
+  template <class T> std::vector<T> read_array(const pugi::xml_node &a, std::size_t expected) const;
+
+  std::string path_, scalar_;
+  std::string bytes_;         // the file
+  std::string xml_;           // the file without the appended payload
+  std::string_view appended_; // appended payload (after '_')
+  bool appended_base64_ = false;
+  pugi::xml_document doc_;
+  int header_size_ = 4;
+  bool big_endian_ = false, compressed_ = false;
+};
+
+void VtuFile::load() {
+  std::ifstream in(path_, std::ios::binary);
+  if (!in)
+    fail("cannot open (" + std::string(std::strerror(errno)) + ")");
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  bytes_ = ss.str();
+  if (bytes_.empty())
+    fail("the file is empty");
+  // Cut the appended payload out before XML parsing: raw bytes may contain anything.
+  const std::size_t tag = bytes_.find("<AppendedData");
+  xml_ = bytes_;
+  if (tag != std::string::npos) {
+    const std::size_t close = bytes_.find('>', tag);
+    const std::size_t underscore = close == std::string::npos ? close : bytes_.find('_', close);
+    const std::size_t end = bytes_.rfind("</AppendedData>");
+    if (close == std::string::npos || underscore == std::string::npos || end == std::string::npos ||
+        end < underscore)
+      fail("truncated or malformed <AppendedData> section (missing '_' marker or "
+           "</AppendedData>)");
+    const std::string head = bytes_.substr(tag, close - tag);
+    appended_base64_ = head.find("\"base64\"") != std::string::npos;
+    if (!appended_base64_ && head.find("\"raw\"") == std::string::npos)
+      fail("<AppendedData> has an unknown encoding (expected raw or base64)");
+    appended_ = std::string_view(bytes_).substr(underscore + 1, end - underscore - 1);
+    xml_ = bytes_.substr(0, close + 1) + bytes_.substr(end);
+  }
+  const pugi::xml_parse_result r = doc_.load_buffer(xml_.data(), xml_.size());
+  if (!r)
+    fail(std::string("not valid XML: ") + r.description() + " at byte " + std::to_string(r.offset));
+  const pugi::xml_node root = doc_.child("VTKFile");
+  if (!root)
+    fail("not a VTK XML file (no <VTKFile> element)");
+  const std::string type = root.attribute("type").as_string();
+  if (type != "UnstructuredGrid")
+    fail("VTK file type is '" + type + "', expected UnstructuredGrid (.vtu)");
+  const std::string order = root.attribute("byte_order").as_string("LittleEndian");
+  if (order != "LittleEndian" && order != "BigEndian")
+    fail("unknown byte_order '" + order + "'");
+  big_endian_ = order == "BigEndian";
+  const std::string header = root.attribute("header_type").as_string("UInt32");
+  if (header == "UInt32")
+    header_size_ = 4;
+  else if (header == "UInt64")
+    header_size_ = 8;
+  else
+    fail("unsupported header_type '" + header + "' (UInt32 or UInt64)");
+  const std::string comp = root.attribute("compressor").as_string();
+  if (comp == "vtkZLibDataCompressor")
+    compressed_ = true;
+  else if (!comp.empty())
+    fail("unsupported compressor '" + comp + "' (only vtkZLibDataCompressor is supported)");
+}
+
+const TypeInfo &VtuFile::type_of(const pugi::xml_node &a) const {
+  const std::string t = a.attribute("type").as_string();
+  for (const auto &ti : kTypes)
+    if (t == ti.name)
+      return ti;
+  fail(describe(a) + " has unsupported type '" + t + "'");
+}
+
+std::string VtuFile::describe(const pugi::xml_node &a) const {
+  const std::string name = a.attribute("Name").as_string();
+  return "DataArray" + (name.empty() ? std::string() : " '" + name + "'") + " in <" +
+         a.parent().name() + ">";
+}
+
+uint64_t read_uint(const uint8_t *p, int size, bool big) {
+  uint64_t v = 0;
+  for (int i = 0; i < size; ++i)
+    v |= uint64_t{p[big ? size - 1 - i : i]} << (8 * i);
+  return v;
+}
+
+// Decodes a (possibly compressed) binary array starting at p: the header, then the data.
+std::vector<uint8_t> VtuFile::decode_blocks(const uint8_t *p, std::size_t avail,
+                                            const pugi::xml_node &a, std::size_t *consumed) const {
+  const int hs = header_size_;
+  auto need = [&](std::size_t n, const char *what) {
+    if (n > avail)
+      fail(describe(a) + ": truncated binary data (" + what + " needs " + std::to_string(n) +
+           " bytes, " + std::to_string(avail) + " available)");
+  };
+  if (!compressed_) {
+    need(hs, "the header");
+    const uint64_t n = read_uint(p, hs, big_endian_);
+    need(hs + n, "the data");
+    if (consumed)
+      *consumed = hs + n;
+    return std::vector<uint8_t>(p + hs, p + hs + n);
+  }
+  need(3 * hs, "the compression header");
+  const uint64_t nb = read_uint(p, hs, big_endian_), bs = read_uint(p + hs, hs, big_endian_),
+                 last = read_uint(p + 2 * hs, hs, big_endian_);
+  if (nb > avail / hs)
+    fail(describe(a) + ": compression header claims " + std::to_string(nb) + " blocks");
+  need((3 + nb) * hs, "the compression header");
+  std::size_t total = 0, pos = (3 + nb) * hs;
+  std::vector<uint64_t> csize(nb);
+  for (uint64_t b = 0; b < nb; ++b) {
+    csize[b] = read_uint(p + (3 + b) * hs, hs, big_endian_);
+    total += csize[b];
+    if (csize[b] > avail)
+      fail(describe(a) + ": compressed block " + std::to_string(b) + " claims " +
+           std::to_string(csize[b]) + " bytes");
+  }
+  need(pos + total, "the compressed blocks");
+  const uint64_t out_size = nb == 0 ? 0 : (nb - 1) * bs + (last ? last : bs);
+  if (bs > (uint64_t{1} << 31) || out_size > (uint64_t{1} << 40))
+    fail(describe(a) + ": implausible compression header (block size " + std::to_string(bs) + ")");
+  std::vector<uint8_t> out;
+  for (uint64_t b = 0; b < nb; ++b) {
+    const uint64_t want = (b + 1 == nb && last) ? last : bs;
+    const std::size_t at = out.size();
+    out.resize(at + want);
+    uLongf got = static_cast<uLongf>(want);
+    const int rc = uncompress(out.data() + at, &got, p + pos, static_cast<uLong>(csize[b]));
+    if (rc != Z_OK || got != want)
+      fail(describe(a) + ": zlib error in block " + std::to_string(b) + " (" +
+           (rc == Z_OK ? "wrong size" : zError(rc)) + ")");
+    pos += csize[b];
+  }
+  if (consumed)
+    *consumed = pos;
+  return out;
+}
+
+std::vector<uint8_t> VtuFile::binary_payload(const pugi::xml_node &a) const {
+  const std::string format = a.attribute("format").as_string();
+  if (format == "binary") {
+    std::vector<uint8_t> raw;
+    try {
+      raw = base64_decode(a.child_value());
+    } catch (const std::invalid_argument &e) {
+      fail(describe(a) + ": bad base64 data (" + e.what() + ")");
+    }
+    return decode_blocks(raw.data(), raw.size(), a, nullptr);
+  }
+  // appended
+  if (appended_.data() == nullptr)
+    fail(describe(a) + " is appended but the file has no <AppendedData> section");
+  const auto offset_attr = a.attribute("offset");
+  if (!offset_attr)
+    fail(describe(a) + " is appended but has no offset");
+  const long long offset = offset_attr.as_llong(-1);
+  if (offset < 0 || static_cast<std::size_t>(offset) > appended_.size())
+    fail(describe(a) + ": offset " + offset_attr.as_string() + " is outside the appended data (" +
+         std::to_string(appended_.size()) + " bytes)");
+  const std::string_view rest = appended_.substr(static_cast<std::size_t>(offset));
+  if (!appended_base64_)
+    return decode_blocks(reinterpret_cast<const uint8_t *>(rest.data()), rest.size(), a, nullptr);
+  // Appended base64: decode just this array's streams. The header is its own stream (VTK) or
+  // shares one with the data; the padding of the first group tells which.
+  try {
+    const int hs = header_size_;
+    auto decode = [&](std::size_t chars) {
+      if (chars > rest.size())
+        fail(describe(a) + ": truncated appended base64 data");
+      return base64_decode(rest.substr(0, chars));
+    };
+    if (!compressed_) {
+      const std::size_t hchars = base64_length(hs);
+      const std::vector<uint8_t> h = decode(hchars);
+      const uint64_t n = read_uint(h.data(), hs, big_endian_);
+      if (n > rest.size())
+        fail(describe(a) + ": header claims " + std::to_string(n) + " bytes");
+      const bool separate = rest.substr(0, hchars).find('=') != std::string_view::npos;
+      const std::size_t chars = separate ? hchars + base64_length(n) : base64_length(hs + n);
+      std::vector<uint8_t> all = decode(chars);
+      return decode_blocks(all.data(), all.size(), a, nullptr);
+    }
+    const std::vector<uint8_t> h3 = decode(base64_length(3 * hs));
+    const uint64_t nb = read_uint(h3.data(), hs, big_endian_);
+    if (nb > rest.size())
+      fail(describe(a) + ": compression header claims " + std::to_string(nb) + " blocks");
+    const std::size_t hchars = base64_length((3 + nb) * hs);
+    const std::vector<uint8_t> h = decode(hchars);
+    uint64_t total = 0;
+    for (uint64_t b = 0; b < nb; ++b)
+      total += read_uint(h.data() + (3 + b) * hs, hs, big_endian_);
+    if (total > rest.size())
+      fail(describe(a) + ": compressed sizes exceed the appended data");
+    std::vector<uint8_t> all = decode(hchars + base64_length(total));
+    return decode_blocks(all.data(), all.size(), a, nullptr);
+  } catch (const std::invalid_argument &e) {
+    fail(describe(a) + ": bad base64 data (" + e.what() + ")");
+  }
+}
+
+template <class T>
+std::vector<T> VtuFile::read_array(const pugi::xml_node &a, std::size_t expected) const {
+  const TypeInfo &ti = type_of(a);
+  const std::string format = a.attribute("format").as_string("ascii");
+  std::vector<T> out;
+  out.reserve(expected);
+  if (format == "ascii") {
+    const char *p = a.child_value();
+    const char *end = p + std::strlen(p);
+    std::size_t index = 0;
+    while (true) {
+      while (p < end && std::isspace(static_cast<unsigned char>(*p)))
+        ++p;
+      if (p >= end)
+        break;
+      if (out.size() >= expected)
+        fail(describe(a) + ": more values than the " + std::to_string(expected) + " expected");
+      if constexpr (std::is_same_v<T, double>) {
+        double v;
+        auto r = std::from_chars(p, end, v);
+        if (r.ec != std::errc()) {
+          // from_chars rejects "nan"/"inf" spellings VTK may write: parse them to report them.
+          const std::string tok(p, std::find_if(p, end, [](char c) { return std::isspace(c); }));
+          fail(describe(a) + ": value " + std::to_string(index) + " is not a number: '" + tok +
+               "'");
+        }
+        p = r.ptr;
+        out.push_back(v);
+      } else {
+        long long v;
+        auto r = std::from_chars(p, end, v);
+        if (r.ec != std::errc() ||
+            (r.ptr < end && !std::isspace(static_cast<unsigned char>(*r.ptr)))) {
+          const std::string tok(p, std::find_if(p, end, [](char c) { return std::isspace(c); }));
+          fail(describe(a) + ": value " + std::to_string(index) + " is not an integer: '" + tok +
+               "'");
+        }
+        p = r.ptr;
+        out.push_back(static_cast<T>(v));
+      }
+      ++index;
+    }
+  } else if (format == "binary" || format == "appended") {
+    const std::vector<uint8_t> raw = binary_payload(a);
+    if (raw.size() % ti.size != 0)
+      fail(describe(a) + ": " + std::to_string(raw.size()) + " bytes is not a whole number of " +
+           ti.name + " values");
+    const std::size_t n = raw.size() / ti.size;
+    if (n != expected)
+      fail(describe(a) + " has " + std::to_string(n) + " values, expected " +
+           std::to_string(expected));
+    for (std::size_t i = 0; i < n; ++i) {
+      uint8_t b[8];
+      std::memcpy(b, raw.data() + i * ti.size, ti.size);
+      if (big_endian_)
+        std::reverse(b, b + ti.size);
+      double dv = 0;
+      long long iv = 0;
+      bool is_float = false;
+      switch (ti.type) {
+      case Scalar::F32: {
+        float f;
+        std::memcpy(&f, b, 4);
+        dv = f;
+        is_float = true;
+        break;
+      }
+      case Scalar::F64:
+        std::memcpy(&dv, b, 8);
+        is_float = true;
+        break;
+      case Scalar::I8:
+        iv = static_cast<int8_t>(b[0]);
+        break;
+      case Scalar::U8:
+        iv = b[0];
+        break;
+      case Scalar::I16: {
+        int16_t x;
+        std::memcpy(&x, b, 2);
+        iv = x;
+        break;
+      }
+      case Scalar::U16: {
+        uint16_t x;
+        std::memcpy(&x, b, 2);
+        iv = x;
+        break;
+      }
+      case Scalar::I32: {
+        int32_t x;
+        std::memcpy(&x, b, 4);
+        iv = x;
+        break;
+      }
+      case Scalar::U32: {
+        uint32_t x;
+        std::memcpy(&x, b, 4);
+        iv = x;
+        break;
+      }
+      case Scalar::I64: {
+        int64_t x;
+        std::memcpy(&x, b, 8);
+        iv = x;
+        break;
+      }
+      case Scalar::U64: {
+        uint64_t x;
+        std::memcpy(&x, b, 8);
+        if (x > static_cast<uint64_t>(std::numeric_limits<long long>::max()))
+          fail(describe(a) + ": value " + std::to_string(i) + " is too large");
+        iv = static_cast<long long>(x);
+        break;
+      }
+      }
+      if constexpr (std::is_same_v<T, double>)
+        out.push_back(is_float ? dv : static_cast<double>(iv));
+      else {
+        if (is_float) {
+          if (!(dv == std::floor(dv)) || std::abs(dv) > 9e15)
+            fail(describe(a) + ": value " + std::to_string(i) + " is not an integer");
+          iv = static_cast<long long>(dv);
+        }
+        out.push_back(static_cast<T>(iv));
+      }
+    }
+  } else {
+    fail(describe(a) + " has unknown format '" + format + "'");
+  }
+  if (out.size() != expected)
+    fail(describe(a) + " has " + std::to_string(out.size()) + " values, expected " +
+         std::to_string(expected));
+  return out;
+}
+
+std::vector<double> VtuFile::read_doubles(const pugi::xml_node &a, std::size_t expected) const {
+  return read_array<double>(a, expected);
+}
+std::vector<int64_t> VtuFile::read_ints(const pugi::xml_node &a, std::size_t expected) const {
+  return read_array<int64_t>(a, expected);
+}
+
+pugi::xml_node named_array(const pugi::xml_node &parent, const char *name) {
+  for (auto a : parent.children("DataArray"))
+    if (std::string(a.attribute("Name").as_string()) == name)
+      return a;
+  return {};
+}
+
+// Count of values of a DataArray whose length is known only from its own data (offsets).
+long long parse_count(const pugi::xml_attribute &a) {
+  if (!a)
+    return -1;
+  const char *s = a.as_string();
+  long long v = -1;
+  const auto r = std::from_chars(s, s + std::strlen(s), v);
+  if (r.ec != std::errc() || *r.ptr != '\0')
+    return -2;
+  return v;
+}
+
+MeshInput VtuFile::read() {
+  load();
+  const pugi::xml_node grid = doc_.child("VTKFile").child("UnstructuredGrid");
+  if (!grid)
+    fail("no <UnstructuredGrid> element");
+  MeshInput m;
+  m.source = path_;
+  m.cell_offsets.assign(1, 0);
+  int piece_index = 0;
+  long long skipped = 0;
+  for (auto piece : grid.children("Piece")) {
+    const std::string where = "piece " + std::to_string(piece_index);
+    const long long np = parse_count(piece.attribute("NumberOfPoints"));
+    const long long nc = parse_count(piece.attribute("NumberOfCells"));
+    if (np < 0 || nc < 0)
+      fail(where + ": missing or bad NumberOfPoints / NumberOfCells");
+    // Guard counts against the file size before allocating (a value needs >= 1 byte).
+    if (static_cast<unsigned long long>(np) > bytes_.size() ||
+        static_cast<unsigned long long>(nc) > bytes_.size())
+      fail(where + ": NumberOfPoints " + std::to_string(np) + " / NumberOfCells " +
+           std::to_string(nc) + " exceed what the file can hold");
+    const int64_t base = static_cast<int64_t>(m.points.size());
+    // Points.
+    const pugi::xml_node pa = piece.child("Points").child("DataArray");
+    if (!pa)
+      fail(where + ": no <Points> DataArray");
+    const int pc = pa.attribute("NumberOfComponents").as_int(1);
+    if (pc != 3 && pc != 2)
+      fail(where + ": Points have " + std::to_string(pc) + " components (expected 3)");
+    const std::vector<double> xyz = read_doubles(pa, static_cast<std::size_t>(np) * pc);
+    for (long long i = 0; i < np; ++i) {
+      const Vec3 p = {xyz[i * pc], xyz[i * pc + 1], pc == 3 ? xyz[i * pc + 2] : 0.0};
+      if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
+        fail(where + ": point " + std::to_string(i) + " has a NaN or infinite coordinate");
+      m.points.push_back(p);
+    }
+    // The scalar.
+    const pugi::xml_node pd = piece.child("PointData");
+    pugi::xml_node sa;
+    std::string available;
+    for (auto a : pd.children("DataArray")) {
+      const std::string name = a.attribute("Name").as_string();
+      const int comps = a.attribute("NumberOfComponents").as_int(1);
+      available += (available.empty() ? "" : ", ") + name +
+                   (comps != 1 ? " (" + std::to_string(comps) + " components)" : "");
+      if (!sa && ((scalar_.empty() && comps == 1) || name == scalar_))
+        sa = a;
+    }
+    if (!sa) {
+      if (scalar_.empty())
+        fail(where + ": no scalar point-data array" +
+             (available.empty() ? std::string(" (the file has no point data)")
+                                : " (available: " + available + ")"));
+      fail(where + ": no point-data array named '" + scalar_ + "'" +
+           (available.empty() ? std::string(" (the file has no point data)")
+                              : " (available: " + available + ")"));
+    }
+    if (sa.attribute("NumberOfComponents").as_int(1) != 1)
+      fail(where + ": point-data array '" + std::string(sa.attribute("Name").as_string()) +
+           "' has " + sa.attribute("NumberOfComponents").as_string() +
+           " components; a scalar field needs 1");
+    const std::string field = sa.attribute("Name").as_string();
+    if (piece_index == 0)
+      m.field_name = field;
+    else if (field != m.field_name)
+      fail(where + ": scalar '" + field + "' differs from the first piece's '" + m.field_name +
+           "'");
+    const std::vector<double> vals = read_doubles(sa, static_cast<std::size_t>(np));
+    for (long long i = 0; i < np; ++i) {
+      if (!std::isfinite(vals[i]))
+        fail(where + ": point " + std::to_string(i) + " has a non-finite value of '" + field + "'");
+      m.values.push_back(vals[i]);
+    }
+    // Cells.
+    const pugi::xml_node cells = piece.child("Cells");
+    const pugi::xml_node ca = named_array(cells, "connectivity"),
+                         oa = named_array(cells, "offsets"), ta = named_array(cells, "types");
+    if (!ca || !oa || !ta)
+      fail(where + ": <Cells> needs the DataArrays connectivity, offsets and types");
+    const std::vector<int64_t> offsets = read_ints(oa, static_cast<std::size_t>(nc));
+    const std::vector<int64_t> types = read_ints(ta, static_cast<std::size_t>(nc));
+    const int64_t nconn = nc ? offsets.back() : 0;
+    if (nconn < 0 || static_cast<unsigned long long>(nconn) > bytes_.size())
+      fail(where + ": the last cell offset " + std::to_string(nconn) + " is invalid");
+    const std::vector<int64_t> conn = read_ints(ca, static_cast<std::size_t>(nconn));
+    std::vector<int64_t> nodes;
+    for (long long c = 0; c < nc; ++c) {
+      const int64_t begin = c ? offsets[c - 1] : 0, end = offsets[c];
+      if (end < begin)
+        fail(where + ": cell " + std::to_string(c) + ": offsets decrease (" +
+             std::to_string(begin) + " then " + std::to_string(end) + ")");
+      const int64_t n = end - begin;
+      const int64_t type = types[c];
+      int degree;
+      if (type == 5 || type == 22 || type == 69) {
+        degree = degree_from_node_count(n);
+        if ((type == 5 && n != 3) || (type == 22 && n != 6) || degree < 1)
+          fail(where + ": cell " + std::to_string(c) + " of type " + std::to_string(type) +
+               " has " + std::to_string(n) + " nodes" +
+               (type == 69 && n == 7 ? " (the 7-node 'bubble' triangle is not a complete "
+                                       "polynomial space and is not supported)"
+                                     : ", not a complete triangle"));
+        if (degree > 20)
+          fail(where + ": cell " + std::to_string(c) + " has degree " + std::to_string(degree) +
+               " (at most 20 supported)");
+      } else if (type == 1 || type == 2 || type == 3 || type == 4 || type == 21 || type == 35 ||
+                 type == 68) {
+        ++skipped; // vertices and lines: boundary markers some writers add
+        continue;
+      } else {
+        fail(where + ": cell " + std::to_string(c) + " has VTK cell type " + std::to_string(type) +
+             ", which is not a triangle (supported: 5 VTK_TRIANGLE, 22 VTK_QUADRATIC_TRIANGLE, "
+             "69 VTK_LAGRANGE_TRIANGLE)");
+      }
+      const auto &perm = node_order_to_lattice(NodeOrdering::Vtk, degree);
+      nodes.assign(static_cast<std::size_t>(n), -1);
+      for (int64_t i = 0; i < n; ++i) {
+        const int64_t id = conn[begin + i];
+        if (id < 0 || id >= np)
+          fail(where + ": cell " + std::to_string(c) + " refers to point " + std::to_string(id) +
+               ", but the piece has " + std::to_string(np) + " points");
+        nodes[perm[i]] = base + id;
+      }
+      m.add_cell(degree, nodes.data());
+    }
+    ++piece_index;
+  }
+  if (piece_index == 0)
+    fail("no <Piece> in <UnstructuredGrid>");
+  if (m.num_cells() == 0)
+    fail(skipped ? "the file has no triangle cells (only " + std::to_string(skipped) +
+                       " vertex or line cells)"
+                 : std::string("the file has no cells"));
+  return m;
+}
+
+} // namespace
+
+MeshInput read_vtu(const std::string &path, const std::string &scalar) {
+  return VtuFile(path, scalar).read();
+}
+
+} // namespace hoct
