@@ -14,9 +14,9 @@ MeshInput generate_gauss(const DatasetOptions &o) {
   const long long cells = dataset_cells(o, 722, "gauss");
   const int n = std::max(1, static_cast<int>(std::lround(std::sqrt(cells / 2.0))));
   SeededRandom rng(o.seed);
-  std::vector<std::array<double, 4>> g(7); // cx, cy, width, amplitude
+  std::vector<std::array<double, 4>> g(5); // cx, cy, width, amplitude
   for (std::size_t i = 0; i < g.size(); ++i)
-    g[i] = {rng.uniform(0.15, 0.85), rng.uniform(0.15, 0.85), rng.uniform(0.08, 0.16),
+    g[i] = {rng.uniform(0.2, 0.8), rng.uniform(0.2, 0.8), rng.uniform(0.12, 0.2),
             (i % 3 == 2 ? -1.0 : 1.0) * rng.uniform(0.4, 1.0)};
   const LinearMesh lm = square_grid(n, n, 1.0 / n, 0, 0, 0.2, o.seed + 11);
   MeshInput m = lagrange_mesh(lm, d, nullptr, [&](const Vec3 &p) {

@@ -16,7 +16,7 @@ MeshInput generate_heater(const DatasetOptions &o) {
   const int n = std::max(1, static_cast<int>(std::lround(std::sqrt(cells / 20.0))));
   SeededRandom rng(o.seed);
   // The surface: radius along each unit direction u of a superellipsoid with semi-axes
-  // (2, 0.5, 1) and exponent 6, with 9 fins (a cosine ridge pattern along x).
+  // (2, 0.5, 1) and exponent 6, with 5 fins (a cosine ridge pattern along x).
   auto place = [](const Vec3 &p) {
     const double r0 = std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
     const Vec3 u = {p[0] / r0, p[1] / r0, p[2] / r0};
@@ -26,13 +26,13 @@ MeshInput generate_heater(const DatasetOptions &o) {
       s += std::pow(std::abs(u[i]) / ax[i], e);
     double r = std::pow(s, -1 / e);
     const double x = r * u[0];
-    r *= 1 + 0.08 * std::pow(std::cos(9 * M_PI * x / 4), 2) * (1 - std::abs(u[2]));
+    r *= 1 + 0.05 * std::pow(std::cos(5 * M_PI * x / 4), 2) * (1 - std::abs(u[2]));
     return Vec3{r * u[0], r * u[1], r * u[2]};
   };
-  std::vector<std::array<double, 5>> g(24); // centre x, y, z, width, amplitude
+  std::vector<std::array<double, 5>> g(220); // centre x, y, z, width, amplitude
   for (auto &b : g) {
     const Vec3 c = place({rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1)});
-    b = {c[0], c[1], c[2], rng.uniform(0.2, 0.5), rng.uniform(-1, 1)};
+    b = {c[0], c[1], c[2], rng.uniform(0.12, 0.3), rng.uniform(-1, 1)};
   }
   MeshInput m = lagrange_mesh(icosphere(n), d, place, [&](const Vec3 &p) {
     double s = 0;

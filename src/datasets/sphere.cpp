@@ -11,9 +11,9 @@ MeshInput generate_sphere(const DatasetOptions &o) {
   const long long cells = dataset_cells(o, 1056, "sphere");
   const int n = std::max(1, static_cast<int>(std::lround(std::sqrt(cells / 20.0))));
   SeededRandom rng(o.seed);
-  // Frequencies near 4.5 with a seed-dependent tilt; sin is odd, so f(-p) = -f(p).
-  const double a = 4.5 + rng.uniform(-0.3, 0.3), b = 4.5 + rng.uniform(-0.3, 0.3),
-               c = 4.5 + rng.uniform(-0.3, 0.3), t = rng.uniform(0.1, 0.3);
+  // Frequencies near 10.5 with a seed-dependent tilt; sin is odd, so f(-p) = -f(p).
+  const double a = 10.5 + rng.uniform(-0.3, 0.3), b = 10.5 + rng.uniform(-0.3, 0.3),
+               c = 10.5 + rng.uniform(-0.3, 0.3), t = rng.uniform(0.1, 0.3);
   const LinearMesh lm = icosphere(n);
   MeshInput m = lagrange_mesh(
       lm, d,

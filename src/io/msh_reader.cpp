@@ -157,6 +157,34 @@ private:
       fail("section $" + name + " has no " + end);
     pos_ = at + end.size();
   }
+  // Gmsh's own view.write(append=True) repeats the whole mesh before each view: a node or
+  // element seen again must be identical, and is then ignored.
+  void add_node(long long tag, const Vec3 &p) {
+    const auto [it, fresh] = node_index_.emplace(tag, static_cast<int64_t>(points_.size()));
+    if (!fresh) {
+      if (points_[it->second] != p)
+        fail("node tag " + std::to_string(tag) + " appears twice with different coordinates");
+      return;
+    }
+    points_.push_back(p);
+    node_tag_.push_back(tag);
+  }
+  void add_triangle(long long etag, int order, const long long *nodes, int n) {
+    const auto [it, fresh] = element_index_.emplace(etag, tri_degree_.size());
+    if (!fresh) {
+      const std::size_t e = it->second;
+      if (tri_degree_[e] != order ||
+          !std::equal(nodes, nodes + n,
+                      tri_nodes_.begin() + static_cast<std::ptrdiff_t>(tri_offset_[e])))
+        fail("element tag " + std::to_string(etag) + " appears twice with different nodes");
+      return;
+    }
+    tri_degree_.push_back(order);
+    tri_tag_.push_back(etag);
+    tri_offset_.push_back(tri_nodes_.size());
+    tri_nodes_.insert(tri_nodes_.end(), nodes, nodes + n);
+  }
+  void start_binary_section();
   void read_format();
   void read_nodes_41();
   void read_elements_41();
@@ -177,6 +205,8 @@ private:
   std::vector<int> tri_degree_;
   std::vector<long long> tri_tag_;
   std::vector<long long> tri_nodes_;
+  std::vector<std::size_t> tri_offset_;
+  std::unordered_map<long long, std::size_t> element_index_;
   long long skipped_elements_ = 0;
   // Node data views (name, tag -> value), in file order.
   std::vector<std::pair<std::string, std::unordered_map<long long, double>>> views_;
@@ -214,14 +244,24 @@ void MshFile::read_format() {
   expect_line("$EndMeshFormat");
 }
 
+void MshFile::start_binary_section() {
+  // Binary data starts after the newline that ends the section's header line.
+  if (!binary_)
+    return;
+  while (pos_ < data_.size() && data_[pos_] != '\n')
+    ++pos_;
+  ++pos_;
+  binary_section_ = true;
+}
+
 void MshFile::read_nodes_41() {
-  binary_section_ = binary_;
+  start_binary_section();
   const long long blocks = count("number of entity blocks");
   const long long total = count("number of nodes");
   count("minimum node tag");
   count("maximum node tag");
-  points_.reserve(static_cast<std::size_t>(total));
-  node_tag_.reserve(static_cast<std::size_t>(total));
+  points_.reserve(points_.size() + static_cast<std::size_t>(total));
+  long long read_in_section = 0;
   std::vector<long long> tags;
   for (long long b = 0; b < blocks; ++b) {
     const int dim = small_int("entity dimension");
@@ -243,22 +283,20 @@ void MshFile::read_nodes_41() {
         coord("parametric coordinate");
       if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
         fail("node " + std::to_string(tags[i]) + " has a NaN or infinite coordinate");
-      if (!node_index_.emplace(tags[i], static_cast<int64_t>(points_.size())).second)
-        fail("node tag " + std::to_string(tags[i]) + " appears twice");
-      points_.push_back(p);
-      node_tag_.push_back(tags[i]);
+      add_node(tags[i], p);
     }
+    read_in_section += n;
   }
-  if (static_cast<long long>(points_.size()) != total)
+  if (read_in_section != total)
     fail("$Nodes announces " + std::to_string(total) + " nodes but holds " +
-         std::to_string(points_.size()));
+         std::to_string(read_in_section));
   binary_section_ = false;
   expect_line("$EndNodes");
   have_nodes_ = true;
 }
 
 void MshFile::read_elements_41() {
-  binary_section_ = binary_;
+  start_binary_section();
   const long long blocks = count("number of entity blocks");
   count("number of elements");
   count("minimum element tag");
@@ -280,18 +318,15 @@ void MshFile::read_elements_41() {
       fail("element type " + std::to_string(type) + " (dimension " + std::to_string(dim) +
            ") is not a triangle; hoct reads triangle meshes");
     }
+    std::vector<long long> en(static_cast<std::size_t>(nodes));
     for (long long i = 0; i < n; ++i) {
       const long long etag = tag("element tag");
-      if (order == 0) {
-        for (int k = 0; k < nodes; ++k)
-          tag("node tag");
-        ++skipped_elements_;
-        continue;
-      }
-      tri_degree_.push_back(order);
-      tri_tag_.push_back(etag);
       for (int k = 0; k < nodes; ++k)
-        tri_nodes_.push_back(tag("node tag"));
+        en[k] = tag("node tag");
+      if (order == 0)
+        ++skipped_elements_;
+      else
+        add_triangle(etag, order, en.data(), nodes);
     }
   }
   binary_section_ = false;
@@ -308,10 +343,7 @@ void MshFile::read_nodes_22() {
       p[k] = real("node coordinate");
     if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
       fail("node " + std::to_string(t) + " has a NaN or infinite coordinate");
-    if (!node_index_.emplace(t, static_cast<int64_t>(points_.size())).second)
-      fail("node tag " + std::to_string(t) + " appears twice");
-    points_.push_back(p);
-    node_tag_.push_back(t);
+    add_node(t, p);
   }
   expect_line("$EndNodes");
   have_nodes_ = true;
@@ -336,16 +368,13 @@ void MshFile::read_elements_22() {
     else if ((nodes = skipped_node_count(type)) < 0)
       fail("element " + std::to_string(etag) + " has type " + std::to_string(type) +
            ", which is not a triangle");
-    if (order == 0) {
-      for (int k = 0; k < nodes; ++k)
-        tag("node tag");
-      ++skipped_elements_;
-      continue;
-    }
-    tri_degree_.push_back(order);
-    tri_tag_.push_back(etag);
+    std::vector<long long> en(static_cast<std::size_t>(nodes));
     for (int k = 0; k < nodes; ++k)
-      tri_nodes_.push_back(tag("node tag"));
+      en[k] = tag("node tag");
+    if (order == 0)
+      ++skipped_elements_;
+    else
+      add_triangle(etag, order, en.data(), nodes);
   }
   expect_line("$EndElements");
   have_elements_ = true;
@@ -395,10 +424,7 @@ void MshFile::read_node_data() {
     fail("$NodeData '" + name + "' announces an implausible " + std::to_string(n) + " values");
   std::unordered_map<long long, double> values;
   values.reserve(static_cast<std::size_t>(n));
-  if (binary_) {
-    ++pos_; // the newline after the last header line
-    binary_section_ = true;
-  }
+  start_binary_section();
   for (long long i = 0; i < n; ++i) {
     const long long t = binary_ ? bin<int32_t>("node tag") : integer("node tag");
     double v = binary_ ? bin<double>("value") : real("value");
@@ -492,8 +518,8 @@ MeshInput MshFile::read() {
   m.field_name = field;
   std::unordered_map<long long, int64_t> used;
   std::vector<int64_t> nodes;
-  std::size_t at = 0;
   for (std::size_t e = 0; e < tri_degree_.size(); ++e) {
+    std::size_t at = tri_offset_[e];
     const int d = tri_degree_[e];
     const auto &perm = node_order_to_lattice(NodeOrdering::Gmsh, d);
     nodes.assign(perm.size(), -1);
