@@ -502,6 +502,9 @@ MeshInput VtuFile::read() {
       if (end < begin)
         fail(where + ": cell " + std::to_string(c) + ": offsets decrease (" +
              std::to_string(begin) + " then " + std::to_string(end) + ")");
+      if (end > nconn)
+        fail(where + ": cell " + std::to_string(c) + ": offset " + std::to_string(end) +
+             " is beyond the connectivity (" + std::to_string(nconn) + " values)");
       const int64_t n = end - begin;
       const int64_t type = types[c];
       int degree;

@@ -1,0 +1,95 @@
+"""The command-line tool as a user meets it: the main job end to end (generate, info, tree with
+JSON and VTP that VTK reads, compare), clear errors with a non-zero exit for bad input, and no
+half-written or clobbered output when a run fails."""
+import json
+import os
+
+import vtk
+
+from hoct_testing import Results, run, tempdir
+
+R = Results()
+
+with tempdir() as tmp:
+    p = lambda name: os.path.join(tmp, name)
+    run("generate", "gauss", "-o", p("g.vtu"))
+    info = json.loads(run("info", p("g.vtu"), "--json").stdout)
+    R.check(info["valid"] and info["domain"] == "disk", f"info: {info['domain']}")
+
+    # The exact tree, written as JSON and VTP.
+    out = run("tree", p("g.vtu"), "--json", p("t.json"), "--vtp", p("t.vtp")).stdout
+    R.check("exact tree" in out and "nodes:" in out, f"summary: {out[:200]}")
+    t = json.load(open(p("t.json")))
+    R.check(t["format"] == "hoct-contour-tree" and len(t["arcs"]) == len(t["nodes"]) - 1,
+            "tree json: a tree")
+    degree = {}
+    for a, b in t["arcs"]:
+        degree[a] = degree.get(a, 0) + 1
+        degree[b] = degree.get(b, 0) + 1
+    R.check(sum(d - 2 for d in degree.values()) == -2, "sum of (degree - 2) is -2")
+    R.check(all(n["type"] in ("minimum", "maximum", "saddle") for n in t["nodes"]), "no regular nodes")
+    R.check(all(n["location"] in ("vertex", "edge", "interior") for n in t["nodes"]), "locations")
+    reader = vtk.vtkXMLPolyDataReader()
+    reader.SetFileName(p("t.vtp"))
+    reader.Update()
+    poly = reader.GetOutput()
+    R.check(poly.GetNumberOfPoints() == len(t["nodes"]) and poly.GetNumberOfLines() == len(t["arcs"]),
+            f"vtp: {poly.GetNumberOfPoints()} points, {poly.GetNumberOfLines()} lines")
+    values = poly.GetPointData().GetArray("value")
+    R.check(values is not None and abs(values.GetValue(0) - t["nodes"][0]["value"]) < 1e-15, "vtp values")
+    R.check(poly.GetPointData().GetArray("type") is not None and
+            poly.GetPointData().GetArray("persistence") is not None, "vtp arrays")
+
+    # PL trees and the comparison.
+    run("tree", p("g.vtu"), "--refine", "8", "--json", p("pl.json"), "-q")
+    run("tree", p("g.vtu"), "--linear", "--json", p("lin.json"), "-q")
+    cmp = json.loads(run("compare", p("t.json"), p("pl.json"), "--json").stdout)
+    R.check(cmp["bottleneck"]["max"] < 0.01, f"exact vs refine 8: {cmp['bottleneck']}")
+    aug = json.loads(open(p("pl.json")).read())
+    R.check(aug["method"] == "refine k=8", "method recorded")
+
+    # Errors: a clear message naming the file, exit status 1, nothing written.
+    for args, phrase in [
+        (["info", p("missing.vtu")], "missing.vtu: cannot open"),
+        (["tree", p("g.vtu"), "--linear", "--refine", "2"], "exclude each other"),
+        (["generate", "nope", "-o", p("x.vtu")], "unknown dataset 'nope'"),
+        (["tree", p("g.vtu"), "--json", os.path.join(tmp, "no", "dir", "t.json")], "cannot open for writing"),
+        (["compare", p("g.vtu"), p("t.json")], "not valid JSON"),
+        (["eval", p("g.vtu"), "--points", "-"], "out of range"),
+    ]:
+        r = run(*args, check=False, stdin="99999 0.1 0.1\n")
+        R.check(r.returncode == 1 and phrase in r.stderr, f"{args[0]}: {r.returncode} {r.stderr.strip()}")
+    r = run("info", p("nothing.txt"), check=False)
+    R.check(r.returncode == 1 and "unknown file type" in r.stderr, r.stderr)
+
+    # A broken input leaves an existing output untouched and no temporary files behind.
+    with open(p("keep.json"), "w") as f:
+        f.write("precious")
+    with open(p("broken.vtu"), "w") as f:
+        f.write(open(p("g.vtu"), "rb").read()[:5000].decode("latin-1"))
+    r = run("tree", p("broken.vtu"), "--json", p("keep.json"), check=False)
+    R.check(r.returncode == 1 and "broken.vtu" in r.stderr, r.stderr.strip())
+    R.check(open(p("keep.json")).read() == "precious", "output clobbered")
+    R.check(not [f for f in os.listdir(tmp) if ".tmp-" in f], "temporary files left")
+
+    # An annulus is not simply connected: a clear refusal (a Reeb graph would have loops).
+    import numpy as np
+    import meshio
+    pts, cells = [], []
+    n = 12
+    for i in range(n):
+        for r_ in (1.0, 2.0):
+            a = 2 * np.pi * i / n
+            pts.append((r_ * np.cos(a), r_ * np.sin(a), 0.0))
+    for i in range(n):
+        j = (i + 1) % n
+        cells += [(2 * i, 2 * j, 2 * j + 1), (2 * i, 2 * j + 1, 2 * i + 1)]
+    pts = np.array(pts)
+    meshio.write(p("annulus.vtu"), meshio.Mesh(pts, [("triangle", np.array(cells))],
+                                               point_data={"f": pts[:, 0]}))
+    r = run("tree", p("annulus.vtu"), check=False)
+    R.check(r.returncode == 1 and "not a disk or a sphere" in r.stderr, r.stderr.strip())
+    info = json.loads(run("info", p("annulus.vtu"), "--json").stdout)
+    R.check(info["euler_characteristic"] == 0 and info["boundary_loops"] == 2, "annulus topology")
+
+R.finish()

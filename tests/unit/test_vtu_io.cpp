@@ -1,0 +1,234 @@
+// The VTU writer and reader: exact round trips in every encoding and degree, base64 edge cases,
+// and a clear error (file name and what is wrong) for every kind of malformed file.
+#include "error.hpp"
+#include "io/base64.hpp"
+#include "io/vtu_reader.hpp"
+#include "io/vtu_writer.hpp"
+#include "poly/lattice.hpp"
+#include "test_meshes.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+
+namespace hoct {
+namespace {
+
+namespace fs = std::filesystem;
+
+class TempDir {
+public:
+  TempDir() : path_(fs::temp_directory_path() / ("hoct-vtu-" + std::to_string(::getpid()))) {
+    fs::create_directories(path_);
+  }
+  ~TempDir() { fs::remove_all(path_); }
+  std::string file(const std::string &name) const { return (path_ / name).string(); }
+  std::string write(const std::string &name, const std::string &content) const {
+    std::ofstream(file(name), std::ios::binary) << content;
+    return file(name);
+  }
+
+private:
+  fs::path path_;
+};
+
+TEST(Base64, RoundTripAndConcatenatedStreams) {
+  std::mt19937_64 rng(1);
+  for (int n = 0; n < 40; ++n) {
+    std::vector<uint8_t> data(n);
+    for (auto &b : data)
+      b = static_cast<uint8_t>(rng());
+    const std::string text = base64_encode(data.data(), data.size());
+    EXPECT_EQ(text.size(), base64_length(data.size()));
+    EXPECT_EQ(base64_decode(text), data);
+    // Two separately padded streams decode to the concatenation (VTK's header + data).
+    const std::string twice = text + "\n  " + base64_encode(data.data(), data.size() / 2);
+    std::vector<uint8_t> expected = data;
+    expected.insert(expected.end(), data.begin(), data.begin() + n / 2);
+    EXPECT_EQ(base64_decode(twice), expected);
+  }
+  EXPECT_EQ(base64_encode("hello", 5), "aGVsbG8=");
+  try {
+    base64_decode("aGVs*G8=");
+    FAIL();
+  } catch (const std::invalid_argument &e) {
+    EXPECT_NE(std::string(e.what()).find("offset 4"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(base64_decode("aGVsbG8"), std::invalid_argument);  // truncated
+  EXPECT_THROW(base64_decode("a=Vs"), std::invalid_argument);     // misplaced padding
+}
+
+TEST(VtuRoundTrip, EveryEncodingAndDegree) {
+  TempDir tmp;
+  for (int d = 1; d <= 8; ++d) {
+    std::mt19937_64 rng(d);
+    std::vector<Vec3> v;
+    std::vector<std::array<int64_t, 3>> t;
+    testing::square_grid(2, rng, v, t);
+    MeshInput in = testing::lagrange_mesh(v, t, [&](int64_t) { return d; }, nullptr, nullptr, rng);
+    in.field_name = "p & <q>";
+    for (auto enc : {VtkEncoding::Ascii, VtkEncoding::Base64, VtkEncoding::Base64Zlib,
+                     VtkEncoding::AppendedRaw, VtkEncoding::AppendedBase64}) {
+      const std::string path = tmp.file("rt.vtu");
+      write_vtu(path, in, enc);
+      const MeshInput out = read_vtu(path);
+      EXPECT_EQ(out.field_name, in.field_name);
+      ASSERT_EQ(out.points.size(), in.points.size());
+      EXPECT_EQ(0, std::memcmp(out.points.data(), in.points.data(), in.points.size() * 24));
+      EXPECT_EQ(0, std::memcmp(out.values.data(), in.values.data(), in.values.size() * 8));
+      EXPECT_EQ(out.cell_nodes, in.cell_nodes) << "degree " << d;
+      EXPECT_EQ(out.cell_degree, in.cell_degree);
+      EXPECT_EQ(out.source, path);
+    }
+  }
+}
+
+// A valid ascii file with two quadratic triangles, to be broken in many ways.
+struct Fixture {
+  std::string points = "0 0 0 1 0 0 1 1 0 0 1 0 0.5 0 0 1 0.5 0 0.5 0.5 0 0.5 1 0 0 0.5 0";
+  std::string conn = "0 1 2 4 5 6 0 2 3 6 7 8";
+  std::string offsets = "6 12", types = "22 22", values = "0 1 2 3 4 5 6 7 8";
+  std::string npoints = "9", extra_root;
+  std::string text() const {
+    return "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"1.0\"" +
+           extra_root + ">\n<UnstructuredGrid>\n<Piece NumberOfPoints=\"" + npoints +
+           "\" NumberOfCells=\"2\">\n<PointData>\n<DataArray type=\"Float64\" Name=\"T\" "
+           "format=\"ascii\">" +
+           values +
+           "</DataArray>\n</PointData>\n<Points>\n<DataArray type=\"Float64\" "
+           "NumberOfComponents=\"3\" format=\"ascii\">" +
+           points +
+           "</DataArray>\n</Points>\n<Cells>\n<DataArray type=\"Int64\" "
+           "Name=\"connectivity\" format=\"ascii\">" +
+           conn + "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">" +
+           offsets + "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">" +
+           types + "</DataArray>\n</Cells>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
+  }
+};
+
+template <class F> std::string with(F &&change) {
+  Fixture f;
+  change(f);
+  return f.text();
+}
+
+void expect_error(const TempDir &tmp, const std::string &content, const std::string &phrase,
+                  const std::string &scalar = "") {
+  const std::string path = tmp.write("bad.vtu", content);
+  try {
+    read_vtu(path, scalar);
+    ADD_FAILURE() << "accepted a file that should fail with: " << phrase;
+  } catch (const InputError &e) {
+    const std::string msg = e.what();
+    EXPECT_EQ(msg.rfind(path, 0), 0u) << msg;
+    EXPECT_NE(msg.find(phrase), std::string::npos) << "expected '" << phrase << "' in: " << msg;
+  }
+}
+
+TEST(VtuReader, ValidFixtureReads) {
+  TempDir tmp;
+  const MeshInput m = read_vtu(tmp.write("ok.vtu", Fixture().text()));
+  EXPECT_EQ(m.num_cells(), 2u);
+  EXPECT_EQ(m.field_name, "T");
+  // VTK order (corners, then edge midpoints) -> lattice order (0,0) (1,0) (2,0) (0,1) (1,1) (0,2)
+  const std::vector<int64_t> first(m.cell_nodes.begin(), m.cell_nodes.begin() + 6);
+  EXPECT_EQ(first, (std::vector<int64_t>{0, 4, 1, 6, 5, 2}));
+}
+
+TEST(VtuReader, MalformedFilesGiveClearErrors) {
+  TempDir tmp;
+  const std::string ok = Fixture().text();
+  expect_error(tmp, ok.substr(0, ok.size() / 2), "not valid XML");
+  expect_error(tmp, "hello world", "not valid XML");
+  expect_error(tmp, "", "empty");
+  expect_error(tmp, "<?xml version=\"1.0\"?><VTKFile type=\"PolyData\"></VTKFile>",
+               "expected UnstructuredGrid");
+  expect_error(tmp, "<?xml version=\"1.0\"?><foo/>", "no <VTKFile>");
+  expect_error(tmp, with([](Fixture &f) { f.points = "0 0 0 1 0 0"; }), "has 6 values, expected 27");
+  expect_error(tmp, ok, "no point-data array named 'P' (available: T)", "P");
+  expect_error(tmp, with([](Fixture &f) { f.points.replace(f.points.size() - 1, 1, "zero"); }),
+               "is not a number: 'zero'");
+  expect_error(tmp, with([](Fixture &f) { f.conn = "0 1 2 4 5 6 0 2 3 6 7 99"; }),
+               "cell 1 refers to point 99");
+  expect_error(tmp, with([](Fixture &f) { f.conn = "0 1 2 4 5 6 0 2 3 6 7 -1"; }),
+               "cell 1 refers to point -1");
+  expect_error(tmp, with([](Fixture &f) { f.conn = "0 1 2 4 5 6 0 2 3 6 7 1.5"; }),
+               "is not an integer: '1.5'");
+  expect_error(tmp, with([](Fixture &f) { f.offsets = "6 5"; }), "more values than the 5 expected");
+  expect_error(tmp, with([](Fixture &f) {
+                 f.offsets = "15 12";
+                 f.types = "69 22";
+               }),
+               "cell 0: offset 15 is beyond the connectivity (12 values)");
+  expect_error(tmp, with([](Fixture &f) { f.offsets = "6"; }), "has 1 values, expected 2");
+  expect_error(tmp, with([](Fixture &f) { f.types = "22 9"; }),
+               "VTK cell type 9, which is not a triangle");
+  expect_error(tmp, with([](Fixture &f) { f.types = "22 5"; }), "cell 1 of type 5 has 6 nodes");
+  expect_error(tmp, with([](Fixture &f) {
+                 f.conn = "0 1 2 4 5 6 7 0 2 3 6 7 8";
+                 f.offsets = "7 13";
+                 f.types = "69 22";
+               }),
+               "7-node 'bubble' triangle");
+  expect_error(tmp, with([](Fixture &f) { f.values = "0 1 2 3 nan 5 6 7 8"; }),
+               "point 4 has a non-finite value");
+  expect_error(tmp, with([](Fixture &f) { f.values = "0 1 2 3"; }), "has 4 values, expected 9");
+  expect_error(tmp, with([](Fixture &f) { f.npoints = "999999999999"; }),
+               "exceed what the file can hold");
+  expect_error(tmp, with([](Fixture &f) { f.npoints = "nine"; }), "bad NumberOfPoints");
+  expect_error(tmp, with([](Fixture &f) { f.extra_root = " compressor=\"vtkLZ4DataCompressor\""; }),
+               "unsupported compressor 'vtkLZ4DataCompressor'");
+  expect_error(tmp, with([](Fixture &f) { f.extra_root = " header_type=\"UInt16\""; }),
+               "unsupported header_type");
+  std::string no_points = ok;
+  no_points.replace(no_points.find("<Points>"), std::strlen("<Points>"), "<Pointz>");
+  no_points.replace(no_points.find("</Points>"), std::strlen("</Points>"), "</Pointz>");
+  expect_error(tmp, no_points, "no <Points> DataArray");
+  std::string no_types = ok;
+  no_types.replace(no_types.find("Name=\"types\""), 12, "Name=\"typez\"");
+  expect_error(tmp, no_types, "connectivity, offsets and types");
+  std::string appended = ok;
+  appended.replace(appended.find("format=\"ascii\">0 1 2"), 15, "format=\"appended\" offset=\"0\">");
+  expect_error(tmp, appended, "no <AppendedData> section");
+  EXPECT_THROW(read_vtu(tmp.file("does-not-exist.vtu")), InputError);
+}
+
+TEST(VtuReader, BrokenBinaryData) {
+  TempDir tmp;
+  std::mt19937_64 rng(3);
+  std::vector<Vec3> v;
+  std::vector<std::array<int64_t, 3>> t;
+  testing::square_grid(2, rng, v, t);
+  const MeshInput in =
+      testing::lagrange_mesh(v, t, [](int64_t) { return 2; }, nullptr, nullptr, rng);
+  auto written = [&](VtkEncoding enc) {
+    write_vtu(tmp.file("w.vtu"), in, enc);
+    std::ifstream f(tmp.file("w.vtu"), std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(f), {});
+  };
+  // Inline base64 with a bad character.
+  std::string b64 = written(VtkEncoding::Base64);
+  b64[b64.find("format=\"binary\">") + 20] = '*';
+  expect_error(tmp, b64, "bad base64 data");
+  // Corrupted zlib stream.
+  std::string z = written(VtkEncoding::Base64Zlib);
+  const std::size_t at = z.find("format=\"binary\">") + 60;
+  z[at] = z[at] == 'A' ? 'B' : 'A';
+  expect_error(tmp, z, "DataArray");
+  // Appended raw data cut short.
+  std::string raw = written(VtkEncoding::AppendedRaw);
+  const std::size_t us = raw.find('_', raw.find("<AppendedData"));
+  expect_error(tmp, raw.substr(0, us + 40) + "\n</AppendedData></VTKFile>",
+               "outside the appended data");
+  expect_error(tmp, raw.substr(0, us + 40), "malformed <AppendedData>");
+  // A header claiming an enormous array.
+  std::string huge = raw;
+  const uint64_t big = uint64_t{1} << 60;
+  std::memcpy(&huge[us + 1], &big, 8);
+  expect_error(tmp, huge, "truncated binary data");
+}
+
+} // namespace
+} // namespace hoct
