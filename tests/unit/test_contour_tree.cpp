@@ -157,6 +157,54 @@ void check_trees(const PlMesh &m) {
       crossing += aug.values[a[0]] < c && c < aug.values[a[1]];
     ASSERT_EQ(crossing, level_set_components(m, c)) << "level " << c;
   }
+  // An independent per-vertex classification from the link: the number of lower (upper) link
+  // components bounds the augmented tree's down (up) degree, with equality for regular vertices
+  // (one of each) and for extrema (none below or above).
+  {
+    std::vector<std::vector<std::array<int64_t, 2>>> link(n); // link edges of each vertex
+    for (const auto &t : m.triangles)
+      for (int k = 0; k < 3; ++k)
+        link[t[k]].push_back({t[(k + 1) % 3], t[(k + 2) % 3]});
+    const auto deg = aug.degrees();
+    std::vector<int64_t> index(n);
+    for (int64_t i = 0; i < n; ++i)
+      index[aug.nodes[i]] = i;
+    for (int64_t v = 0; v < n; ++v) {
+      int comps[2] = {0, 0}; // lower, upper
+      for (int side = 0; side < 2; ++side) {
+        std::map<int64_t, int64_t> parent;
+        auto find = [&](int64_t x) {
+          while (parent[x] != x)
+            x = parent[x] = parent[parent[x]];
+          return x;
+        };
+        auto on_side = [&](int64_t u) { return side == 0 ? g.less(u, v) : g.less(v, u); };
+        for (int64_t u : g.neighbors(v))
+          if (on_side(u))
+            parent[u] = u;
+        int c = static_cast<int>(parent.size());
+        for (const auto &e : link[v])
+          if (on_side(e[0]) && on_side(e[1]) && find(e[0]) != find(e[1])) {
+            parent[find(e[0])] = find(e[1]);
+            --c;
+          }
+        comps[side] = c;
+      }
+      const auto d = deg[index[v]]; // {up, down}
+      EXPECT_LE(d[1], comps[0]) << "vertex " << v;
+      EXPECT_LE(d[0], comps[1]) << "vertex " << v;
+      if (comps[0] == 1 && comps[1] == 1) {
+        EXPECT_EQ(d[1], 1);
+        EXPECT_EQ(d[0], 1);
+      }
+      if (comps[0] == 0) {
+        EXPECT_EQ(d[1], 0);
+      }
+      if (comps[1] == 0) {
+        EXPECT_EQ(d[0], 0);
+      }
+    }
+  }
   // Reduced tree invariants: a tree, sum(deg - 2) = -2, leaves = local extrema of the mesh.
   const ContourTree ct = reduce(aug);
   ASSERT_EQ(static_cast<int64_t>(ct.arcs.size()), ct.size() - 1);

@@ -256,3 +256,38 @@ TEST(ExactTree, DegenerateDataGivesAValidTreeAndCountsFallbacks) {
 
 } // namespace
 } // namespace hoct
+
+#include "datasets/datasets.hpp"
+
+namespace hoct {
+namespace {
+
+TEST(ExactTree, GeneratedDatasetsAgreeWithFinePlRefinements) {
+  // For every dataset: the bottleneck distance between the exact diagram and the diagram of the
+  // PL tree of the k-refinement shrinks as k grows and ends small against the value range.
+  const std::vector<std::pair<std::string, long long>> sets = {
+      {"gauss", 0},     {"sphere", 0},      {"two-triangle", 0},
+      {"heater", 1500}, {"conductor", 700}, {"random", 2000}};
+  for (const auto &[name, cells] : sets) {
+    DatasetOptions o;
+    o.cells = cells;
+    const Mesh mesh = build_mesh(generate_dataset(name, o));
+    const TreeResult tree = exact_contour_tree(mesh);
+    check_invariants(tree, mesh);
+    const double range = mesh.field.max_value() - mesh.field.min_value();
+    std::vector<double> dist;
+    for (int k : {2, 8, 32}) {
+      const TreeResult pl = pl_contour_tree(refine(mesh, k), false, "");
+      double d = 0;
+      for (auto kind : {PersistencePair::Kind::Join, PersistencePair::Kind::Split,
+                        PersistencePair::Kind::Global})
+        d = std::max(d, bottleneck_distance(diagram(tree, kind), diagram(pl, kind)));
+      dist.push_back(d / range);
+    }
+    EXPECT_LE(dist[2], dist[0]) << name;
+    EXPECT_LT(dist[2], 2e-3) << name << ": " << dist[0] << " " << dist[1] << " " << dist[2];
+  }
+}
+
+} // namespace
+} // namespace hoct
