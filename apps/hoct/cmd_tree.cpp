@@ -22,6 +22,7 @@ struct TreeOptions {
   std::string file, scalar, json, vtp;
   bool linear = false, augmented = false, allow_other = false, quiet = false;
   int refine = 0;
+  int threads = 0;
 };
 
 void run_tree(const TreeOptions &o) {
@@ -44,6 +45,7 @@ void run_tree(const TreeOptions &o) {
   } else {
     ExactTreeOptions eo;
     eo.augmented = o.augmented;
+    eo.threads = o.threads;
     tree = exact_contour_tree(lm.mesh, eo);
   }
   const auto t3 = clock::now();
@@ -85,6 +87,10 @@ void register_tree(CLI::App &app) {
   sub->add_flag("--allow-non-simply-connected", o->allow_other,
                 "Go on when the domain is not a disk or a sphere (the result is not a contour "
                 "tree then)");
+  sub->add_option("--threads", o->threads,
+                  "Threads for the cell phase (default: all cores; the result does not depend on "
+                  "it)")
+      ->check(CLI::Range(0, 1024));
   sub->add_flag("-q,--quiet", o->quiet, "No summary on the terminal");
   sub->callback([o] { run_tree(*o); });
 }

@@ -6,6 +6,7 @@
 #include "poly/gradient_zeros.hpp"
 #include "tree/contour_tree.hpp"
 #include "tree/merge_tree.hpp"
+#include "util/parallel_for.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -54,41 +55,42 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
   std::vector<std::vector<InteriorCritical>> interior(nc);
   std::vector<uint8_t> fallback(nc, 0);
   int64_t unresolved_zeros = 0;
-  for (int64_t c = 0; c < nc; ++c) {
-    const BernsteinTriangle g = field.cell_polynomial(c);
-    const GradientZeros z = find_gradient_zeros(g);
-    uint8_t why = 0;
-    if (z.constant)
-      why |= kConstantCell;
-    if (z.budget_exhausted)
-      why |= kCriticalCurve;
-    for (const GradientZero &p : z.zeros) {
-      if (!p.certified) {
-        why |= kUncertifiedZero;
-        ++unresolved_zeros;
-      } else if (p.near_boundary) {
-        why |= kZeroNearBoundary;
-      } else {
-        interior[c].push_back({{p.u, p.v}, g(p.u, p.v)});
+  const int threads = thread_count(opt.threads);
+  std::vector<int64_t> unresolved_per_thread(threads, 0);
+  parallel_for(nc, threads, [&](int64_t begin, int64_t end, int worker) {
+    for (int64_t c = begin; c < end; ++c) {
+      const BernsteinTriangle g = field.cell_polynomial(c);
+      const GradientZeros z = find_gradient_zeros(g);
+      uint8_t why = 0;
+      if (z.constant)
+        why |= kConstantCell;
+      if (z.budget_exhausted)
+        why |= kCriticalCurve;
+      for (const GradientZero &p : z.zeros) {
+        if (!p.certified) {
+          why |= kUncertifiedZero;
+          ++unresolved_per_thread[worker];
+        } else if (p.near_boundary) {
+          why |= kZeroNearBoundary;
+        } else {
+          interior[c].push_back({{p.u, p.v}, g(p.u, p.v)});
+        }
       }
+      for (int k = 0; k < 3; ++k)
+        if (en.degeneracy[topo.cell_edge(c, k)] != kEdgeOk)
+          why |= kDegenerateEdge;
+      fallback[c] = why;
     }
-    for (int k = 0; k < 3; ++k)
-      if (en.degeneracy[topo.cell_edge(c, k)] != kEdgeOk)
-        why |= kDegenerateEdge;
-    fallback[c] = why;
-  }
+  });
+  for (int64_t u : unresolved_per_thread)
+    unresolved_zeros += u;
   const auto t2 = clock_type::now();
 
   // Pass 2: local connections of every non-degenerate cell, in node references.
   std::vector<std::pair<int64_t, int64_t>> join_edges, split_edges;
   std::vector<std::vector<std::pair<int64_t, int64_t>>> cell_join(nc), cell_split(nc);
-  PathCounters counters;
-  CellNodes cn;
-  std::vector<int> interior_idx;
-  std::vector<CellEdgeNode> cell_edge_nodes;
-  for (int64_t c = 0; c < nc; ++c) {
-    if (fallback[c])
-      continue;
+  auto connect_cell = [&](int64_t c, CellNodes &cn, std::vector<int> &interior_idx,
+                          std::vector<CellEdgeNode> &cell_edge_nodes, PathCounters &counters) {
     const BernsteinTriangle g = field.cell_polynomial(c);
     cn.nodes.clear();
     interior_idx.clear();
@@ -126,10 +128,29 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
     const SectorResult r = connect_sectors(g, cn, interior_idx, cell_edge_nodes, counters);
     if (r.failed || r.degenerate) {
       fallback[c] = r.failed ? kCertificationFailed : kDegenerateEdgeNode;
-      continue;
+      return;
     }
     cell_join[c] = r.join;
     cell_split[c] = r.split;
+  };
+  std::vector<PathCounters> thread_counters(threads);
+  parallel_for(nc, threads, [&](int64_t begin, int64_t end, int worker) {
+    PathCounters &counters = thread_counters[worker];
+    CellNodes cn;
+    std::vector<int> interior_idx;
+    std::vector<CellEdgeNode> cell_edge_nodes;
+    for (int64_t c = begin; c < end; ++c) {
+      if (fallback[c])
+        continue;
+      connect_cell(c, cn, interior_idx, cell_edge_nodes, counters);
+    }
+  });
+  PathCounters counters;
+  for (const auto &t : thread_counters) {
+    counters.direct += t.direct;
+    counters.traced += t.traced;
+    counters.failed += t.failed;
+    counters.steps += t.steps;
   }
   const auto t3 = clock_type::now();
 

@@ -15,6 +15,8 @@ struct ExactTreeOptions {
   bool augmented = false;
   // Sub-triangles per edge in the degenerate-cell fallback (0: 2 * degree, at least 4).
   int fallback_refinement = 0;
+  // Threads for the cell phase (0: all hardware threads). The result does not depend on it.
+  int threads = 1;
 };
 
 TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &options = {});

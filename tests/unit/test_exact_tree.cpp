@@ -262,6 +262,35 @@ TEST(ExactTree, DegenerateDataGivesAValidTreeAndCountsFallbacks) {
 namespace hoct {
 namespace {
 
+TEST(ExactTree, IdenticalForAnyThreadCount) {
+  for (const std::string name : {"conductor", "random", "sphere"}) {
+    DatasetOptions o;
+    o.cells = 3000;
+    const Mesh mesh = build_mesh(generate_dataset(name, o));
+    ExactTreeOptions one, two, many;
+    one.threads = 1;
+    two.threads = 2;
+    many.threads = 7;
+    const TreeResult a = exact_contour_tree(mesh, one), b = exact_contour_tree(mesh, two),
+                     c = exact_contour_tree(mesh, many);
+    for (const TreeResult *t : {&b, &c}) {
+      ASSERT_EQ(t->nodes.size(), a.nodes.size()) << name;
+      for (std::size_t i = 0; i < a.nodes.size(); ++i) {
+        EXPECT_EQ(std::memcmp(&t->nodes[i].value, &a.nodes[i].value, sizeof(double)), 0);
+        EXPECT_EQ(t->nodes[i].uv, a.nodes[i].uv);
+        EXPECT_EQ(t->nodes[i].cell, a.nodes[i].cell);
+        EXPECT_EQ(t->nodes[i].type, a.nodes[i].type);
+      }
+      EXPECT_EQ(t->arcs, a.arcs) << name;
+      for (const auto &[k, v] : a.stats) {
+        if (k.rfind("time_", 0) != 0) {
+          EXPECT_EQ(stat(*t, k), v) << name << " " << k;
+        }
+      }
+    }
+  }
+}
+
 TEST(ExactTree, GeneratedDatasetsAgreeWithFinePlRefinements) {
   // For every dataset: the bottleneck distance between the exact diagram and the diagram of the
   // PL tree of the k-refinement shrinks as k grows and ends small against the value range.
