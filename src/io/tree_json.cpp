@@ -31,7 +31,8 @@ json to_json(const TreeResult &t) {
                      {"position", n.position},
                      {"cell", n.cell},
                      {"uv", n.uv},
-                     {"location", to_string(n.location)}});
+                     {"location", to_string(n.location)},
+                     {"fallback", n.fallback}});
     ++by_type[to_string(n.type)];
     ++by_location[to_string(n.location)];
   }
@@ -129,6 +130,7 @@ TreeResult read_tree_json(const std::string &path) {
       if (n.contains("uv"))
         node.uv = n.at("uv").get<std::array<double, 2>>();
       node.location = parse_location(n.value("location", std::string("unknown")));
+      node.fallback = n.value("fallback", false);
       t.nodes.push_back(node);
     }
     const int64_t nn = static_cast<int64_t>(t.nodes.size());

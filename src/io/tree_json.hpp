@@ -1,6 +1,7 @@
 // The contour-tree JSON format every tree hoct writes shares:
 //   {"format": "hoct-contour-tree", "version": 1, "method", "augmented",
-//    "nodes": [{"id", "type", "value", "position": [x,y,z], "cell", "uv": [u,v], "location"}],
+//    "nodes": [{"id", "type", "value", "position": [x,y,z], "cell", "uv": [u,v], "location",
+//               "fallback"}],
 //    "arcs": [[id, id], ...], "pairs": [{"birth", "death", "persistence", "kind"}],
 //    "stats": {"nodes_by_type": {...}, "nodes_by_location": {...}, <named statistics>}}
 // Node ids are indices into "nodes", which are ascending in the total order (value, id).

@@ -10,7 +10,7 @@ namespace hoct {
 void write_tree_vtp(const std::string &path, const TreeResult &t) {
   const std::size_t n = t.nodes.size(), m = t.arcs.size();
   std::vector<double> points(3 * n), value(n), node_pers(n, 0.0), arc_pers(m);
-  std::vector<int32_t> type(n), location(n);
+  std::vector<int32_t> type(n), location(n), fallback(n);
   std::vector<int64_t> ids(n), cell(n), verts(n), vert_offsets(n), lines(2 * m), line_offsets(m);
   for (const auto &p : t.pairs) {
     node_pers[p.birth] = std::max(node_pers[p.birth], p.persistence());
@@ -22,6 +22,7 @@ void write_tree_vtp(const std::string &path, const TreeResult &t) {
     value[i] = nd.value;
     type[i] = static_cast<int32_t>(nd.type);
     location[i] = static_cast<int32_t>(nd.location);
+    fallback[i] = nd.fallback ? 1 : 0;
     ids[i] = static_cast<int64_t>(i);
     cell[i] = nd.cell;
     verts[i] = static_cast<int64_t>(i);
@@ -38,7 +39,8 @@ void write_tree_vtp(const std::string &path, const TreeResult &t) {
   const std::string e_type = data.array("type", type), e_value = data.array("value", value),
                     e_pers = data.array("persistence", node_pers),
                     e_id = data.array("node_id", ids), e_cell = data.array("cell", cell),
-                    e_loc = data.array("location", location);
+                    e_loc = data.array("location", location),
+                    e_fb = data.array("fallback", fallback);
   // Cell data is ordered verts first, then lines: vertices get their node's persistence.
   std::vector<double> cell_pers(node_pers);
   cell_pers.insert(cell_pers.end(), arc_pers.begin(), arc_pers.end());
@@ -54,7 +56,7 @@ void write_tree_vtp(const std::string &path, const TreeResult &t) {
         << "  <Piece NumberOfPoints=\"" << n << "\" NumberOfVerts=\"" << n << "\" NumberOfLines=\""
         << m << "\" NumberOfStrips=\"0\" NumberOfPolys=\"0\">\n"
         << "   <PointData Scalars=\"value\">\n    " << e_type << "\n    " << e_value << "\n    "
-        << e_pers << "\n    " << e_id << "\n    " << e_cell << "\n    " << e_loc
+        << e_pers << "\n    " << e_id << "\n    " << e_cell << "\n    " << e_loc << "\n    " << e_fb
         << "\n   </PointData>\n"
         << "   <CellData>\n    " << e_cpers << "\n   </CellData>\n"
         << "   <Points>\n    " << e_points << "\n   </Points>\n"

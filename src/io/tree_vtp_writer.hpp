@@ -1,7 +1,8 @@
 // A contour tree as VTK PolyData (.vtp) for ParaView: nodes as vertices and arcs as lines, with
 // point arrays "type" (0 minimum, 1 maximum, 2 saddle, 3 regular), "value", "persistence" (the
 // largest persistence of a pair the node belongs to, 0 if none), "node_id", "cell" and
-// "location" (0 vertex, 1 edge, 2 interior, 3 unknown), and cell arrays "persistence" (of the
+// "location" (0 vertex, 1 edge, 2 interior, 3 unknown), "fallback" (1 where a degenerate cell
+// fell back to the PL rule), and cell arrays "persistence" (of the
 // arc's lower/upper pair, the smaller node persistence) for the lines.
 #pragma once
 

@@ -36,6 +36,7 @@ struct NodeSource {
   int64_t cell;
   Vec2 uv;
   NodeLocation location;
+  bool fallback = false; // in or on a degenerate cell's PL fallback
 };
 
 } // namespace
@@ -213,7 +214,7 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
   std::map<std::pair<int64_t, int>, int64_t> lattice_node; // (edge, step from lo) -> id
   auto add_node = [&](double value, int64_t cell, const Vec2 &uv, NodeLocation loc) {
     values.push_back(value);
-    source.push_back({cell, uv, loc});
+    source.push_back({cell, uv, loc, true});
     return next++;
   };
   std::array<int64_t, 8> reason_count{};
@@ -279,6 +280,8 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
         break;
       }
     }
+    for (int64_t id : ids)
+      source[id].fallback = true;
     for (const auto &t : cr.triangles)
       for (int j = 0; j < 3; ++j) {
         join_edges.emplace_back(ids[t[j]], ids[t[(j + 1) % 3]]);
@@ -332,6 +335,7 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
     n.cell = source[id].cell;
     n.uv = source[id].uv;
     n.location = source[id].location;
+    n.fallback = source[id].fallback;
     n.position = mesh.geometry.position(n.cell, n.uv[0], n.uv[1]);
     n.up = deg[i][0];
     n.down = deg[i][1];

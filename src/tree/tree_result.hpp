@@ -27,6 +27,9 @@ struct TreeNode {
   std::array<double, 2> uv{0, 0}; // its parametric position in that cell
   NodeLocation location = NodeLocation::Unknown;
   int32_t up = 0, down = 0; // arcs to higher / lower nodes
+  // The node lies in (or on the boundary of) a degenerate cell that fell back to the PL rule:
+  // its value is exact, its type is that of the refinement.
+  bool fallback = false;
 };
 
 struct TreeResult {

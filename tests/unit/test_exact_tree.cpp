@@ -43,6 +43,63 @@ double stat(const TreeResult &t, const std::string &name) {
   return -1;
 }
 
+// Independent check that a leaf is a local extremum of the piecewise field: sample every cell
+// around the node (all cells at a vertex, both cells of an edge) on small circles in parameter
+// space; a minimum must be below all samples, a maximum above.
+void check_leaf_is_extremum(const TreeNode &n, const Mesh &m) {
+  const Topology &topo = m.topology;
+  std::vector<std::pair<int64_t, Vec2>> where; // (cell, uv of the node in that cell)
+  const Vec2 corner[3] = {{0, 0}, {1, 0}, {0, 1}};
+  if (n.location == NodeLocation::Interior) {
+    where.push_back({n.cell, {n.uv[0], n.uv[1]}});
+  } else if (n.location == NodeLocation::Vertex) {
+    int k = 0;
+    while (std::abs(corner[k][0] - n.uv[0]) + std::abs(corner[k][1] - n.uv[1]) > 1e-12)
+      ++k;
+    const int64_t v = topo.cell_vertices(n.cell)[k];
+    for (int64_t c = 0; c < topo.num_cells(); ++c)
+      for (int j = 0; j < 3; ++j)
+        if (topo.cell_vertices(c)[j] == v)
+          where.push_back({c, corner[j]});
+  } else {
+    // The edge of n.cell the node lies on, and the same point in the neighbour.
+    const double u = n.uv[0], v = n.uv[1];
+    const int k = std::abs(v) < 1e-12 ? 0 : (std::abs(u + v - 1) < 1e-12 ? 1 : 2);
+    const double s = k == 0 ? u : (k == 1 ? v : 1 - v);
+    where.push_back({n.cell, {u, v}});
+    const int64_t e = topo.cell_edge(n.cell, k);
+    const double t = topo.edge_reversed(n.cell, k) ? 1 - s : s;
+    for (int i = 0; i < topo.edge_cell_count(e); ++i) {
+      const int64_t c = topo.edge_cells_begin(e)[i];
+      if (c == n.cell)
+        continue;
+      int kk = 0;
+      while (topo.cell_edge(c, kk) != e)
+        ++kk;
+      const double sc = topo.edge_reversed(c, kk) ? 1 - t : t;
+      const Vec2 &a = corner[kk], &b = corner[(kk + 1) % 3];
+      where.push_back({c, {a[0] + sc * (b[0] - a[0]), a[1] + sc * (b[1] - a[1])}});
+    }
+  }
+  int checked = 0;
+  for (const auto &[c, p] : where)
+    for (double r : {1e-3, 1e-4})
+      for (int i = 0; i < 64; ++i) {
+        const double a = 2 * M_PI * i / 64;
+        const double u = p[0] + r * std::cos(a), v = p[1] + r * std::sin(a);
+        if (u < 0 || v < 0 || u + v > 1)
+          continue;
+        const double val = m.field.value(c, u, v);
+        ++checked;
+        if (n.type == NodeType::Minimum) {
+          EXPECT_GE(val, n.value - 1e-12) << "minimum in cell " << c;
+        } else {
+          EXPECT_LE(val, n.value + 1e-12) << "maximum in cell " << c;
+        }
+      }
+  EXPECT_GT(checked, 0);
+}
+
 // Invariants every tree must satisfy.
 void check_invariants(const TreeResult &t, const Mesh &m) {
   ASSERT_EQ(t.arcs.size() + 1, t.nodes.size());
@@ -56,6 +113,9 @@ void check_invariants(const TreeResult &t, const Mesh &m) {
     if (!t.augmented) {
       EXPECT_NE(n.type, NodeType::Regular);
     }
+    // Leaves are local extrema (the fallback's PL leaves are extrema of the refinement only).
+    if (n.up + n.down == 1 && !n.fallback && m.topology.num_cells() <= 5000)
+      check_leaf_is_extremum(n, m);
   }
   EXPECT_EQ(sum, -2);
 }
