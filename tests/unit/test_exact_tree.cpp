@@ -322,6 +322,33 @@ TEST(ExactTree, DegenerateDataGivesAValidTreeAndCountsFallbacks) {
 namespace hoct {
 namespace {
 
+TEST(ExactTree, LinearCellsGiveExactlyThePlTree) {
+  // Degree 1: the field is piecewise linear, so the exact tree must be the PL tree of the mesh:
+  // the same diagram, and critical points only at vertices.
+  for (bool sphere : {false, true}) {
+    std::mt19937_64 rng(sphere ? 5 : 6);
+    std::vector<Vec3> v;
+    std::vector<std::array<int64_t, 3>> t;
+    if (sphere)
+      testing::octahedron(5, v, t);
+    else
+      testing::square_grid(9, rng, v, t);
+    const MeshInput in = testing::lagrange_mesh(
+        v, t, [](int64_t) { return 1; }, sphere ? testing::sphere_projection : nullptr, nullptr,
+        rng);
+    const Mesh mesh = build_mesh(in);
+    const TreeResult exact = exact_contour_tree(mesh);
+    const TreeResult pl = pl_contour_tree(split_lagrange_cells(in), false, "");
+    check_invariants(exact, mesh);
+    ASSERT_EQ(exact.nodes.size(), pl.nodes.size());
+    for (const auto &n : exact.nodes)
+      EXPECT_EQ(n.location, NodeLocation::Vertex);
+    for (auto kind : {PersistencePair::Kind::Join, PersistencePair::Kind::Split,
+                      PersistencePair::Kind::Global})
+      EXPECT_EQ(bottleneck_distance(diagram(exact, kind), diagram(pl, kind)), 0.0);
+  }
+}
+
 TEST(ExactTree, IdenticalForAnyThreadCount) {
   for (const std::string name : {"conductor", "random", "sphere"}) {
     DatasetOptions o;
