@@ -46,6 +46,11 @@ void run_tree(const TreeOptions &o) {
     ExactTreeOptions eo;
     eo.augmented = o.augmented;
     eo.threads = o.threads;
+    // Progress on stderr for large meshes (a phase can take seconds there).
+    if (!o.quiet && lm.mesh.topology.num_cells() >= 200000)
+      eo.progress = [](const std::string &phase, double s) {
+        std::fprintf(stderr, "hoct: %s done (%.2f s)\n", phase.c_str(), s);
+      };
     tree = exact_contour_tree(lm.mesh, eo);
   }
   const auto t3 = clock::now();

@@ -48,9 +48,14 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
   const int64_t nv = topo.num_vertices(), ne = topo.num_edges(), nc = topo.num_cells();
 
   // Edge nodes: once per mesh edge.
+  auto report = [&](const char *phase, clock_type::time_point a, clock_type::time_point b) {
+    if (opt.progress)
+      opt.progress(phase, seconds(a, b));
+  };
   const EdgeNodes en = find_edge_nodes(topo, field);
   const int64_t edge_base = nv;
   const auto t1 = clock_type::now();
+  report("edge critical points", t0, t1);
 
   // Pass 1: interior critical points of every cell; degeneracy decisions.
   std::vector<std::vector<InteriorCritical>> interior(nc);
@@ -86,6 +91,7 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
   for (int64_t u : unresolved_per_thread)
     unresolved_zeros += u;
   const auto t2 = clock_type::now();
+  report("interior critical points", t1, t2);
 
   // Pass 2: local connections of every non-degenerate cell, in node references.
   std::vector<std::pair<int64_t, int64_t>> join_edges, split_edges;
@@ -154,6 +160,7 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
     counters.steps += t.steps;
   }
   const auto t3 = clock_type::now();
+  report("certified connections", t2, t3);
 
   // Global ids: vertices, edge nodes, then the interior nodes of regular cells, then extra
   // lattice nodes on edges of fallback cells, then fallback cells' interior sub-vertices.
@@ -312,11 +319,13 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
     }
   }
   const auto t4 = clock_type::now();
+  report("degenerate-cell fallback and edge chains", t3, t4);
 
   // Global sweeps and merge.
   const ScalarGraph jg(values, join_edges), sg(values, split_edges);
   const MergeTree jt = join_tree(jg), st = split_tree(sg);
   const auto t5 = clock_type::now();
+  report("join and split sweeps", t4, t5);
   const ContourTree aug = merge_trees(jg, jt, st);
   const ContourTree ct = opt.augmented ? aug : reduce(aug);
   const auto t6 = clock_type::now();

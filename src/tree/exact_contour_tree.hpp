@@ -9,6 +9,9 @@
 #include "mesh/mesh.hpp"
 #include "tree/tree_result.hpp"
 
+#include <functional>
+#include <string>
+
 namespace hoct {
 
 struct ExactTreeOptions {
@@ -17,6 +20,8 @@ struct ExactTreeOptions {
   int fallback_refinement = 0;
   // Threads for the cell phase (0: all hardware threads). The result does not depend on it.
   int threads = 1;
+  // Called after each phase with its name and duration (seconds), e.g. for progress output.
+  std::function<void(const std::string &, double)> progress;
 };
 
 TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &options = {});
