@@ -11,6 +11,7 @@
 #include "tree_summary.hpp"
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <memory>
@@ -19,11 +20,32 @@ namespace hoct::cli {
 namespace {
 
 struct TreeOptions {
-  std::string file, scalar, json, vtp;
+  std::string file, scalar, json, vtp, simplify;
+  bool branches = false;
   bool linear = false, augmented = false, allow_other = false, quiet = false;
   int refine = 0;
   int threads = 0;
 };
+
+// "0.01" (absolute) or "0.5%" (of the value range of the tree).
+double parse_threshold(const std::string &text, const TreeResult &tree) {
+  const bool percent = !text.empty() && text.back() == '%';
+  const std::string number = percent ? text.substr(0, text.size() - 1) : text;
+  double v = 0;
+  std::size_t used = 0;
+  try {
+    v = std::stod(number, &used);
+  } catch (const std::exception &) {
+    used = 0;
+  }
+  if (used != number.size() || number.empty() || !(v >= 0) || !std::isfinite(v))
+    throw Error("--simplify: '" + text +
+                "' is not a threshold (a number, or a percentage like 0.5%)");
+  if (!percent)
+    return v;
+  const double range = tree.nodes.empty() ? 0 : tree.nodes.back().value - tree.nodes.front().value;
+  return v / 100 * range;
+}
 
 void run_tree(const TreeOptions &o) {
   using clock = std::chrono::steady_clock;
@@ -57,6 +79,13 @@ void run_tree(const TreeOptions &o) {
   auto seconds = [](clock::time_point a, clock::time_point b) {
     return std::chrono::duration<double>(b - a).count();
   };
+  if (!o.simplify.empty()) {
+    if (o.augmented)
+      throw Error("--simplify works on the reduced tree (drop --augmented)");
+    tree = simplify_tree(tree, parse_threshold(o.simplify, tree));
+  } else {
+    decompose_branches(tree);
+  }
   tree.add_stat("input_cells", static_cast<double>(lm.mesh.topology.num_cells()));
   tree.add_stat("time_read_s", lm.read_seconds);
   tree.add_stat("time_check_s", lm.build_seconds);
@@ -70,6 +99,8 @@ void run_tree(const TreeOptions &o) {
   const auto t4 = clock::now();
   if (!o.quiet)
     print_tree_summary(o.file, lm.mesh, tree, seconds(t0, t4));
+  if (o.branches)
+    print_branches(tree);
 }
 
 } // namespace
@@ -89,6 +120,10 @@ void register_tree(CLI::App &app) {
   sub->add_option("--json", o->json, "Write the tree as JSON");
   sub->add_option("--vtp", o->vtp, "Write critical points and arcs as VTK PolyData (.vtp)");
   sub->add_flag("--augmented", o->augmented, "Keep regular (degree-2) nodes");
+  sub->add_option("--simplify", o->simplify,
+                  "Remove leaf branches with persistence below this (absolute, or % of the value "
+                  "range, e.g. 0.5%)");
+  sub->add_flag("--branches", o->branches, "Print the branch decomposition as an indented list");
   sub->add_flag("--allow-non-simply-connected", o->allow_other,
                 "Go on when the domain is not a disk or a sphere (the result is not a contour "
                 "tree then)");

@@ -45,4 +45,31 @@ void print_tree_summary(const std::string &file, const Mesh &mesh, const TreeRes
   std::printf("\n  total %.3f s\n", total_seconds);
 }
 
+void print_branches(const TreeResult &t) {
+  const auto &b = t.branches;
+  std::vector<std::vector<int64_t>> children(b.size());
+  for (std::size_t i = 1; i < b.size(); ++i)
+    children[b[i].parent].push_back(static_cast<int64_t>(i));
+  for (auto &c : children)
+    std::sort(c.begin(), c.end(),
+              [&](int64_t x, int64_t y) { return b[x].persistence > b[y].persistence; });
+  std::printf("branches: %zu\n", b.size());
+  if (b.empty())
+    return;
+  auto line = [&](int64_t i) {
+    const TreeNode &e = t.nodes[b[i].extremum], &s = t.nodes[b[i].saddle];
+    std::printf("%*s%s %lld (%.6g) -> %s %lld (%.6g), persistence %.6g\n", 2 + 2 * b[i].depth, "",
+                to_string(e.type), static_cast<long long>(b[i].extremum), e.value,
+                to_string(s.type), static_cast<long long>(b[i].saddle), s.value, b[i].persistence);
+  };
+  std::vector<int64_t> stack = {0};
+  while (!stack.empty()) {
+    const int64_t i = stack.back();
+    stack.pop_back();
+    line(i);
+    for (auto it = children[i].rbegin(); it != children[i].rend(); ++it)
+      stack.push_back(*it);
+  }
+}
+
 } // namespace hoct::cli

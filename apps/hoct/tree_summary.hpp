@@ -11,4 +11,7 @@ namespace hoct::cli {
 void print_tree_summary(const std::string &file, const Mesh &mesh, const TreeResult &tree,
                         double total_seconds);
 
+// The branch decomposition, one line per branch, indented by depth, children by persistence.
+void print_branches(const TreeResult &tree);
+
 } // namespace hoct::cli

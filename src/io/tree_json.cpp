@@ -48,6 +48,17 @@ json to_json(const TreeResult &t) {
                      {"persistence", p.persistence()},
                      {"kind", to_string(p.kind)}});
   j["pairs"] = std::move(pairs);
+  json branches = json::array();
+  for (std::size_t b = 0; b < t.branches.size(); ++b) {
+    const Branch &br = t.branches[b];
+    branches.push_back({{"id", b},
+                        {"extremum", br.extremum},
+                        {"saddle", br.saddle},
+                        {"persistence", br.persistence},
+                        {"parent", br.parent},
+                        {"depth", br.depth}});
+  }
+  j["branches"] = std::move(branches);
   json stats;
   stats["nodes"] = t.nodes.size();
   stats["arcs"] = t.arcs.size();
@@ -159,6 +170,16 @@ TreeResult read_tree_json(const std::string &path) {
       pair.death_value = t.nodes[pair.death].value;
       t.pairs.push_back(pair);
     }
+    if (j.contains("branches"))
+      for (const auto &b : j.at("branches")) {
+        Branch br;
+        br.extremum = check_id(b.at("extremum").get<int64_t>(), "a branch");
+        br.saddle = check_id(b.at("saddle").get<int64_t>(), "a branch");
+        br.persistence = b.at("persistence").get<double>();
+        br.parent = b.at("parent").get<int64_t>();
+        br.depth = b.value("depth", 0);
+        t.branches.push_back(br);
+      }
     if (j.contains("stats"))
       for (const auto &[k, v] : j.at("stats").items())
         if (v.is_number())

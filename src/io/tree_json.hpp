@@ -3,6 +3,7 @@
 //    "nodes": [{"id", "type", "value", "position": [x,y,z], "cell", "uv": [u,v], "location",
 //               "fallback"}],
 //    "arcs": [[id, id], ...], "pairs": [{"birth", "death", "persistence", "kind"}],
+//    "branches": [{"id", "extremum", "saddle", "persistence", "parent", "depth"}],
 //    "stats": {"nodes_by_type": {...}, "nodes_by_location": {...}, <named statistics>}}
 // Node ids are indices into "nodes", which are ascending in the total order (value, id).
 #pragma once

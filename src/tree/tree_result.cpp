@@ -35,6 +35,45 @@ std::vector<PersistencePair> tree_pairs(const ContourTree &tree) {
   return persistence_diagram(g).pairs;
 }
 
+ContourTree as_contour_tree(const TreeResult &t) {
+  ContourTree ct;
+  for (std::size_t i = 0; i < t.nodes.size(); ++i) {
+    ct.nodes.push_back(static_cast<int64_t>(i));
+    ct.values.push_back(t.nodes[i].value);
+  }
+  ct.arcs = t.arcs;
+  return ct;
+}
+
+void decompose_branches(TreeResult &t) {
+  if (t.augmented || t.nodes.size() < 2) {
+    t.branches.clear();
+    return;
+  }
+  t.branches = simplify(as_contour_tree(t), 0).branches;
+}
+
+TreeResult simplify_tree(const TreeResult &t, double threshold) {
+  const Simplification s = simplify(as_contour_tree(t), threshold);
+  TreeResult r;
+  r.method = t.method;
+  r.augmented = false;
+  const auto deg = s.tree.degrees();
+  for (std::size_t i = 0; i < s.kept.size(); ++i) {
+    TreeNode n = t.nodes[s.kept[i]];
+    n.up = deg[i][0];
+    n.down = deg[i][1];
+    r.nodes.push_back(n);
+  }
+  r.arcs = s.tree.arcs;
+  r.pairs = tree_pairs(s.tree);
+  r.stats = t.stats;
+  r.add_stat("nodes_before_simplification", static_cast<double>(t.nodes.size()));
+  r.add_stat("simplification_threshold", threshold);
+  decompose_branches(r);
+  return r;
+}
+
 NodeLocation classify_location(double u, double v) {
   constexpr double eps = 1e-12;
   const bool on0 = std::abs(v) <= eps, on1 = std::abs(1 - u - v) <= eps, on2 = std::abs(u) <= eps;

@@ -7,6 +7,7 @@
 #include "mesh/mesh_input.hpp"
 #include "tree/contour_tree.hpp"
 #include "tree/persistence.hpp"
+#include "tree/simplification.hpp"
 
 #include <array>
 #include <cstdint>
@@ -38,12 +39,24 @@ struct TreeResult {
   std::vector<TreeNode> nodes;              // ascending in the total order (value, id)
   std::vector<std::array<int64_t, 2>> arcs; // indices into nodes, lower node first
   std::vector<PersistencePair> pairs;       // birth/death are indices into nodes
+  std::vector<Branch> branches;             // branch decomposition (indices into nodes)
   std::vector<std::pair<std::string, double>> stats;
 
   void add_stat(const std::string &name, double value) { stats.emplace_back(name, value); }
   // Counts of nodes by type: minimum, maximum, saddle, regular.
   std::array<int64_t, 4> type_counts() const;
 };
+
+// The tree as a ContourTree (indices of `nodes` as node ids).
+ContourTree as_contour_tree(const TreeResult &tree);
+
+// Simplifies a reduced tree by persistence (absolute threshold): keeps the nodes that survive,
+// recomputes pairs and branches, and records "nodes_before_simplification" and
+// "simplification_threshold" in the statistics.
+TreeResult simplify_tree(const TreeResult &tree, double threshold);
+
+// Fills tree.branches with the branch decomposition of the (reduced) tree.
+void decompose_branches(TreeResult &tree);
 
 // Persistence pairs of a (reduced or augmented) contour tree, with node indices of the tree.
 std::vector<PersistencePair> tree_pairs(const ContourTree &tree);
