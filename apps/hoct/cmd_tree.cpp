@@ -3,6 +3,7 @@
 #include "domain_check.hpp"
 #include "error.hpp"
 #include "io/tree_json.hpp"
+#include "io/tree_svg_writer.hpp"
 #include "io/tree_vtp_writer.hpp"
 #include "load_mesh.hpp"
 #include "pl/pl_contour_tree.hpp"
@@ -13,6 +14,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 
@@ -20,7 +22,7 @@ namespace hoct::cli {
 namespace {
 
 struct TreeOptions {
-  std::string file, scalar, json, vtp, simplify;
+  std::string file, scalar, json, vtp, svg, simplify;
   bool branches = false;
   bool linear = false, augmented = false, allow_other = false, quiet = false;
   int refine = 0;
@@ -96,6 +98,13 @@ void run_tree(const TreeOptions &o) {
     write_tree_json(o.json, tree);
   if (!o.vtp.empty())
     write_tree_vtp(o.vtp, tree);
+  if (!o.svg.empty()) {
+    if (tree.branches.empty())
+      throw Error("--svg draws the reduced tree (drop --augmented)");
+    write_tree_svg(o.svg, tree,
+                   std::filesystem::path(o.file).filename().string() + ": " + tree.method +
+                       " contour tree, " + std::to_string(tree.nodes.size()) + " nodes");
+  }
   const auto t4 = clock::now();
   if (!o.quiet)
     print_tree_summary(o.file, lm.mesh, tree, seconds(t0, t4));
@@ -119,6 +128,7 @@ void register_tree(CLI::App &app) {
       ->check(CLI::Range(1, 1024));
   sub->add_option("--json", o->json, "Write the tree as JSON");
   sub->add_option("--vtp", o->vtp, "Write critical points and arcs as VTK PolyData (.vtp)");
+  sub->add_option("--svg", o->svg, "Draw the tree (branch-decomposition layout) as SVG");
   sub->add_flag("--augmented", o->augmented, "Keep regular (degree-2) nodes");
   sub->add_option("--simplify", o->simplify,
                   "Remove leaf branches with persistence below this (absolute, or % of the value "

@@ -40,6 +40,25 @@ with tempdir() as tmp:
     R.check(poly.GetPointData().GetArray("type") is not None and
             poly.GetPointData().GetArray("persistence") is not None, "vtp arrays")
 
+    # Simplification, branches and the SVG picture.
+    out = run("tree", p("g.vtu"), "--simplify", "1%", "--branches", "--json", p("s.json"),
+              "--svg", p("s.svg")).stdout
+    s = json.load(open(p("s.json")))
+    pers = sorted(pr["persistence"] for pr in t["pairs"])
+    rng_ = t["nodes"][-1]["value"] - t["nodes"][0]["value"]
+    kept = [x for x in pers if x >= 0.01 * rng_]
+    R.check(len(s["pairs"]) == len(kept), f"simplified pairs {len(s['pairs'])} vs {len(kept)}")
+    R.check(len(s["branches"]) == len(s["pairs"]) and s["branches"][0]["parent"] == -1,
+            "branches: one per pair, root first")
+    R.check(s["stats"]["nodes_before_simplification"] == len(t["nodes"]), "nodes before simplification")
+    R.check(out.count("persistence") >= len(s["branches"]), "--branches lists every branch")
+    import xml.etree.ElementTree as ET
+    svg = ET.parse(p("s.svg")).getroot()
+    circles = svg.findall(".//{http://www.w3.org/2000/svg}circle")
+    R.check(len(circles) == len(s["nodes"]) + 3, f"svg: {len(circles)} circles for {len(s['nodes'])} nodes")
+    bad = run("tree", p("g.vtu"), "--simplify", "lots", check=False)
+    R.check(bad.returncode == 1 and "is not a threshold" in bad.stderr, bad.stderr.strip())
+
     # PL trees and the comparison.
     run("tree", p("g.vtu"), "--refine", "8", "--json", p("pl.json"), "-q")
     run("tree", p("g.vtu"), "--linear", "--json", p("lin.json"), "-q")
