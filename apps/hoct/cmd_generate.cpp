@@ -1,13 +1,16 @@
-// `hoct generate NAME -o FILE.vtu`: the synthetic datasets modelled on the thesis' chapter 5.
+// `hoct generate NAME -o FILE.vtu`: the synthetic datasets modelled on the thesis' chapter 5
+// (src/datasets), written as VTK XML with Lagrange triangles.
 #include "commands.hpp"
 #include "datasets/datasets.hpp"
 #include "error.hpp"
 #include "io/vtu_writer.hpp"
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <map>
 #include <memory>
+#include <string>
 
 namespace hoct::cli {
 namespace {
@@ -15,59 +18,85 @@ namespace {
 struct GenerateOptions {
   std::string name, output, encoding = "appended";
   int degree = 0;
-  double cells = 0;
+  double cells = 0; // a double, so that 1e6 is accepted
   uint64_t seed = 1;
   bool list = false;
 };
 
-void run_generate(const GenerateOptions &o) {
-  if (o.list || o.name == "list") {
-    for (const auto &n : dataset_names())
-      std::printf("%-13s %s\n", n.c_str(), dataset_description(n).c_str());
-    return;
-  }
-  if (o.name.empty())
-    throw Error("generate: name a dataset (hoct generate --list shows them)");
-  if (o.output.empty())
-    throw Error("generate: give an output file with -o FILE.vtu");
-  static const std::map<std::string, VtkEncoding> encodings = {
+const std::map<std::string, VtkEncoding> &encodings() {
+  static const std::map<std::string, VtkEncoding> e = {
       {"ascii", VtkEncoding::Ascii},
       {"base64", VtkEncoding::Base64},
       {"zlib", VtkEncoding::Base64Zlib},
       {"appended", VtkEncoding::AppendedRaw},
       {"appended-base64", VtkEncoding::AppendedBase64}};
-  const auto enc = encodings.find(o.encoding);
-  if (enc == encodings.end())
-    throw Error("generate: unknown encoding '" + o.encoding +
-                "' (ascii, base64, zlib, appended, appended-base64)");
+  return e;
+}
+
+void list_datasets() {
+  for (const auto &n : dataset_names())
+    std::printf("%-13s %s\n", n.c_str(), dataset_description(n).c_str());
+}
+
+void run_generate(const GenerateOptions &o) {
+  if (o.list || o.name == "list") {
+    list_datasets();
+    return;
+  }
+  if (o.name.empty())
+    throw Error("generate: name a dataset (hoct generate --list shows them)");
+  if (dataset_description(o.name).empty()) {
+    std::string known;
+    for (const auto &n : dataset_names())
+      known += (known.empty() ? "" : ", ") + n;
+    throw Error("generate: unknown dataset '" + o.name + "' (known: " + known + ")");
+  }
+  if (o.output.empty())
+    throw Error("generate: give an output file with -o FILE.vtu");
+  if (!(o.cells >= 0) || o.cells > 1e12 || o.cells != std::floor(o.cells))
+    throw Error("generate: --cells must be a positive whole number");
+  if (o.degree < 0)
+    throw Error("generate: --degree must be positive");
+  const VtkEncoding encoding = encodings().at(o.encoding);
+
   const auto t0 = std::chrono::steady_clock::now();
-  DatasetOptions opt;
-  opt.degree = o.degree;
-  opt.cells = static_cast<long long>(o.cells);
-  opt.seed = o.seed;
-  const MeshInput mesh = generate_dataset(o.name, opt);
-  write_vtu(o.output, mesh, enc->second);
-  const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  std::printf("%s: %zu cells of degree %d, %zu points -> %s (%.2f s)\n", o.name.c_str(),
-              mesh.num_cells(), mesh.num_cells() ? mesh.cell_degree[0] : 0, mesh.num_points(),
-              o.output.c_str(), s);
+  DatasetOptions options;
+  options.degree = o.degree;
+  options.cells = static_cast<long long>(o.cells);
+  options.seed = o.seed;
+  const MeshInput mesh = generate_dataset(o.name, options);
+  const auto t1 = std::chrono::steady_clock::now();
+  write_vtu(o.output, mesh, encoding);
+  const auto t2 = std::chrono::steady_clock::now();
+  const auto seconds = [](auto a, auto b) { return std::chrono::duration<double>(b - a).count(); };
+  std::printf(
+      "%s: %zu cells, %zu points, degree %d -> %s (%.2f s: generate %.2f s, write %.2f s)\n",
+      o.name.c_str(), mesh.num_cells(), mesh.num_points(),
+      mesh.num_cells() ? static_cast<int>(mesh.cell_degree[0]) : 0, o.output.c_str(),
+      seconds(t0, t2), seconds(t0, t1), seconds(t1, t2));
 }
 
 } // namespace
 
 void register_generate(CLI::App &app) {
   auto o = std::make_shared<GenerateOptions>();
-  auto *sub =
-      app.add_subcommand("generate", "Write a synthetic dataset (thesis chapter 5) as .vtu");
-  sub->add_option("name", o->name,
-                  "Dataset: conductor, gauss, heater, random, sphere, two-triangle");
+  std::string names;
+  for (const auto &n : dataset_names())
+    names += (names.empty() ? "" : ", ") + n;
+  auto *sub = app.add_subcommand(
+      "generate", "Write a synthetic dataset (modelled on the thesis' chapter 5) as .vtu; "
+                  "deterministic for a seed");
+  sub->add_option("name", o->name, "Dataset: " + names + " (or 'list')");
   sub->add_option("-o,--output", o->output, "Output file (.vtu)");
-  sub->add_option("--degree", o->degree, "Polynomial degree (default: the dataset's own)");
-  sub->add_option("--cells", o->cells, "Target number of cells (default: the dataset's own)");
-  sub->add_option("--seed", o->seed, "Random seed (deterministic output for a seed)");
+  sub->add_option("--degree", o->degree, "Polynomial degree 1..10 (default: the dataset's own)");
+  sub->add_option("--cells", o->cells,
+                  "Target number of cells, e.g. 1e6 (default: the dataset's own; the result is "
+                  "the nearest size the dataset's mesh family allows)");
+  sub->add_option("--seed", o->seed, "Random seed (default 1)");
   sub->add_option("--encoding", o->encoding,
-                  "VTU encoding: ascii, base64, zlib, appended (default), appended-base64");
-  sub->add_flag("--list", o->list, "List the datasets");
+                  "VTU encoding: ascii, base64, zlib, appended (default), appended-base64")
+      ->check(CLI::IsMember({"ascii", "base64", "zlib", "appended", "appended-base64"}));
+  sub->add_flag("--list", o->list, "List the datasets with a one-line description each");
   sub->callback([o] { run_generate(*o); });
 }
 

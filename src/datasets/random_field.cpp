@@ -1,32 +1,45 @@
-// `random`: a smooth random field, a sum of 16 cosine modes with random wave vectors, on a
-// jittered planar grid of the unit square. Any degree and size (up to millions of cells).
-#include "datasets/dataset_common.hpp"
-#include "datasets/linear_mesh.hpp"
+// `random`: a smooth random field on a jittered planar grid of the unit square, any degree and
+// size (20,000 cubic cells by default; millions in seconds, memory linear in the size):
+//   f(x, y) = sum over 16 modes of a_m cos(k_m . (x, y) + phi_m),
+// wave numbers |k_m| in [6, 30] in random directions, amplitudes a_m in [0.3, 1] / sqrt(|k_m|).
+#include "datasets/dataset_options.hpp"
+#include "datasets/lagrange_mesh_builder.hpp"
+#include "datasets/planar_triangulation.hpp"
 #include "datasets/seeded_random.hpp"
 
+#include <algorithm>
 #include <array>
-#include <vector>
+#include <cmath>
+#include <numbers>
 
 namespace hoct {
 
 MeshInput generate_random(const DatasetOptions &o) {
   const int d = dataset_degree(o, 3, "random");
-  const long long cells = dataset_cells(o, 20000, "random");
+  const long long cells = dataset_cells(o, 20000, 2, 50000000, d, "random");
   const int n = std::max(1, static_cast<int>(std::lround(std::sqrt(cells / 2.0))));
-  SeededRandom rng(o.seed);
-  std::vector<std::array<double, 4>> modes(16); // kx, ky, phase, amplitude
+  SeededRandom rng(o.seed, 60);
+  struct Mode {
+    double kx, ky, phase, amplitude;
+  };
+  std::array<Mode, 16> modes;
   for (auto &m : modes) {
-    const double angle = rng.uniform(0, 2 * M_PI), k = rng.uniform(2, 14);
-    m = {k * std::cos(angle), k * std::sin(angle), rng.uniform(0, 2 * M_PI),
+    const double angle = 2 * std::numbers::pi * rng.uniform(), k = rng.uniform(6, 30);
+    m = {k * std::cos(angle), k * std::sin(angle), 2 * std::numbers::pi * rng.uniform(),
          rng.uniform(0.3, 1.0) / std::sqrt(k)};
   }
-  const LinearMesh lm = square_grid(n, n, 1.0 / n, 0, 0, 0.15, o.seed + 7);
-  MeshInput m = lagrange_mesh(lm, d, nullptr, [&](const Vec3 &p) {
-    double s = 0;
-    for (const auto &md : modes)
-      s += md[3] * std::cos(md[0] * p[0] + md[1] * p[1] + md[2]);
-    return s;
-  });
+  GridSpec grid;
+  grid.nx = grid.ny = n;
+  grid.hx = grid.hy = 1.0 / n;
+  grid.jitter = 0.15;
+  grid.seed = o.seed;
+  MeshInput m =
+      build_lagrange_mesh(grid_triangulation(grid), d, nullptr, [&](const Vec3 &p, const Vec3 &) {
+        double f = 0;
+        for (const Mode &md : modes)
+          f += md.amplitude * std::cos(md.kx * p[0] + md.ky * p[1] + md.phase);
+        return f;
+      });
   m.field_name = "f";
   m.source = dataset_source("random", o, d);
   return m;

@@ -1,76 +1,68 @@
-// `two-triangle`: the thesis' toy, two degree-5 cells sharing an edge. The unit square is split on
-// its diagonal (0,0)-(1,1); the field is one global quintic
-//   f(x, y) = A(x) + s B(y),   A' = (x - .35)(x - .60)(x - .75)(x - .92),
-//                              B' = (y - .10)(y - .30)(y - .65)(y - .85),
-// so its 16 critical points are exactly the grid (r_i, s_j): 11 below the diagonal (cell 0), 5
-// above (cell 1), none on it; minima where A'' > 0 and s B'' > 0, maxima where both < 0, saddles
-// otherwise. The seed scales s in [0.8, 1.2]. With --degree >= 5 the cells represent f exactly.
-#include "datasets/dataset_common.hpp"
+// `two-triangle`: the thesis' toy (section 5.4), two degree-5 cells sharing an edge with many
+// interior critical points. The unit square is split on its diagonal (0,0)-(1,1): cell 0 is
+// (0,0),(1,0),(1,1) (below the diagonal, y < x), cell 1 is (0,0),(1,1),(0,1). The field is one
+// global quintic
+//
+//   f(x, y) = 40 A(x) + 40 s B(y) + c x y,
+//   A(x) = integral_0^x (t - .35)(t - .60)(t - .75)(t - .92) dt,
+//   B(y) = integral_0^y (t - .10)(t - .30)(t - .65)(t - .85) dt,
+//
+// with s in [0.8, 1.2] and the coupling c in [-0.003, 0.003] drawn from the seed. Without coupling
+// the 16 critical points are exactly the grid (r_i, s_j) of the roots above: 11 below the diagonal
+// (in cell 0), 5 above (in cell 1), none within 0.035 of it; minima where A'' > 0 and B'' > 0,
+// maxima where both are negative, saddles elsewhere (4 minima, 4 maxima, 8 saddles). The coupling
+// moves each by less than 0.008 (|c y| <= 0.003 against |40 A''| >= 0.40 and |40 s B''| >= 1.2 at
+// the roots), so the counts stay 11 and 5, and the critical points stay non-degenerate.
+// With --degree >= 5 the cells represent f exactly; lower degrees interpolate it.
+#include "datasets/dataset_options.hpp"
+#include "datasets/lagrange_mesh_builder.hpp"
 #include "datasets/seeded_random.hpp"
-#include "poly/lattice.hpp"
+#include "error.hpp"
 
 #include <array>
-#include <vector>
 
 namespace hoct {
 namespace {
 
-// Antiderivative (zero at 0) of prod (x - r_i), by expanding the product in monomials.
-double antiderivative(const std::array<double, 4> &roots, double x) {
-  std::vector<double> p = {1.0};
+// Monomial coefficients (degree 0..5) of integral_0^x prod_i (t - r_i) dt.
+std::array<double, 6> quintic_antiderivative(const std::array<double, 4> &roots) {
+  std::array<double, 5> p = {1, 0, 0, 0, 0}; // prod (t - r_i), degree 0..4
+  int degree = 0;
   for (double r : roots) {
-    std::vector<double> q(p.size() + 1, 0.0);
-    for (std::size_t i = 0; i < p.size(); ++i) {
-      q[i] -= r * p[i];
-      q[i + 1] += p[i];
-    }
-    p = q;
+    for (int i = degree + 1; i >= 1; --i)
+      p[i] = p[i - 1] - r * p[i];
+    p[0] = -r * p[0];
+    ++degree;
   }
-  double s = 0, xp = x;
-  for (std::size_t i = 0; i < p.size(); ++i, xp *= x)
-    s += p[i] * xp / static_cast<double>(i + 1);
+  std::array<double, 6> q{};
+  for (int i = 0; i < 5; ++i)
+    q[i + 1] = p[i] / (i + 1);
+  return q;
+}
+
+double horner(const std::array<double, 6> &q, double x) {
+  double s = 0;
+  for (int i = 5; i >= 0; --i)
+    s = s * x + q[i];
   return s;
 }
 
 } // namespace
 
-const std::array<double, 4> kTwoTriangleRootsX = {0.35, 0.60, 0.75, 0.92};
-const std::array<double, 4> kTwoTriangleRootsY = {0.10, 0.30, 0.65, 0.85};
-
 MeshInput generate_two_triangle(const DatasetOptions &o) {
-  if (o.cells > 0 && o.cells != 2)
-    throw Error("two-triangle: the dataset has exactly 2 cells (--cells does not apply)");
+  if (o.cells != 0 && o.cells != 2)
+    throw Error("two-triangle: the dataset has exactly 2 cells; --cells does not apply");
   const int d = dataset_degree(o, 5, "two-triangle");
-  SeededRandom rng(o.seed);
-  const double scale = rng.uniform(0.8, 1.2);
-  auto f = [&](double x, double y) {
-    return 40 *
-           (antiderivative(kTwoTriangleRootsX, x) + scale * antiderivative(kTwoTriangleRootsY, y));
-  };
-  MeshInput m;
-  // Lattice points of the two cells; shared points (the diagonal) created once.
-  const Vec3 corners[2][3] = {{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}}, {{0, 0, 0}, {1, 1, 0}, {0, 1, 0}}};
-  std::vector<std::pair<std::array<long long, 2>, int64_t>> made;
-  auto point = [&](double x, double y) {
-    const std::array<long long, 2> key = {std::llround(x * 1e9), std::llround(y * 1e9)};
-    for (const auto &[k, id] : made)
-      if (k == key)
-        return id;
-    m.points.push_back({x, y, 0});
-    m.values.push_back(f(x, y));
-    made.push_back({key, static_cast<int64_t>(m.points.size() - 1)});
-    return made.back().second;
-  };
-  std::vector<int64_t> nodes(lattice_size(d));
-  for (const auto &c : corners) {
-    for (int i = 0; i < lattice_size(d); ++i) {
-      const auto q = lattice_point(d, i);
-      const double u = static_cast<double>(q[0]) / d, v = static_cast<double>(q[1]) / d;
-      nodes[i] = point((1 - u - v) * c[0][0] + u * c[1][0] + v * c[2][0],
-                       (1 - u - v) * c[0][1] + u * c[1][1] + v * c[2][1]);
-    }
-    m.add_cell(d, nodes.data());
-  }
+  SeededRandom rng(o.seed, 30);
+  const double s = rng.uniform(0.8, 1.2), c = rng.uniform(-0.003, 0.003);
+  const auto A = quintic_antiderivative({0.35, 0.60, 0.75, 0.92});
+  const auto B = quintic_antiderivative({0.10, 0.30, 0.65, 0.85});
+  LinearMesh square;
+  square.vertices = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+  square.triangles = {{0, 1, 2}, {0, 2, 3}};
+  MeshInput m = build_lagrange_mesh(square, d, nullptr, [&](const Vec3 &p, const Vec3 &) {
+    return 40 * horner(A, p[0]) + 40 * s * horner(B, p[1]) + c * p[0] * p[1];
+  });
   m.field_name = "f";
   m.source = dataset_source("two-triangle", o, d);
   return m;
