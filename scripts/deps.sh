@@ -4,7 +4,7 @@
 HOCT_PACKAGES=(
   build-essential cmake ninja-build
   libeigen3-dev libcli11-dev nlohmann-json3-dev libpugixml-dev zlib1g-dev
-  libgtest-dev libgmock-dev
+  libgtest-dev libgmock-dev libcairo2-dev pkg-config
   python3 python3-numpy python3-vtk9 python3-meshio python3-gmsh
 )
 

@@ -11,5 +11,6 @@ void register_generate(CLI::App &app);
 void register_eval(CLI::App &app);
 void register_tree(CLI::App &app);
 void register_compare(CLI::App &app);
+void register_render(CLI::App &app);
 
 } // namespace hoct::cli

@@ -14,6 +14,7 @@ int main(int argc, char **argv) {
   hoct::cli::register_eval(app);
   hoct::cli::register_tree(app);
   hoct::cli::register_compare(app);
+  hoct::cli::register_render(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError &e) {
