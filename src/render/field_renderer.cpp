@@ -20,11 +20,11 @@ namespace {
 
 struct SubTriangle {
   int64_t cell;
-  std::array<Vec2, 3> uv;     // parametric corners
-  std::array<Vec3, 3> xyz;    // positions
-  std::array<double, 3> f;    // exact values
-  double depth;               // along the view direction (larger = nearer)
-  bool facing = true;         // its outward side faces the viewer (closed surfaces)
+  std::array<Vec2, 3> uv;  // parametric corners
+  std::array<Vec3, 3> xyz; // positions
+  std::array<double, 3> f; // exact values
+  double depth;            // along the view direction (larger = nearer)
+  bool facing = true;      // its outward side faces the viewer (closed surfaces)
 };
 
 Vec3 cross(const Vec3 &a, const Vec3 &b) {
@@ -42,7 +42,8 @@ void render_field(const std::string &path, const Mesh &mesh, const std::vector<T
                   const RenderOptions &o) {
   namespace fs = std::filesystem;
   std::string ext = fs::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return std::tolower(c); });
   if (ext != ".png" && ext != ".svg")
     throw Error(path + ": the picture must be .png or .svg");
   if (o.width < 100 || o.height < 100 || o.width > 10000 || o.height > 10000)
@@ -106,8 +107,10 @@ void render_field(const std::string &path, const Mesh &mesh, const std::vector<T
     int64_t outward = 0;
     for (std::size_t i = 0; i < tris.size(); ++i) {
       const auto &t = tris[i];
-      const Vec3 a = {t.xyz[1][0] - t.xyz[0][0], t.xyz[1][1] - t.xyz[0][1], t.xyz[1][2] - t.xyz[0][2]};
-      const Vec3 b = {t.xyz[2][0] - t.xyz[0][0], t.xyz[2][1] - t.xyz[0][1], t.xyz[2][2] - t.xyz[0][2]};
+      const Vec3 a = {t.xyz[1][0] - t.xyz[0][0], t.xyz[1][1] - t.xyz[0][1],
+                      t.xyz[1][2] - t.xyz[0][2]};
+      const Vec3 b = {t.xyz[2][0] - t.xyz[0][0], t.xyz[2][1] - t.xyz[0][1],
+                      t.xyz[2][2] - t.xyz[0][2]};
       Vec3 n = cross(a, b);
       const double sgn = topo.cell_parity(t.cell);
       n = {sgn * n[0], sgn * n[1], sgn * n[2]};
@@ -133,9 +136,11 @@ void render_field(const std::string &path, const Mesh &mesh, const std::vector<T
   const double sy = (o.height - 2 * margin - title_h) / std::max(ymax - ymin, 1e-300);
   const double scale = std::min(sx, sy);
   const double ox = margin + (o.width - 2 * margin - bar - scale * (xmax - xmin)) / 2;
-  const double oy = margin + title_h + (o.height - 2 * margin - title_h - scale * (ymax - ymin)) / 2;
+  const double oy =
+      margin + title_h + (o.height - 2 * margin - title_h - scale * (ymax - ymin)) / 2;
   auto px = [&](const Vec3 &p) {
-    return std::array<double, 2>{ox + scale * (dot(p, e1) - xmin), oy + scale * (ymax - dot(p, e2))};
+    return std::array<double, 2>{ox + scale * (dot(p, e1) - xmin),
+                                 oy + scale * (ymax - dot(p, e2))};
   };
   const double lo = field.min_value(), hi = field.max_value();
   auto colour = [&](double f) { return viridis(hi > lo ? (f - lo) / (hi - lo) : 0.5); };
@@ -149,9 +154,8 @@ void render_field(const std::string &path, const Mesh &mesh, const std::vector<T
                     : cairo_image_surface_create(CAIRO_FORMAT_RGB24, o.width, o.height);
   if (cairo_surface_status(surface) != CAIRO_STATUS_SUCCESS) {
     cairo_surface_destroy(surface);
-    throw Error(path + ": cannot create the picture (" + std::string(cairo_status_to_string(
-                                                              cairo_surface_status(surface))) +
-                ")");
+    throw Error(path + ": cannot create the picture (" +
+                std::string(cairo_status_to_string(cairo_surface_status(surface))) + ")");
   }
   cairo_t *cr = cairo_create(surface);
   cairo_set_source_rgb(cr, 1, 1, 1);
@@ -161,7 +165,37 @@ void render_field(const std::string &path, const Mesh &mesh, const std::vector<T
   for (int i = 1; i <= o.isolines; ++i)
     levels.push_back(lo + (hi - lo) * i / (o.isolines + 1));
   std::vector<std::array<double, 2>> crossing;
+  // Critical points as glyphs, drawn in depth order with the sub-triangles, so that surfaces in
+  // front of them hide them.
+  auto glyph = [&](const TreeNode &n) {
+    const auto p = px(n.position);
+    const double rad = n.type == NodeType::Saddle ? 3.5 : 4.5;
+    switch (n.type) {
+    case NodeType::Maximum:
+      cairo_set_source_rgb(cr, 0.84, 0.15, 0.16);
+      break;
+    case NodeType::Minimum:
+      cairo_set_source_rgb(cr, 0.12, 0.47, 0.71);
+      break;
+    default:
+      cairo_set_source_rgb(cr, 0.17, 0.63, 0.17);
+    }
+    cairo_arc(cr, p[0], p[1], rad, 0, 2 * M_PI);
+    cairo_fill_preserve(cr);
+    cairo_set_source_rgb(cr, 0, 0, 0);
+    cairo_set_line_width(cr, 0.8);
+    cairo_stroke(cr);
+  };
+  std::vector<std::pair<double, std::size_t>> glyph_order;
+  for (std::size_t i = 0; i < nodes.size(); ++i)
+    glyph_order.push_back({dot(nodes[i].position, w), i});
+  std::sort(glyph_order.begin(), glyph_order.end());
+  std::size_t next_glyph = 0;
+  // A glyph sits on the surface: draw it once the sub-triangles around it are drawn.
+  const double lift = geom.planar() ? INFINITY : 0.01 * geom.extent();
   for (const auto &t : tris) {
+    while (next_glyph < glyph_order.size() && glyph_order[next_glyph].first + lift < t.depth)
+      glyph(nodes[glyph_order[next_glyph++].second]);
     // Smooth colour: a mesh-gradient patch with the exact values at the corners.
     cairo_pattern_t *pat = cairo_pattern_create_mesh();
     cairo_mesh_pattern_begin_patch(pat);
@@ -181,14 +215,13 @@ void render_field(const std::string &path, const Mesh &mesh, const std::vector<T
       (j == 0 ? cairo_move_to : cairo_line_to)(cr, p[0], p[1]);
     }
     cairo_close_path(cr);
-    cairo_fill_preserve(cr);
-    cairo_set_line_width(cr, 0.6);
-    cairo_stroke(cr); // covers hairline seams between patches
+    // Without antialiasing, sub-triangles tile the picture exactly: no hairline seams.
+    cairo_set_antialias(cr, CAIRO_ANTIALIAS_NONE);
+    cairo_fill(cr);
+    cairo_set_antialias(cr, CAIRO_ANTIALIAS_DEFAULT);
     cairo_pattern_destroy(pat);
-  }
-  // Isolines after all fills (so neighbouring fills cannot cover them): exact crossing points
-  // on the sub-edges, from the cell's polynomial.
-  for (const auto &t : tris) {
+    // Isolines right after their sub-triangle (nearer ones drawn later hide them): exact
+    // crossing points on the sub-edges, from the cell's polynomial.
     if (!t.facing)
       continue;
     const double fmin = std::min({t.f[0], t.f[1], t.f[2]}),
@@ -225,34 +258,8 @@ void render_field(const std::string &path, const Mesh &mesh, const std::vector<T
       }
     }
   }
-  // Critical points: visible ones only on surfaces (facing the viewer from the mesh centre).
-  Vec3 centre{0, 0, 0};
-  for (int a = 0; a < 3; ++a)
-    centre[a] = 0.5 * (geom.bounds()[0][a] + geom.bounds()[1][a]);
-  for (const auto &n : nodes) {
-    if (!geom.planar()) {
-      const Vec3 d = {n.position[0] - centre[0], n.position[1] - centre[1], n.position[2] - centre[2]};
-      if (dot(d, w) < 0)
-        continue;
-    }
-    const auto p = px(n.position);
-    const double rad = n.type == NodeType::Saddle ? 3.5 : 4.5;
-    switch (n.type) {
-    case NodeType::Maximum:
-      cairo_set_source_rgb(cr, 0.84, 0.15, 0.16);
-      break;
-    case NodeType::Minimum:
-      cairo_set_source_rgb(cr, 0.12, 0.47, 0.71);
-      break;
-    default:
-      cairo_set_source_rgb(cr, 0.17, 0.63, 0.17);
-    }
-    cairo_arc(cr, p[0], p[1], rad, 0, 2 * M_PI);
-    cairo_fill_preserve(cr);
-    cairo_set_source_rgb(cr, 0, 0, 0);
-    cairo_set_line_width(cr, 0.8);
-    cairo_stroke(cr);
-  }
+  while (next_glyph < glyph_order.size())
+    glyph(nodes[glyph_order[next_glyph++].second]);
   // Colour bar and title.
   const double bx = o.width - bar + 20, by = margin + title_h, bh = o.height - 2 * margin - title_h;
   for (int i = 0; i < 256; ++i) {

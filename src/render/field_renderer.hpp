@@ -15,9 +15,9 @@ namespace hoct {
 
 struct RenderOptions {
   int width = 1000, height = 800;
-  int isolines = 12;            // evenly spaced levels inside the value range
-  Vec3 view{0, 0, 1};           // direction from the object towards the viewer
-  int subdivision = 0;          // sub-triangles per cell edge (0: automatic)
+  int isolines = 12;   // evenly spaced levels inside the value range
+  Vec3 view{0, 0, 1};  // direction from the object towards the viewer
+  int subdivision = 0; // sub-triangles per cell edge (0: automatic)
   std::string title;
 };
 

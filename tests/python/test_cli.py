@@ -59,6 +59,25 @@ with tempdir() as tmp:
     bad = run("tree", p("g.vtu"), "--simplify", "lots", check=False)
     R.check(bad.returncode == 1 and "is not a threshold" in bad.stderr, bad.stderr.strip())
 
+    # Pictures of the field: PNG of the right size, not blank, with the glyph colours in it.
+    for name in ("gauss", "sphere", "two-triangle"):
+        run("generate", name, "-o", p(name + ".vtu"))
+        run("render", p(name + ".vtu"), "-o", p(name + ".png"), "--size", "600x500")
+        png = vtk.vtkPNGReader()
+        png.SetFileName(p(name + ".png"))
+        png.Update()
+        img = png.GetOutput()
+        dims = img.GetDimensions()
+        R.check(dims[0] == 600 and dims[1] == 500, f"render {name}: size {dims}")
+        from vtk.util.numpy_support import vtk_to_numpy
+        pix = vtk_to_numpy(img.GetPointData().GetScalars())
+        colours = {tuple(x) for x in pix[::7]}
+        R.check(len(colours) > 200, f"render {name}: only {len(colours)} colours")
+        red = ((pix[:, 0] > 200) & (pix[:, 1] < 60) & (pix[:, 2] < 60)).sum()
+        R.check(red > 10, f"render {name}: no maximum glyphs drawn")
+    r = run("render", p("g.vtu"), "-o", p("g.jpg"), check=False)
+    R.check(r.returncode == 1 and "must be .png or .svg" in r.stderr, r.stderr.strip())
+
     # PL trees and the comparison.
     run("tree", p("g.vtu"), "--refine", "8", "--json", p("pl.json"), "-q")
     run("tree", p("g.vtu"), "--linear", "--json", p("lin.json"), "-q")
