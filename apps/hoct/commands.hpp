@@ -12,5 +12,6 @@ void register_eval(CLI::App &app);
 void register_tree(CLI::App &app);
 void register_compare(CLI::App &app);
 void register_render(CLI::App &app);
+void register_study(CLI::App &app);
 
 } // namespace hoct::cli

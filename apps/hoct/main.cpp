@@ -15,6 +15,7 @@ int main(int argc, char **argv) {
   hoct::cli::register_tree(app);
   hoct::cli::register_compare(app);
   hoct::cli::register_render(app);
+  hoct::cli::register_study(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError &e) {

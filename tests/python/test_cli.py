@@ -78,6 +78,21 @@ with tempdir() as tmp:
     r = run("render", p("g.vtu"), "-o", p("g.jpg"), check=False)
     R.check(r.returncode == 1 and "must be .png or .svg" in r.stderr, r.stderr.strip())
 
+    # The case study: table, CSV, JSON and chart.
+    out = run("study", p("sphere.vtu"), "--refine", "1,4,16", "--csv", p("st.csv"),
+              "--json", p("st.json"), "--svg", p("st.svg"), "--threshold", "0.5%").stdout
+    st = json.load(open(p("st.json")))
+    rows = st["rows"]
+    R.check([r["k"] for r in rows] == [0, 1, 4, 16], f"study rows {[r['k'] for r in rows]}")
+    R.check(rows[0]["method"] == "exact" and rows[0]["bottleneck"] == 0, "exact row")
+    R.check(rows[1]["bottleneck"] > rows[2]["bottleneck"] > rows[3]["bottleneck"] > 0,
+            f"study: PL error does not shrink: {[r['bottleneck'] for r in rows]}")
+    R.check(rows[3]["triangles"] == 256 * rows[0]["triangles"], "k=16 has 256x the triangles")
+    csv_lines = open(p("st.csv")).read().strip().split("\n")
+    R.check(len(csv_lines) == 5 and csv_lines[0].startswith("method,k,triangles"), "study csv")
+    ET.parse(p("st.svg"))
+    R.check("PL k=16" in out, "study table printed")
+
     # PL trees and the comparison.
     run("tree", p("g.vtu"), "--refine", "8", "--json", p("pl.json"), "-q")
     run("tree", p("g.vtu"), "--linear", "--json", p("lin.json"), "-q")
