@@ -18,21 +18,13 @@ struct CompareOptions {
   bool json = false;
 };
 
-std::vector<std::array<double, 2>> points(const TreeResult &t, PersistencePair::Kind k) {
-  std::vector<std::array<double, 2>> p;
-  for (const auto &x : t.pairs)
-    if (x.kind == k)
-      p.push_back({x.birth_value, x.death_value});
-  return p;
-}
-
 void run_compare(const CompareOptions &o) {
   const TreeResult a = read_tree_json(o.a), b = read_tree_json(o.b);
   const PersistencePair::Kind kinds[3] = {PersistencePair::Kind::Join, PersistencePair::Kind::Split,
                                           PersistencePair::Kind::Global};
   double dist[3], overall = 0;
   for (int i = 0; i < 3; ++i) {
-    dist[i] = bottleneck_distance(points(a, kinds[i]), points(b, kinds[i]));
+    dist[i] = bottleneck_distance(pair_points(a.pairs, kinds[i]), pair_points(b.pairs, kinds[i]));
     overall = std::max(overall, dist[i]);
   }
   const auto ca = a.type_counts(), cb = b.type_counts();

@@ -47,12 +47,7 @@ void print_tree_summary(const std::string &file, const Mesh &mesh, const TreeRes
 
 void print_branches(const TreeResult &t) {
   const auto &b = t.branches;
-  std::vector<std::vector<int64_t>> children(b.size());
-  for (std::size_t i = 1; i < b.size(); ++i)
-    children[b[i].parent].push_back(static_cast<int64_t>(i));
-  for (auto &c : children)
-    std::sort(c.begin(), c.end(),
-              [&](int64_t x, int64_t y) { return b[x].persistence > b[y].persistence; });
+  const auto children = branch_children(b);
   std::printf("branches: %zu\n", b.size());
   if (b.empty())
     return;

@@ -16,14 +16,6 @@ double distance(const Vec3 &a, const Vec3 &b) {
                    (a[2] - b[2]) * (a[2] - b[2]));
 }
 
-std::vector<std::array<double, 2>> points(const TreeResult &t, PersistencePair::Kind k) {
-  std::vector<std::array<double, 2>> p;
-  for (const auto &x : t.pairs)
-    if (x.kind == k)
-      p.push_back({x.birth_value, x.death_value});
-  return p;
-}
-
 // Extrema whose branch persistence is at least `threshold`.
 std::vector<int64_t> features(const TreeResult &t, double threshold) {
   std::vector<double> pers(t.nodes.size(), 0.0);
@@ -68,8 +60,8 @@ std::vector<StudyRow> case_study(const Mesh &mesh, const StudyOptions &opt) {
     r.counts = {c[0], c[1], c[2]};
     for (auto kind :
          {PersistencePair::Kind::Join, PersistencePair::Kind::Split, PersistencePair::Kind::Global})
-      r.bottleneck =
-          std::max(r.bottleneck, bottleneck_distance(points(exact, kind), points(t, kind)));
+      r.bottleneck = std::max(r.bottleneck, bottleneck_distance(pair_points(exact.pairs, kind),
+                                                                pair_points(t.pairs, kind)));
     // Nearest PL critical point of the same type for every exact one.
     double sum = 0;
     int64_t n = 0;

@@ -38,12 +38,7 @@ void write_tree_svg(const std::string &path, const TreeResult &t, const std::str
   if (b.empty())
     throw Error("write_tree_svg: the tree has no branch decomposition");
   // Columns: depth-first from the root, children by decreasing persistence.
-  std::vector<std::vector<int64_t>> children(b.size());
-  for (std::size_t i = 1; i < b.size(); ++i)
-    children[b[i].parent].push_back(static_cast<int64_t>(i));
-  for (auto &c : children)
-    std::sort(c.begin(), c.end(),
-              [&](int64_t x, int64_t y) { return b[x].persistence > b[y].persistence; });
+  const auto children = branch_children(b);
   std::vector<int> column(b.size(), 0);
   int next = 0;
   std::vector<int64_t> stack = {0};

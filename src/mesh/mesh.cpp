@@ -6,6 +6,16 @@
 
 namespace hoct {
 
+namespace {
+
+void throw_if_invalid(const Mesh &m, const MeshInput &input, const MeshBuildOptions &options) {
+  if (options.throw_on_error && m.problems.has_errors())
+    throw Error((input.source.empty() ? std::string("mesh") : input.source) +
+                ": the mesh is not valid:\n" + m.problems.summary());
+}
+
+} // namespace
+
 Mesh build_mesh(const MeshInput &input, const MeshBuildOptions &options) {
   Mesh m;
   m.source = input.source;
@@ -19,9 +29,7 @@ Mesh build_mesh(const MeshInput &input, const MeshBuildOptions &options) {
     check_geometry(m.geometry, m.topology, m.problems);
     m.complete = true;
   }
-  if (options.throw_on_error && m.problems.has_errors())
-    throw Error((input.source.empty() ? std::string("mesh") : input.source) +
-                ": the mesh is not valid:\n" + m.problems.summary());
+  throw_if_invalid(m, input, options);
   return m;
 }
 
@@ -56,9 +64,7 @@ Mesh build_mesh_from_samples(const MeshInput &input, const std::vector<CellSampl
       m.complete = true;
     }
   }
-  if (options.throw_on_error && m.problems.has_errors())
-    throw Error((input.source.empty() ? std::string("mesh") : input.source) +
-                ": the mesh is not valid:\n" + m.problems.summary());
+  throw_if_invalid(m, input, options);
   return m;
 }
 

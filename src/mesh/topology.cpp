@@ -62,6 +62,14 @@ Topology Topology::build(const MeshInput &in, ProblemLog &problems) {
     }
   }
 
+  t.vertex_cell_.assign(t.vertex_point_.size(), -1);
+  t.vertex_corner_.assign(t.vertex_point_.size(), 0);
+  for (int64_t c = nc - 1; c >= 0; --c)
+    for (int k = 0; k < 3; ++k) {
+      t.vertex_cell_[t.cell_vertices_[c][k]] = c;
+      t.vertex_corner_[t.cell_vertices_[c][k]] = static_cast<int8_t>(k);
+    }
+
   // Edges: sort (lo, hi, cell, local) records once.
   std::vector<EdgeRecord> rec;
   rec.reserve(static_cast<std::size_t>(3 * nc));

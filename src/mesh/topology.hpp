@@ -26,6 +26,9 @@ public:
   int64_t num_cells() const { return static_cast<int64_t>(cell_vertices_.size()); }
 
   int64_t vertex_point(int64_t v) const { return vertex_point_[v]; }
+  // The lowest-id cell at vertex v, and which of its corners v is.
+  int64_t vertex_cell(int64_t v) const { return vertex_cell_[v]; }
+  int vertex_corner(int64_t v) const { return vertex_corner_[v]; }
   const std::array<int64_t, 3> &cell_vertices(int64_t c) const { return cell_vertices_[c]; }
   const std::array<int64_t, 2> &edge_vertices(int64_t e) const { return edge_vertices_[e]; }
   int64_t cell_edge(int64_t c, int k) const { return cell_edges_[c][k]; }
@@ -50,7 +53,8 @@ public:
   int8_t cell_parity(int64_t c) const { return cell_parity_[c]; }
 
 private:
-  std::vector<int64_t> vertex_point_;
+  std::vector<int64_t> vertex_point_, vertex_cell_;
+  std::vector<int8_t> vertex_corner_;
   std::vector<std::array<int64_t, 3>> cell_vertices_;
   std::vector<std::array<int64_t, 2>> edge_vertices_;
   std::vector<std::array<int64_t, 3>> cell_edges_;

@@ -31,15 +31,8 @@ PlMesh refine(const Mesh &mesh, const RefinementOptions &opt) {
   };
   static constexpr double kCorner[3][2] = {{0, 0}, {1, 0}, {0, 1}};
   // Vertices first: PL vertex id = mesh vertex id.
-  std::vector<int64_t> vertex_cell(nv, -1);
-  std::vector<int> vertex_corner(nv, 0);
-  for (int64_t c = nc - 1; c >= 0; --c)
-    for (int j = 0; j < 3; ++j) {
-      vertex_cell[topo.cell_vertices(c)[j]] = c;
-      vertex_corner[topo.cell_vertices(c)[j]] = j;
-    }
   for (int64_t v = 0; v < nv; ++v)
-    add(vertex_cell[v], kCorner[vertex_corner[v]][0], kCorner[vertex_corner[v]][1],
+    add(topo.vertex_cell(v), kCorner[topo.vertex_corner(v)][0], kCorner[topo.vertex_corner(v)][1],
         field.vertex_value(v));
 
   // Each edge's extra points (lo -> hi parameters, sorted, off the lattice), and the PL ids of

@@ -175,16 +175,10 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
   std::vector<NodeSource> source(next);
   // Sources and values of vertices and edge nodes.
   {
-    std::vector<int64_t> vcell(nv, -1);
-    std::vector<int> vcorner(nv, 0);
-    for (int64_t c = nc - 1; c >= 0; --c)
-      for (int k = 0; k < 3; ++k) {
-        vcell[topo.cell_vertices(c)[k]] = c;
-        vcorner[topo.cell_vertices(c)[k]] = k;
-      }
     for (int64_t v = 0; v < nv; ++v) {
       values[v] = field.vertex_value(v);
-      source[v] = {vcell[v], point_on_edge(vcorner[v], 0.0), NodeLocation::Vertex};
+      source[v] = {topo.vertex_cell(v), point_on_edge(topo.vertex_corner(v), 0.0),
+                   NodeLocation::Vertex};
     }
     for (int64_t e = 0; e < ne; ++e) {
       const int64_t c = topo.edge_cells_begin(e)[0];

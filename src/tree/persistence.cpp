@@ -21,12 +21,17 @@ const char *to_string(PersistencePair::Kind k) {
   return "?";
 }
 
-std::vector<std::array<double, 2>> PersistenceDiagram::points(PersistencePair::Kind kind) const {
+std::vector<std::array<double, 2>> pair_points(const std::vector<PersistencePair> &pairs,
+                                               PersistencePair::Kind kind) {
   std::vector<std::array<double, 2>> p;
   for (const auto &x : pairs)
     if (x.kind == kind)
       p.push_back({x.birth_value, x.death_value});
   return p;
+}
+
+std::vector<std::array<double, 2>> PersistenceDiagram::points(PersistencePair::Kind kind) const {
+  return pair_points(pairs, kind);
 }
 
 namespace {

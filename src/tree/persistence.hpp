@@ -6,6 +6,7 @@
 
 #include "tree/scalar_graph.hpp"
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -29,6 +30,10 @@ struct PersistenceDiagram {
 };
 
 PersistenceDiagram persistence_diagram(const ScalarGraph &graph);
+
+// The (birth value, death value) points of the pairs of one kind.
+std::vector<std::array<double, 2>> pair_points(const std::vector<PersistencePair> &pairs,
+                                               PersistencePair::Kind kind);
 
 // Bottleneck distance (L-infinity ground metric, points may match the diagonal) between two
 // point sets. Exact: binary search over the candidate values with a matching test.

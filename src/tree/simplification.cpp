@@ -144,4 +144,14 @@ Simplification simplify(const ContourTree &in, double threshold) {
   return out;
 }
 
+std::vector<std::vector<int64_t>> branch_children(const std::vector<Branch> &b) {
+  std::vector<std::vector<int64_t>> children(b.size());
+  for (std::size_t i = 1; i < b.size(); ++i)
+    children[b[i].parent].push_back(static_cast<int64_t>(i));
+  for (auto &c : children)
+    std::sort(c.begin(), c.end(),
+              [&](int64_t x, int64_t y) { return b[x].persistence > b[y].persistence; });
+  return children;
+}
+
 } // namespace hoct

@@ -34,4 +34,7 @@ struct Simplification {
 // expected (regular nodes are spliced out as they appear).
 Simplification simplify(const ContourTree &tree, double threshold);
 
+// The children of every branch, by decreasing persistence.
+std::vector<std::vector<int64_t>> branch_children(const std::vector<Branch> &branches);
+
 } // namespace hoct

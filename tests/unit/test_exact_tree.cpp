@@ -3,6 +3,7 @@
 #include "mesh/mesh.hpp"
 #include "pl/pl_contour_tree.hpp"
 #include "pl/refinement.hpp"
+#include "test_functions.hpp"
 #include "test_meshes.hpp"
 #include "tree/exact_contour_tree.hpp"
 #include "tree/persistence.hpp"
@@ -14,27 +15,9 @@
 namespace hoct {
 namespace {
 
-struct Rotation {
-  double r[3][3];
-  explicit Rotation(double a = 0.3, double b = 0.7, double c = 1.1) {
-    const double ca = std::cos(a), sa = std::sin(a), cb = std::cos(b), sb = std::sin(b),
-                 cc = std::cos(c), sc = std::sin(c);
-    const double m[3][3] = {{ca * cc - sa * cb * sc, -ca * sc - sa * cb * cc, sa * sb},
-                            {sa * cc + ca * cb * sc, -sa * sc + ca * cb * cc, -ca * sb},
-                            {sb * sc, sb * cc, cb}};
-    std::memcpy(r, m, sizeof(r));
-  }
-  Vec3 apply(const Vec3 &p) const {
-    return {r[0][0] * p[0] + r[0][1] * p[1] + r[0][2] * p[2],
-            r[1][0] * p[0] + r[1][1] * p[1] + r[1][2] * p[2],
-            r[2][0] * p[0] + r[2][1] * p[1] + r[2][2] * p[2]};
-  }
-  Vec3 inverse(const Vec3 &q) const {
-    return {r[0][0] * q[0] + r[1][0] * q[1] + r[2][0] * q[2],
-            r[0][1] * q[0] + r[1][1] * q[1] + r[2][1] * q[2],
-            r[0][2] * q[0] + r[1][2] * q[1] + r[2][2] * q[2]};
-  }
-};
+using testing::antiderivative_of_roots;
+using testing::horner;
+using testing::Rotation;
 
 double stat(const TreeResult &t, const std::string &name) {
   for (const auto &[k, v] : t.stats)
@@ -172,30 +155,6 @@ TEST(ExactTree, FieldOnTheSphereMatchesTheAnalyticTopologyAndTheFinePlTree) {
       EXPECT_LT(bottleneck_distance(diagram(tree, kind), diagram(pl, kind)), 2e-3)
           << "degree " << degree << " " << to_string(kind);
   }
-}
-
-// A(u) with A' = prod (u - r_i), as monomial coefficients.
-std::vector<double> antiderivative_of_roots(const std::vector<double> &r, double scale) {
-  std::vector<double> p = {scale};
-  for (double root : r) {
-    std::vector<double> q(p.size() + 1, 0.0);
-    for (std::size_t i = 0; i < p.size(); ++i) {
-      q[i] -= root * p[i];
-      q[i + 1] += p[i];
-    }
-    p = q;
-  }
-  std::vector<double> a(p.size() + 1, 0.0);
-  for (std::size_t i = 0; i < p.size(); ++i)
-    a[i + 1] = p[i] / static_cast<double>(i + 1);
-  return a;
-}
-
-double horner(const std::vector<double> &a, double x) {
-  double s = 0;
-  for (auto it = a.rbegin(); it != a.rend(); ++it)
-    s = s * x + *it;
-  return s;
 }
 
 TEST(ExactTree, GlobalPolynomialOnStraightCellsHasExactlyItsCriticalPoints) {
@@ -343,8 +302,8 @@ TEST(ExactTree, LinearCellsGiveExactlyThePlTree) {
     ASSERT_EQ(exact.nodes.size(), pl.nodes.size());
     for (const auto &n : exact.nodes)
       EXPECT_EQ(n.location, NodeLocation::Vertex);
-    for (auto kind : {PersistencePair::Kind::Join, PersistencePair::Kind::Split,
-                      PersistencePair::Kind::Global})
+    for (auto kind :
+         {PersistencePair::Kind::Join, PersistencePair::Kind::Split, PersistencePair::Kind::Global})
       EXPECT_EQ(bottleneck_distance(diagram(exact, kind), diagram(pl, kind)), 0.0);
   }
 }

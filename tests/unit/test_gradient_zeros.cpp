@@ -2,6 +2,7 @@
 // brute-force Newton search.
 #include "poly/gradient_zeros.hpp"
 #include "poly/lattice.hpp"
+#include "test_functions.hpp"
 
 #include <gtest/gtest.h>
 
@@ -21,29 +22,8 @@ BernsteinTriangle from_function(int d, const std::function<double(double, double
   return bernstein_from_lattice_values(vals.data(), d);
 }
 
-// prod (x - r_i) integrated: coefficients of the antiderivative in monomial form.
-std::vector<double> antiderivative_of_roots(const std::vector<double> &r) {
-  std::vector<double> p = {1.0}; // derivative polynomial, ascending powers
-  for (double root : r) {
-    std::vector<double> q(p.size() + 1, 0.0);
-    for (std::size_t i = 0; i < p.size(); ++i) {
-      q[i] -= root * p[i];
-      q[i + 1] += p[i];
-    }
-    p = q;
-  }
-  std::vector<double> a(p.size() + 1, 0.0);
-  for (std::size_t i = 0; i < p.size(); ++i)
-    a[i + 1] = p[i] / static_cast<double>(i + 1);
-  return a;
-}
-
-double horner(const std::vector<double> &a, double x) {
-  double s = 0;
-  for (auto it = a.rbegin(); it != a.rend(); ++it)
-    s = s * x + *it;
-  return s;
-}
+using testing::antiderivative_of_roots;
+using testing::horner;
 
 class GradientZerosDegree : public ::testing::TestWithParam<int> {};
 

@@ -28,13 +28,17 @@ std::string write_temp(const std::string &name, const std::string &content) {
 // entity blocks, a line element that must be skipped, and two views.
 struct MshFixture {
   std::string version = "4.1 0 8";
-  std::string nodes = "$Nodes\n2 4 10 40\n2 1 0 2\n10\n20\n0 0 0\n1 0 0\n2 1 0 2\n30\n40\n1 1 0\n0 1 0\n$EndNodes\n";
-  std::string elements = "$Elements\n2 3 1 3\n1 1 1 1\n3 10 20\n2 1 2 2\n1 10 20 30\n2 10 30 40\n$EndElements\n";
-  std::string data = "$NodeData\n1\n\"p\"\n1\n0.0\n3\n0\n1\n4\n10 5\n20 5\n30 5\n40 5\n$EndNodeData\n"
-                     "$NodeData\n1\n\"T\"\n1\n0.0\n3\n0\n1\n4\n10 1.5\n20 2.5\n30 3.5\n40 4.5\n$EndNodeData\n";
+  std::string nodes = "$Nodes\n2 4 10 40\n2 1 0 2\n10\n20\n0 0 0\n1 0 0\n2 1 0 2\n30\n40\n1 1 0\n0 "
+                      "1 0\n$EndNodes\n";
+  std::string elements =
+      "$Elements\n2 3 1 3\n1 1 1 1\n3 10 20\n2 1 2 2\n1 10 20 30\n2 10 30 40\n$EndElements\n";
+  std::string data =
+      "$NodeData\n1\n\"p\"\n1\n0.0\n3\n0\n1\n4\n10 5\n20 5\n30 5\n40 5\n$EndNodeData\n"
+      "$NodeData\n1\n\"T\"\n1\n0.0\n3\n0\n1\n4\n10 1.5\n20 2.5\n30 3.5\n40 4.5\n$EndNodeData\n";
   std::string text() const {
-    return "$MeshFormat\n" + version + "\n$EndMeshFormat\n$PhysicalNames\n1\n2 1 \"plate\"\n"
-                                        "$EndPhysicalNames\n" +
+    return "$MeshFormat\n" + version +
+           "\n$EndMeshFormat\n$PhysicalNames\n1\n2 1 \"plate\"\n"
+           "$EndPhysicalNames\n" +
            nodes + elements + data;
   }
 };
@@ -116,22 +120,34 @@ TEST(MshReader, MalformedFilesGiveClearErrors) {
   expect_error(with([](MshFixture &f) { f.elements.clear(); }), "no $Elements section");
   expect_error(with([](MshFixture &f) { f.data.clear(); }), "no scalar $NodeData");
   expect_error(MshFixture().text(), "no $NodeData named 'Q' (available: p, T)", "Q");
-  expect_error(with([](MshFixture &f) { f.elements.replace(f.elements.find("2 10 30 40"), 10, "2 10 30 99"); }),
+  expect_error(with([](MshFixture &f) {
+                 f.elements.replace(f.elements.find("2 10 30 40"), 10, "2 10 30 99");
+               }),
                "element 2 refers to node 99");
-  expect_error(with([](MshFixture &f) { f.data = "$NodeData\n1\n\"T\"\n1\n0.0\n3\n0\n1\n3\n10 1\n20 1\n30 1\n$EndNodeData\n"; }),
+  expect_error(with([](MshFixture &f) {
+                 f.data =
+                     "$NodeData\n1\n\"T\"\n1\n0.0\n3\n0\n1\n3\n10 1\n20 1\n30 1\n$EndNodeData\n";
+               }),
                "node 40 (of element 2) has no value");
-  expect_error(with([](MshFixture &f) { f.elements = "$Elements\n1 1 1 1\n2 1 20 1\n1 10 20 30 10 20 30\n$EndElements\n"; }),
+  expect_error(with([](MshFixture &f) {
+                 f.elements = "$Elements\n1 1 1 1\n2 1 20 1\n1 10 20 30 10 20 30\n$EndElements\n";
+               }),
                "incomplete (serendipity) triangle type 20");
-  expect_error(with([](MshFixture &f) { f.elements = "$Elements\n1 1 1 1\n2 1 3 1\n1 10 20 30 40\n$EndElements\n"; }),
+  expect_error(with([](MshFixture &f) {
+                 f.elements = "$Elements\n1 1 1 1\n2 1 3 1\n1 10 20 30 40\n$EndElements\n";
+               }),
                "element type 3 (dimension 2) is not a triangle");
   expect_error(with([](MshFixture &f) { f.nodes.replace(f.nodes.find("1 1 0"), 5, "1 x 0"); }),
                "expected a number (node coordinate), got 'x'");
-  expect_error(with([](MshFixture &f) { f.nodes.replace(f.nodes.find("2 4 10 40"), 9, "2 99999999999999 10 40"); }),
+  expect_error(with([](MshFixture &f) {
+                 f.nodes.replace(f.nodes.find("2 4 10 40"), 9, "2 99999999999999 10 40");
+               }),
                "implausible number of nodes");
   expect_error(with([](MshFixture &f) { f.data.replace(f.data.find("10 1.5"), 6, "10 nan"); }),
                "node 10 has a non-finite value");
-  expect_error(with([](MshFixture &f) { f.nodes.replace(f.nodes.find("$EndNodes"), 9, "$Endnodes"); }),
-               "expected $EndNodes");
+  expect_error(
+      with([](MshFixture &f) { f.nodes.replace(f.nodes.find("$EndNodes"), 9, "$Endnodes"); }),
+      "expected $EndNodes");
   const std::string full = MshFixture().text();
   expect_error(full.substr(0, full.find("$EndNodes") - 4), "unexpected end of file");
   expect_error("hello", "expected a section");

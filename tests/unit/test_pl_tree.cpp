@@ -5,6 +5,7 @@
 #include "mesh/mesh.hpp"
 #include "pl/pl_contour_tree.hpp"
 #include "pl/refinement.hpp"
+#include "test_functions.hpp"
 #include "test_meshes.hpp"
 
 #include <gtest/gtest.h>
@@ -19,29 +20,11 @@ namespace {
 
 // f = x'y'z' in a rotated frame p' = R p on the unit sphere: maxima at R^T (s1,s2,s3)/sqrt(3)
 // with s1 s2 s3 = +1, minima with -1, saddles at R^T (+-e_i). 4 + 4 + 6 critical points.
-struct RotatedXyz {
-  double r[3][3];
-  RotatedXyz() {
-    const double a = 0.3, b = 0.7, c = 1.1; // Euler angles: no mesh vertex on a zero circle
-    const double ca = std::cos(a), sa = std::sin(a), cb = std::cos(b), sb = std::sin(b),
-                 cc = std::cos(c), sc = std::sin(c);
-    const double m[3][3] = {{ca * cc - sa * cb * sc, -ca * sc - sa * cb * cc, sa * sb},
-                            {sa * cc + ca * cb * sc, -sa * sc + ca * cb * cc, -ca * sb},
-                            {sb * sc, sb * cc, cb}};
-    std::memcpy(r, m, sizeof(r));
-  }
-  Vec3 rotate(const Vec3 &p) const {
-    return {r[0][0] * p[0] + r[0][1] * p[1] + r[0][2] * p[2],
-            r[1][0] * p[0] + r[1][1] * p[1] + r[1][2] * p[2],
-            r[2][0] * p[0] + r[2][1] * p[1] + r[2][2] * p[2]};
-  }
-  Vec3 unrotate(const Vec3 &q) const {
-    return {r[0][0] * q[0] + r[1][0] * q[1] + r[2][0] * q[2],
-            r[0][1] * q[0] + r[1][1] * q[1] + r[2][1] * q[2],
-            r[0][2] * q[0] + r[1][2] * q[1] + r[2][2] * q[2]};
-  }
+struct RotatedXyz : testing::Rotation {
+  Vec3 rotate(const Vec3 &p) const { return apply(p); }
+  Vec3 unrotate(const Vec3 &q) const { return inverse(q); }
   double operator()(const Vec3 &p) const {
-    const Vec3 q = rotate(p);
+    const Vec3 q = apply(p);
     return q[0] * q[1] * q[2];
   }
 };
@@ -169,8 +152,8 @@ TEST(PlTree, DiagramsOfFinerRefinementsConverge) {
   std::vector<Vec3> v;
   std::vector<std::array<int64_t, 3>> t;
   testing::square_grid(4, rng, v, t);
-  const Mesh mesh =
-      build_mesh(testing::lagrange_mesh(v, t, [](int64_t) { return 3; }, nullptr, f, rng));
+  const Mesh mesh = build_mesh(testing::lagrange_mesh(
+      v, t, [](int64_t) { return 3; }, nullptr, f, rng));
   auto diagram = [&](int k, PersistencePair::Kind kind) {
     const TreeResult r = pl_contour_tree(refine(mesh, k), false, "");
     std::vector<std::array<double, 2>> p;
@@ -179,8 +162,8 @@ TEST(PlTree, DiagramsOfFinerRefinementsConverge) {
         p.push_back({x.birth_value, x.death_value});
     return p;
   };
-  for (auto kind : {PersistencePair::Kind::Join, PersistencePair::Kind::Split,
-                    PersistencePair::Kind::Global}) {
+  for (auto kind :
+       {PersistencePair::Kind::Join, PersistencePair::Kind::Split, PersistencePair::Kind::Global}) {
     const auto ref = diagram(32, kind);
     double last = INFINITY;
     for (int k : {2, 4, 8}) {

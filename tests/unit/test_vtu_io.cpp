@@ -56,8 +56,8 @@ TEST(Base64, RoundTripAndConcatenatedStreams) {
   } catch (const std::invalid_argument &e) {
     EXPECT_NE(std::string(e.what()).find("offset 4"), std::string::npos) << e.what();
   }
-  EXPECT_THROW(base64_decode("aGVsbG8"), std::invalid_argument);  // truncated
-  EXPECT_THROW(base64_decode("a=Vs"), std::invalid_argument);     // misplaced padding
+  EXPECT_THROW(base64_decode("aGVsbG8"), std::invalid_argument); // truncated
+  EXPECT_THROW(base64_decode("a=Vs"), std::invalid_argument);    // misplaced padding
 }
 
 TEST(VtuRoundTrip, EveryEncodingAndDegree) {
@@ -67,7 +67,8 @@ TEST(VtuRoundTrip, EveryEncodingAndDegree) {
     std::vector<Vec3> v;
     std::vector<std::array<int64_t, 3>> t;
     testing::square_grid(2, rng, v, t);
-    MeshInput in = testing::lagrange_mesh(v, t, [&](int64_t) { return d; }, nullptr, nullptr, rng);
+    MeshInput in = testing::lagrange_mesh(
+        v, t, [&](int64_t) { return d; }, nullptr, nullptr, rng);
     in.field_name = "p & <q>";
     for (auto enc : {VtkEncoding::Ascii, VtkEncoding::Base64, VtkEncoding::Base64Zlib,
                      VtkEncoding::AppendedRaw, VtkEncoding::AppendedBase64}) {
@@ -146,7 +147,8 @@ TEST(VtuReader, MalformedFilesGiveClearErrors) {
   expect_error(tmp, "<?xml version=\"1.0\"?><VTKFile type=\"PolyData\"></VTKFile>",
                "expected UnstructuredGrid");
   expect_error(tmp, "<?xml version=\"1.0\"?><foo/>", "no <VTKFile>");
-  expect_error(tmp, with([](Fixture &f) { f.points = "0 0 0 1 0 0"; }), "has 6 values, expected 27");
+  expect_error(tmp, with([](Fixture &f) { f.points = "0 0 0 1 0 0"; }),
+               "has 6 values, expected 27");
   expect_error(tmp, ok, "no point-data array named 'P' (available: T)", "P");
   expect_error(tmp, with([](Fixture &f) { f.points.replace(f.points.size() - 1, 1, "zero"); }),
                "is not a number: 'zero'");
@@ -190,7 +192,8 @@ TEST(VtuReader, MalformedFilesGiveClearErrors) {
   no_types.replace(no_types.find("Name=\"types\""), 12, "Name=\"typez\"");
   expect_error(tmp, no_types, "connectivity, offsets and types");
   std::string appended = ok;
-  appended.replace(appended.find("format=\"ascii\">0 1 2"), 15, "format=\"appended\" offset=\"0\">");
+  appended.replace(appended.find("format=\"ascii\">0 1 2"), 15,
+                   "format=\"appended\" offset=\"0\">");
   expect_error(tmp, appended, "no <AppendedData> section");
   EXPECT_THROW(read_vtu(tmp.file("does-not-exist.vtu")), InputError);
 }
@@ -201,8 +204,8 @@ TEST(VtuReader, BrokenBinaryData) {
   std::vector<Vec3> v;
   std::vector<std::array<int64_t, 3>> t;
   testing::square_grid(2, rng, v, t);
-  const MeshInput in =
-      testing::lagrange_mesh(v, t, [](int64_t) { return 2; }, nullptr, nullptr, rng);
+  const MeshInput in = testing::lagrange_mesh(
+      v, t, [](int64_t) { return 2; }, nullptr, nullptr, rng);
   auto written = [&](VtkEncoding enc) {
     write_vtu(tmp.file("w.vtu"), in, enc);
     std::ifstream f(tmp.file("w.vtu"), std::ios::binary);
