@@ -16,6 +16,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <limits>
 #include <memory>
 
 namespace hoct::cli {
@@ -24,7 +25,7 @@ namespace {
 struct TreeOptions {
   std::string file, scalar, json, vtp, svg, simplify;
   bool branches = false;
-  bool linear = false, augmented = false, allow_other = false, quiet = false;
+  bool linear = false, augmented = false, allow_other = false, quiet = false, keep_flat = false;
   int refine = 0;
   int threads = 0;
 };
@@ -81,6 +82,11 @@ void run_tree(const TreeOptions &o) {
   auto seconds = [](clock::time_point a, clock::time_point b) {
     return std::chrono::duration<double>(b - a).count();
   };
+  // Plateaus (equal values, ordered by node id) give arcs of length zero and leaf branches of
+  // persistence zero: artefacts of the tie-breaking. Each flat region becomes one node unless
+  // --keep-flat.
+  if (!o.augmented && !o.keep_flat)
+    tree = contract_flat(tree);
   if (!o.simplify.empty()) {
     if (o.augmented)
       throw Error("--simplify works on the reduced tree (drop --augmented)");
@@ -134,6 +140,9 @@ void register_tree(CLI::App &app) {
                   "Remove leaf branches with persistence below this (absolute, or % of the value "
                   "range, e.g. 0.5%)");
   sub->add_flag("--branches", o->branches, "Print the branch decomposition as an indented list");
+  sub->add_flag("--keep-flat", o->keep_flat,
+                "Keep the nodes and zero-length arcs that plateaus (equal values) produce, instead "
+                "of one node per flat region");
   sub->add_flag("--allow-non-simply-connected", o->allow_other,
                 "Go on when the domain is not a disk or a sphere (the result is not a contour "
                 "tree then)");

@@ -1,5 +1,7 @@
 #include "tree/tree_result.hpp"
 
+#include "tree/flat_regions.hpp"
+
 #include <cmath>
 
 namespace hoct {
@@ -51,6 +53,41 @@ void decompose_branches(TreeResult &t) {
     return;
   }
   t.branches = simplify(as_contour_tree(t), 0).branches;
+}
+
+TreeResult contract_flat(const TreeResult &t) {
+  // Flat up to the rounding of polynomial evaluation: 1e-12 of the value scale.
+  double scale = 0;
+  for (const auto &n : t.nodes)
+    scale = std::max(scale, std::abs(n.value));
+  const FlatContraction f = contract_flat_arcs(as_contour_tree(t), 1e-12 * scale);
+  TreeResult r;
+  r.method = t.method;
+  r.augmented = false;
+  const auto deg = f.tree.degrees();
+  for (std::size_t i = 0; i < f.kept.size(); ++i) {
+    TreeNode n = t.nodes[f.kept[i]];
+    n.up = deg[i][0];
+    n.down = deg[i][1];
+    r.nodes.push_back(n);
+  }
+  const auto types = f.tree.types();
+  for (std::size_t i = 0; i < r.nodes.size(); ++i)
+    r.nodes[i].type = types[i];
+  // Arcs and pairs in the indices of the result.
+  ContourTree ct;
+  for (std::size_t i = 0; i < r.nodes.size(); ++i) {
+    ct.nodes.push_back(static_cast<int64_t>(i));
+    ct.values.push_back(r.nodes[i].value);
+  }
+  for (const auto &a : f.tree.arcs)
+    ct.arcs.push_back({a[0], a[1]});
+  r.arcs = ct.arcs;
+  r.pairs = tree_pairs(ct);
+  r.stats = t.stats;
+  r.add_stat("flat_nodes_merged", static_cast<double>(t.nodes.size() - r.nodes.size()));
+  decompose_branches(r);
+  return r;
 }
 
 TreeResult simplify_tree(const TreeResult &t, double threshold) {

@@ -55,6 +55,11 @@ ContourTree as_contour_tree(const TreeResult &tree);
 // "simplification_threshold" in the statistics.
 TreeResult simplify_tree(const TreeResult &tree, double threshold);
 
+// Contracts the zero-length arcs (within 1e-12 of the value scale) of flat regions
+// (tree/flat_regions.hpp), recomputes pairs and
+// branches, and records "flat_nodes_merged" in the statistics.
+TreeResult contract_flat(const TreeResult &tree);
+
 // Fills tree.branches with the branch decomposition of the (reduced) tree.
 void decompose_branches(TreeResult &tree);
 

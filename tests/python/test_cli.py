@@ -101,6 +101,15 @@ with tempdir() as tmp:
     aug = json.loads(open(p("pl.json")).read())
     R.check(aug["method"] == "refine k=8", "method recorded")
 
+    # Plateaus: by default each flat region is one node (no zero-persistence pairs).
+    run("generate", "conductor", "-o", p("c.vtu"), "--cells", "1500")
+    run("tree", p("c.vtu"), "--json", p("c.json"), "-q")
+    run("tree", p("c.vtu"), "--json", p("cf.json"), "-q", "--keep-flat")
+    c, cf = json.load(open(p("c.json"))), json.load(open(p("cf.json")))
+    R.check(all(pr["persistence"] > 0 for pr in c["pairs"]), "zero-persistence pairs left")
+    R.check(any(pr["persistence"] == 0 for pr in cf["pairs"]), "--keep-flat: plateau pairs expected")
+    R.check(len(c["nodes"]) < len(cf["nodes"]) and c["stats"]["flat_nodes_merged"] > 0, "flat merge")
+
     # Errors: a clear message naming the file, exit status 1, nothing written.
     for args, phrase in [
         (["info", p("missing.vtu")], "missing.vtu: cannot open"),

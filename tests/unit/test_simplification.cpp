@@ -3,6 +3,7 @@
 #include "pl/pl_mesh.hpp"
 #include "test_meshes.hpp"
 #include "tree/contour_tree.hpp"
+#include "tree/flat_regions.hpp"
 #include "tree/simplification.hpp"
 #include "tree/tree_result.hpp"
 
@@ -99,6 +100,39 @@ TEST(Simplification, DiagramLosesExactlyThePairsBelowTheThreshold) {
       EXPECT_GE(ct.values[br.saddle], lo);
       EXPECT_LE(ct.values[br.saddle], hi);
     }
+  }
+}
+
+TEST(FlatRegions, ContractionKeepsEveryPairOfPositivePersistence) {
+  // Values on a few levels: many plateaus, ties broken by id, zero-persistence pairs.
+  std::mt19937_64 rng(12);
+  for (int trial = 0; trial < 8; ++trial) {
+    std::vector<Vec3> v;
+    std::vector<std::array<int64_t, 3>> t;
+    if (trial % 2)
+      testing::octahedron(4, v, t);
+    else
+      testing::square_grid(9, rng, v, t);
+    PlMesh m;
+    m.points = v;
+    for (const auto &p : v)
+      m.values.push_back(std::round(3 * std::sin(5 * p[0]) * std::cos(4 * p[1]) + p[2]));
+    m.triangles = t;
+    const ContourTree ct = contour_tree(m.graph());
+    const FlatContraction f = contract_flat_arcs(ct);
+    check_valid(f.tree);
+    for (const auto &a : f.tree.arcs)
+      EXPECT_NE(f.tree.values[a[0]], f.tree.values[a[1]]);
+    const auto before = tree_pairs(ct), after = tree_pairs(f.tree);
+    for (auto k : {PersistencePair::Kind::Join, PersistencePair::Kind::Split}) {
+      // Zero-persistence pairs disappear, every other pair stays.
+      EXPECT_EQ(kind_points(after, k, 0), kind_points(before, k, 1e-300)) << "trial " << trial;
+    }
+    for (const auto &p : after)
+      EXPECT_GT(p.persistence(), 0);
+    EXPECT_LT(f.tree.size(), ct.size());
+    for (std::size_t i = 0; i < f.kept.size(); ++i)
+      EXPECT_EQ(f.tree.values[i], ct.values[f.kept[i]]);
   }
 }
 
