@@ -49,11 +49,19 @@ SectorResult connect_sectors(const BernsteinTriangle &g, const CellNodes &cn,
     else
       out.split.emplace_back(cn.nodes[node].ref, cn.nodes[m].ref);
   };
+  // Second derivatives once per cell (only where there are interior nodes).
+  BernsteinTriangle guu, guv, gvv;
+  if (!interior.empty()) {
+    guu = down.gu.du();
+    guv = down.gu.dv();
+    gvv = down.gv.dv();
+  }
   for (int node : interior) {
     const Vec2 &p = cn.nodes[node].uv;
     double lambda[2];
     Vec2 vec[2];
-    eigen2(g.hessian(p[0], p[1]), lambda, vec);
+    const double huv = guv(p[0], p[1]);
+    eigen2({{{guu(p[0], p[1]), huv}, {huv, gvv(p[0], p[1])}}}, lambda, vec);
     const Vec2 neg0 = {-vec[0][0], -vec[0][1]}, neg1 = {-vec[1][0], -vec[1][1]};
     if (lambda[0] < 0 && lambda[1] > 0) { // saddle: two lower, two upper sectors
       lower(node, vec[0], 2);
@@ -72,7 +80,7 @@ SectorResult connect_sectors(const BernsteinTriangle &g, const CellNodes &cn,
   for (const CellEdgeNode &e : edge) {
     const Vec2 &p = cn.nodes[e.node].uv;
     const Vec2 n = inward_normal(e.local_edge);
-    const double sn = g.du()(p[0], p[1]) * n[0] + g.dv()(p[0], p[1]) * n[1];
+    const double sn = down.gu(p[0], p[1]) * n[0] + down.gv(p[0], p[1]) * n[1];
     if (std::abs(sn) <= gscale) {
       out.degenerate = true;
       continue;

@@ -90,7 +90,28 @@ Vec3 Geometry::position(int64_t c, double u, double v) const {
       r[a] = (1 - u - v) * p[0][a] + u * p[1][a] + v * p[2][a];
     return r;
   }
-  return {component(c, 0)(u, v), component(c, 1)(u, v), component(c, 2)(u, v)};
+  // de Casteljau on the control points themselves (no temporaries for the three components).
+  const int d = degree_[c];
+  const double l0 = 1 - u - v;
+  Vec3 buf[91];
+  std::vector<Vec3> heap;
+  Vec3 *w = buf;
+  const std::size_t n = static_cast<std::size_t>(offset_[c + 1] - offset_[c]);
+  if (n > 91) {
+    heap.resize(n);
+    w = heap.data();
+  }
+  std::copy(coef_.begin() + offset_[c], coef_.begin() + offset_[c + 1], w);
+  for (int m = d; m > 0; --m)
+    for (int b = 0; b <= m - 1; ++b)
+      for (int a = 0; a <= m - 1 - b; ++a) {
+        Vec3 &out = w[lattice_index(m - 1, a, b)];
+        const Vec3 &p0 = w[lattice_index(m, a, b)], &p1 = w[lattice_index(m, a + 1, b)],
+                   &p2 = w[lattice_index(m, a, b + 1)];
+        for (int k = 0; k < 3; ++k)
+          out[k] = l0 * p0[k] + u * p1[k] + v * p2[k];
+      }
+  return w[0];
 }
 
 std::array<Vec3, 2> Geometry::jacobian(int64_t c, double u, double v) const {

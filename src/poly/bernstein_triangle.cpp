@@ -30,7 +30,6 @@ BernsteinTriangle::BernsteinTriangle(int degree, std::vector<double> coefficient
 BernsteinTriangle::BernsteinTriangle(int degree)
     : d_(degree), c_(static_cast<std::size_t>(lattice_size(degree)), 0.0) {}
 
-double BernsteinTriangle::coefficient(int a, int b) const { return c_[lattice_index(d_, a, b)]; }
 
 double BernsteinTriangle::operator()(double u, double v) const {
   const auto l = barycentric(u, v);

@@ -7,6 +7,7 @@
 #pragma once
 
 #include "poly/bernstein_univariate.hpp"
+#include "poly/lattice.hpp"
 
 #include <array>
 #include <utility>
@@ -27,7 +28,7 @@ public:
   int degree() const { return d_; }
   const std::vector<double> &coefficients() const { return c_; }
   std::vector<double> &coefficients() { return c_; }
-  double coefficient(int a, int b) const;
+  double coefficient(int a, int b) const { return c_[lattice_index(d_, a, b)]; }
 
   // Value at (u, v) by de Casteljau.
   double operator()(double u, double v) const;

@@ -37,8 +37,6 @@ GradientZeros find_gradient_zeros(const BernsteinTriangle &g, const GradientZero
   if (d == 1)
     return out; // a non-constant linear field has no critical point
   const BernsteinTriangle gu = g.du(), gv = g.dv();
-  const BernsteinTriangle guu = gu.du(), guv = gu.dv(), gvv = gv.dv();
-  const std::vector<double> muu = to_monomial(guu), muv = to_monomial(guv), mvv = to_monomial(gvv);
   double scale = 0;
   for (const auto *c : {&gu.coefficients(), &gv.coefficients()})
     for (double x : *c)
@@ -52,6 +50,16 @@ GradientZeros find_gradient_zeros(const BernsteinTriangle &g, const GradientZero
     out.constant = true;
     return out;
   }
+  // Most cells of a smooth field: one gradient component keeps its sign on the whole closed
+  // triangle (its Bernstein coefficients share a sign), so there is no critical point at all.
+  {
+    const auto [ulo, uhi] = gu.bounds();
+    const auto [vlo, vhi] = gv.bounds();
+    if (ulo > 0 || uhi < 0 || vlo > 0 || vhi < 0)
+      return out;
+  }
+  const BernsteinTriangle guu = gu.du(), guv = gu.dv(), gvv = gv.dv();
+  const std::vector<double> muu = to_monomial(guu), muv = to_monomial(guv), mvv = to_monomial(gvv);
   const double eps = std::numeric_limits<double>::epsilon();
   const double f_err = 64 * eps * scale; // bound on the rounding of a gradient evaluation
 
