@@ -8,6 +8,27 @@
 
 namespace hoct {
 
+namespace {
+
+// de Casteljau on 3D control points of degree d (canonical lattice order), in place in w.
+Vec3 casteljau3(Vec3 *w, int d, double u, double v) {
+  const double l0 = 1 - u - v;
+  for (int m = d; m > 0; --m)
+    for (int b = 0; b <= m - 1; ++b)
+      for (int a = 0; a <= m - 1 - b; ++a) {
+        Vec3 &out = w[lattice_index(m - 1, a, b)];
+        const Vec3 &p0 = w[lattice_index(m, a, b)], &p1 = w[lattice_index(m, a + 1, b)],
+                   &p2 = w[lattice_index(m, a, b + 1)];
+        for (int k = 0; k < 3; ++k)
+          out[k] = l0 * p0[k] + u * p1[k] + v * p2[k];
+      }
+  return w[0];
+}
+
+constexpr std::size_t kStackPoints = 91; // lattice_size(12)
+
+} // namespace
+
 double Geometry::extent() const {
   double s = 0;
   for (int i = 0; i < 3; ++i)
@@ -91,37 +112,40 @@ Vec3 Geometry::position(int64_t c, double u, double v) const {
     return r;
   }
   // de Casteljau on the control points themselves (no temporaries for the three components).
-  const int d = degree_[c];
-  const double l0 = 1 - u - v;
-  Vec3 buf[91];
+  const std::size_t n = static_cast<std::size_t>(offset_[c + 1] - offset_[c]);
+  Vec3 buf[kStackPoints];
   std::vector<Vec3> heap;
   Vec3 *w = buf;
-  const std::size_t n = static_cast<std::size_t>(offset_[c + 1] - offset_[c]);
-  if (n > 91) {
+  if (n > kStackPoints) {
     heap.resize(n);
     w = heap.data();
   }
   std::copy(coef_.begin() + offset_[c], coef_.begin() + offset_[c + 1], w);
-  for (int m = d; m > 0; --m)
-    for (int b = 0; b <= m - 1; ++b)
-      for (int a = 0; a <= m - 1 - b; ++a) {
-        Vec3 &out = w[lattice_index(m - 1, a, b)];
-        const Vec3 &p0 = w[lattice_index(m, a, b)], &p1 = w[lattice_index(m, a + 1, b)],
-                   &p2 = w[lattice_index(m, a, b + 1)];
-        for (int k = 0; k < 3; ++k)
-          out[k] = l0 * p0[k] + u * p1[k] + v * p2[k];
-      }
-  return w[0];
+  return casteljau3(w, degree_[c], u, v);
 }
 
 std::array<Vec3, 2> Geometry::jacobian(int64_t c, double u, double v) const {
-  std::array<Vec3, 2> j{};
-  for (int a = 0; a < 3; ++a) {
-    const auto g = component(c, a).gradient(u, v);
-    j[0][a] = g[0];
-    j[1][a] = g[1];
+  // Control points of d phi/du and d phi/dv (degree d-1), then de Casteljau.
+  const int d = degree_[c];
+  const Vec3 *p = &coef_[offset_[c]];
+  const std::size_t n = static_cast<std::size_t>(lattice_size(d - 1));
+  Vec3 bu[kStackPoints], bv[kStackPoints];
+  std::vector<Vec3> hu, hv;
+  Vec3 *wu = bu, *wv = bv;
+  if (n > kStackPoints) {
+    hu.resize(n);
+    hv.resize(n);
+    wu = hu.data();
+    wv = hv.data();
   }
-  return j;
+  for (int b = 0; b <= d - 1; ++b)
+    for (int a = 0; a <= d - 1 - b; ++a)
+      for (int k = 0; k < 3; ++k) {
+        const double base = p[lattice_index(d, a, b)][k];
+        wu[lattice_index(d - 1, a, b)][k] = d * (p[lattice_index(d, a + 1, b)][k] - base);
+        wv[lattice_index(d - 1, a, b)][k] = d * (p[lattice_index(d, a, b + 1)][k] - base);
+      }
+  return {casteljau3(wu, d - 1, u, v), casteljau3(wv, d - 1, u, v)};
 }
 
 } // namespace hoct

@@ -30,7 +30,6 @@ BernsteinTriangle::BernsteinTriangle(int degree, std::vector<double> coefficient
 BernsteinTriangle::BernsteinTriangle(int degree)
     : d_(degree), c_(static_cast<std::size_t>(lattice_size(degree)), 0.0) {}
 
-
 double BernsteinTriangle::operator()(double u, double v) const {
   const auto l = barycentric(u, v);
   // In place: step n overwrites the lower-degree coefficients it no longer needs. A stack buffer

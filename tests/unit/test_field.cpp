@@ -194,3 +194,38 @@ TEST(FieldFromSamples, ArbitrarySamplesGiveAContinuousExactField) {
 
 } // namespace
 } // namespace hoct
+
+namespace hoct {
+namespace {
+
+TEST(Geometry, PositionAndJacobianOfCurvedCells) {
+  // Curved cubic cells on the sphere: positions interpolate the nodes, the Jacobian matches
+  // central differences of the position.
+  std::mt19937_64 rng(4);
+  std::vector<Vec3> v;
+  std::vector<std::array<int64_t, 3>> t;
+  testing::octahedron(2, v, t);
+  const MeshInput in = testing::lagrange_mesh(
+      v, t, [](int64_t) { return 3; }, testing::sphere_projection, nullptr, rng);
+  const Mesh m = build_mesh(in);
+  for (int64_t c = 0; c < m.topology.num_cells(); ++c) {
+    for (int i = 0; i < lattice_size(3); ++i) {
+      const auto q = lattice_point(3, i);
+      const Vec3 p = m.geometry.position(c, q[0] / 3.0, q[1] / 3.0);
+      const Vec3 &node = in.points[in.cell_nodes[in.cell_offsets[c] + i]];
+      for (int a = 0; a < 3; ++a)
+        EXPECT_NEAR(p[a], node[a], 1e-12);
+    }
+    const double u = 0.3, w = 0.2, h = 1e-6;
+    const auto j = m.geometry.jacobian(c, u, w);
+    const Vec3 pu1 = m.geometry.position(c, u + h, w), pu0 = m.geometry.position(c, u - h, w);
+    const Vec3 pv1 = m.geometry.position(c, u, w + h), pv0 = m.geometry.position(c, u, w - h);
+    for (int a = 0; a < 3; ++a) {
+      EXPECT_NEAR(j[0][a], (pu1[a] - pu0[a]) / (2 * h), 1e-7);
+      EXPECT_NEAR(j[1][a], (pv1[a] - pv0[a]) / (2 * h), 1e-7);
+    }
+  }
+}
+
+} // namespace
+} // namespace hoct
