@@ -63,7 +63,9 @@ GradientZeros find_gradient_zeros(const BernsteinTriangle &g, const GradientZero
   const double eps = std::numeric_limits<double>::epsilon();
   const double f_err = 64 * eps * scale; // bound on the rounding of a gradient evaluation
 
-  auto newton = [&](double &u, double &v) {
+  // Newton's method from (u, v); gives up when the iterate leaves the square of half-width
+  // `reach` around (cu, cv) (it is then heading for another zero or diverging).
+  auto newton = [&](double &u, double &v, double cu = 0.5, double cv = 0.5, double reach = 10) {
     for (int it = 0; it < 40; ++it) {
       const double fu = gu(u, v), fv = gv(u, v);
       const double a = guu(u, v), b = guv(u, v), c = gvv(u, v);
@@ -73,7 +75,8 @@ GradientZeros find_gradient_zeros(const BernsteinTriangle &g, const GradientZero
       const double du = (c * fu - b * fv) / det, dv = (a * fv - b * fu) / det;
       u -= du;
       v -= dv;
-      if (!std::isfinite(u) || !std::isfinite(v) || std::abs(u) > 10 || std::abs(v) > 10)
+      if (!std::isfinite(u) || !std::isfinite(v) || std::abs(u - cu) > reach ||
+          std::abs(v - cv) > reach)
         return false;
       if (std::abs(du) + std::abs(dv) <= 4 * eps * (1 + std::abs(u) + std::abs(v)))
         return true;
@@ -143,11 +146,19 @@ GradientZeros find_gradient_zeros(const BernsteinTriangle &g, const GradientZero
       continue;
     const double h = 0.5 * b.w;
     const double cx = b.u0 + h, cy = b.v0 + h;
+    // Inside a box where Krawczyk already proved a unique zero (found and recorded): nothing
+    // else to find here.
+    bool covered = false;
+    for (const Found &f : found)
+      covered = covered || (f.certified && b.u0 >= f.cx - f.rx && b.u0 + b.w <= f.cx + f.rx &&
+                            b.v0 >= f.cy - f.ry && b.v0 + b.w <= f.cy + f.ry);
+    if (covered)
+      continue;
     if (b.w <= 0.25) {
       // Certify on the box inflated by a quarter, so zeros on box edges are interior.
       const double r = 1.25 * h;
       double x = cx, y = cy;
-      if (!newton(x, y) || std::abs(x - cx) > r || std::abs(y - cy) > r) {
+      if (!newton(x, y, cx, cy, 2 * r) || std::abs(x - cx) > r || std::abs(y - cy) > r) {
         x = cx;
         y = cy;
       }

@@ -31,7 +31,10 @@ std::pair<double, double> monomial_range(const std::vector<double> &mono, int d,
   constexpr int kMax = 32;
   if (d >= kMax)
     return {-INFINITY, INFINITY};
-  double px[kMax], py[kMax], prx[kMax], pry[kMax];
+  double px[kMax], py[kMax], prx[kMax], pry[kMax], binom[kMax][kMax];
+  for (int i = 0; i <= d; ++i)
+    for (int a = 0; a <= i; ++a)
+      binom[i][a] = binomial(i, a);
   px[0] = py[0] = prx[0] = pry[0] = 1;
   for (int i = 1; i <= d; ++i) {
     px[i] = px[i - 1] * x;
@@ -44,10 +47,10 @@ std::pair<double, double> monomial_range(const std::vector<double> &mono, int d,
     for (int b = 0; a + b <= d; ++b) {
       double e = 0;
       for (int i = a; i <= d; ++i) {
-        const double ci = binomial(i, a) * px[i - a];
+        const double ci = binom[i][a] * px[i - a];
         const double *row = &mono[static_cast<std::size_t>(i) * (d + 1)];
         for (int j = b; i + j <= d; ++j) {
-          const double term = row[j] * ci * binomial(j, b) * py[j - b];
+          const double term = row[j] * ci * binom[j][b] * py[j - b];
           e += term;
           magnitude += std::abs(term);
         }
