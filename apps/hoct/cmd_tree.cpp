@@ -66,11 +66,13 @@ void run_tree(const TreeOptions &o) {
     const PlMesh pl = o.linear ? split_lagrange_cells(lm.input) : refine(lm.mesh, o.refine);
     t2 = clock::now();
     tree = pl_contour_tree(pl, o.augmented,
-                           o.linear ? "linear" : "refine k=" + std::to_string(o.refine));
+                           o.linear ? "linear" : "refine k=" + std::to_string(o.refine),
+                           /*with_graph=*/!o.vtp.empty());
   } else {
     ExactTreeOptions eo;
     eo.augmented = o.augmented;
     eo.threads = o.threads;
+    eo.arc_geometry = !o.vtp.empty(); // arcs drawn on the surface in the .vtp
     // Progress on stderr for large meshes (a phase can take seconds there).
     if (!o.quiet && lm.mesh.topology.num_cells() >= 200000)
       eo.progress = [](const std::string &phase, double s) {
@@ -102,8 +104,10 @@ void run_tree(const TreeOptions &o) {
   tree.add_stat("time_tree_s", seconds(t2, t3));
   if (!o.json.empty())
     write_tree_json(o.json, tree);
-  if (!o.vtp.empty())
+  if (!o.vtp.empty()) {
+    compute_arc_paths(tree);
     write_tree_vtp(o.vtp, tree);
+  }
   if (!o.svg.empty()) {
     if (tree.branches.empty())
       throw Error("--svg draws the reduced tree (drop --augmented)");

@@ -75,7 +75,10 @@ bool certify_below(const BernsteinTriangle &g, const Vec2 &p, const Vec2 &q, dou
 }
 
 int connect_lower(const PathField &f, const CellNodes &cn, const std::vector<double> &values,
-                  const Vec2 &c, double level, const Vec2 &dir, int skip, PathCounters &counters) {
+                  const Vec2 &c, double level, const Vec2 &dir, int skip, PathCounters &counters,
+                  std::vector<Vec2> *path) {
+  if (path)
+    path->clear();
   const double thr = level - f.margin;
   // 1. A certified first step into the sector.
   int exit_edge;
@@ -112,9 +115,13 @@ int connect_lower(const PathField &f, const CellNodes &cn, const std::vector<dou
         return m;
     return -1;
   };
+  if (path)
+    *path = {c, s};
   int m = try_targets(s);
   if (m >= 0) {
     ++counters.direct;
+    if (path)
+      path->push_back(cn.nodes[m].uv);
     return m;
   }
   // 2. Certified descent steps.
@@ -164,6 +171,10 @@ int connect_lower(const PathField &f, const CellNodes &cn, const std::vector<dou
           const int lo = values[ch[i]] < values[ch[i + 1]] ? ch[i] : ch[i + 1];
           if (values[lo] < thr) {
             ++counters.traced;
+            if (path) {
+              path->push_back(end);
+              path->push_back(cn.nodes[lo].uv);
+            }
             return lo;
           }
           break;
@@ -171,9 +182,13 @@ int connect_lower(const PathField &f, const CellNodes &cn, const std::vector<dou
       break;
     }
     x = y;
+    if (path)
+      path->push_back(x);
     m = try_targets(x);
     if (m >= 0) {
       ++counters.traced;
+      if (path)
+        path->push_back(cn.nodes[m].uv);
       return m;
     }
   }

@@ -37,7 +37,9 @@ bool certify_below(const BernsteinTriangle &g, const Vec2 &p, const Vec2 &q, dou
 // Index into nodes.nodes of a node m with value < level - margin connected to c by a certified
 // path below level leaving c along `dir`, or -1. `values` are the node values in the same
 // orientation as f.g.
+// With `path`, the certified polyline (in the reference triangle) from c to the node is stored.
 int connect_lower(const PathField &f, const CellNodes &nodes, const std::vector<double> &values,
-                  const Vec2 &c, double level, const Vec2 &dir, int skip, PathCounters &counters);
+                  const Vec2 &c, double level, const Vec2 &dir, int skip, PathCounters &counters,
+                  std::vector<Vec2> *path = nullptr);
 
 } // namespace hoct

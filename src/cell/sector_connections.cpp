@@ -22,7 +22,8 @@ void eigen2(const Mat2 &h, double lambda[2], Vec2 vec[2]) {
 
 SectorResult connect_sectors(const BernsteinTriangle &g, const CellNodes &cn,
                              const std::vector<int> &interior,
-                             const std::vector<CellEdgeNode> &edge, PathCounters &counters) {
+                             const std::vector<CellEdgeNode> &edge, PathCounters &counters,
+                             bool with_paths) {
   SectorResult out;
   const PathField down(g);
   BernsteinTriangle neg = g;
@@ -34,21 +35,31 @@ SectorResult connect_sectors(const BernsteinTriangle &g, const CellNodes &cn,
     vals[i] = cn.nodes[i].value;
     neg_vals[i] = -cn.nodes[i].value;
   }
+  std::vector<Vec2> path;
+  std::vector<Vec2> *want = with_paths ? &path : nullptr;
   auto lower = [&](int node, const Vec2 &dir, int skip) {
-    const int m = connect_lower(down, cn, vals, cn.nodes[node].uv, vals[node], dir, skip, counters);
-    if (m < 0)
+    const int m =
+        connect_lower(down, cn, vals, cn.nodes[node].uv, vals[node], dir, skip, counters, want);
+    if (m < 0) {
       out.failed = true;
-    else
-      out.join.emplace_back(cn.nodes[node].ref, cn.nodes[m].ref);
+      return;
+    }
+    out.join.emplace_back(cn.nodes[node].ref, cn.nodes[m].ref);
+    if (with_paths)
+      out.join_paths.push_back(path);
   };
   auto upper = [&](int node, const Vec2 &dir, int skip) {
-    const int m =
-        connect_lower(up, cn, neg_vals, cn.nodes[node].uv, neg_vals[node], dir, skip, counters);
-    if (m < 0)
+    const int m = connect_lower(up, cn, neg_vals, cn.nodes[node].uv, neg_vals[node], dir, skip,
+                                counters, want);
+    if (m < 0) {
       out.failed = true;
-    else
-      out.split.emplace_back(cn.nodes[node].ref, cn.nodes[m].ref);
+      return;
+    }
+    out.split.emplace_back(cn.nodes[node].ref, cn.nodes[m].ref);
+    if (with_paths)
+      out.split_paths.push_back(path);
   };
+
   // Second derivatives once per cell (only where there are interior nodes).
   BernsteinTriangle guu, guv, gvv;
   if (!interior.empty()) {

@@ -28,12 +28,15 @@ struct CellEdgeNode {
 
 struct SectorResult {
   std::vector<std::pair<int64_t, int64_t>> join, split; // node refs (see LocalNode::ref)
+  // With paths requested: the certified polyline of each join / split connection.
+  std::vector<std::vector<Vec2>> join_paths, split_paths;
   bool failed = false;     // some sector could not be connected: fall back
   bool degenerate = false; // an edge node with vanishing normal derivative: fall back
 };
 
 SectorResult connect_sectors(const BernsteinTriangle &g, const CellNodes &nodes,
                              const std::vector<int> &interior_nodes,
-                             const std::vector<CellEdgeNode> &edge_nodes, PathCounters &counters);
+                             const std::vector<CellEdgeNode> &edge_nodes, PathCounters &counters,
+                             bool with_paths = false);
 
 } // namespace hoct

@@ -1,4 +1,5 @@
-// A contour tree as VTK PolyData (.vtp) for ParaView: nodes as vertices and arcs as lines, with
+// A contour tree as VTK PolyData (.vtp) for ParaView: nodes as vertices and arcs as lines (the
+// polylines of TreeResult::arc_paths when present, drawn on the surface; else straight), with
 // point arrays "type" (0 minimum, 1 maximum, 2 saddle, 3 regular), "value", "persistence" (the
 // largest persistence of a pair the node belongs to, 0 if none), "node_id", "cell" and
 // "location" (0 vertex, 1 edge, 2 interior, 3 unknown), "fallback" (1 where a degenerate cell

@@ -4,7 +4,8 @@
 
 namespace hoct {
 
-TreeResult pl_contour_tree(const PlMesh &m, bool augmented, const std::string &method) {
+TreeResult pl_contour_tree(const PlMesh &m, bool augmented, const std::string &method,
+                           bool with_graph) {
   using clock = std::chrono::steady_clock;
   auto seconds = [](clock::time_point a, clock::time_point b) {
     return std::chrono::duration<double>(b - a).count();
@@ -32,6 +33,7 @@ TreeResult pl_contour_tree(const PlMesh &m, bool augmented, const std::string &m
     n.position = m.points[v];
     n.up = deg[i][0];
     n.down = deg[i][1];
+    n.graph_node = v;
     if (v < static_cast<int64_t>(m.source_cell.size()) && m.source_cell[v] >= 0) {
       n.cell = m.source_cell[v];
       n.uv = m.source_uv[v];
@@ -39,6 +41,15 @@ TreeResult pl_contour_tree(const PlMesh &m, bool augmented, const std::string &m
     }
   }
   r.arcs = ct.arcs;
+  if (with_graph) {
+    auto graph = std::make_shared<GeometricGraph>(m.points, m.values);
+    for (int64_t v = 0; v < g.size(); ++v)
+      for (int64_t u : g.neighbors(v))
+        if (u > v)
+          graph->add_edge(v, u);
+    graph->finish();
+    r.graph = std::move(graph);
+  }
   r.pairs = tree_pairs(ct);
   const auto t4 = clock::now();
   r.add_stat("pl_vertices", static_cast<double>(g.size()));

@@ -9,6 +9,8 @@
 
 namespace hoct {
 
-TreeResult pl_contour_tree(const PlMesh &mesh, bool augmented, const std::string &method);
+// With `with_graph`, the mesh's 1-skeleton is kept as the result's geometric graph (to draw arcs).
+TreeResult pl_contour_tree(const PlMesh &mesh, bool augmented, const std::string &method,
+                           bool with_graph = false);
 
 } // namespace hoct

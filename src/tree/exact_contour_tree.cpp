@@ -96,6 +96,11 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
   // Pass 2: local connections of every non-degenerate cell, in node references.
   std::vector<std::pair<int64_t, int64_t>> join_edges, split_edges;
   std::vector<std::vector<std::pair<int64_t, int64_t>>> cell_join(nc), cell_split(nc);
+  std::vector<std::vector<std::vector<Vec2>>> cell_join_paths, cell_split_paths;
+  if (opt.arc_geometry) {
+    cell_join_paths.resize(nc);
+    cell_split_paths.resize(nc);
+  }
   auto connect_cell = [&](int64_t c, CellNodes &cn, std::vector<int> &interior_idx,
                           std::vector<CellEdgeNode> &cell_edge_nodes, PathCounters &counters) {
     const BernsteinTriangle g = field.cell_polynomial(c);
@@ -132,12 +137,17 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
       interior_idx.push_back(static_cast<int>(cn.nodes.size()));
       cn.nodes.push_back({interior[c][i].uv, interior[c][i].value, -1 - static_cast<int64_t>(i)});
     }
-    const SectorResult r = connect_sectors(g, cn, interior_idx, cell_edge_nodes, counters);
+    const SectorResult r =
+        connect_sectors(g, cn, interior_idx, cell_edge_nodes, counters, opt.arc_geometry);
     if (r.failed || r.degenerate) {
       fallback[c] = r.failed ? kCertificationFailed : kDegenerateEdgeNode;
       return;
     }
     cell_join[c] = r.join;
+    if (opt.arc_geometry) {
+      cell_join_paths[c] = r.join_paths;
+      cell_split_paths[c] = r.split_paths;
+    }
     cell_split[c] = r.split;
   };
   std::vector<PathCounters> thread_counters(threads);
@@ -161,6 +171,13 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
   }
   const auto t3 = clock_type::now();
   report("certified connections", t2, t3);
+
+  // Graph edges with their geometry (interior polyline points), when asked for.
+  struct GeoEdge {
+    int64_t a, b;
+    std::vector<Vec3> inner;
+  };
+  std::vector<GeoEdge> geo_edges;
 
   // Global ids: vertices, edge nodes, then the interior nodes of regular cells, then extra
   // lattice nodes on edges of fallback cells, then fallback cells' interior sub-vertices.
@@ -204,6 +221,17 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
       join_edges.emplace_back(resolve(a), resolve(b));
     for (auto [a, b] : cell_split[c])
       split_edges.emplace_back(resolve(a), resolve(b));
+    if (opt.arc_geometry)
+      for (int side = 0; side < 2; ++side) {
+        const auto &edges = side == 0 ? cell_join[c] : cell_split[c];
+        const auto &paths = side == 0 ? cell_join_paths[c] : cell_split_paths[c];
+        for (std::size_t i = 0; i < edges.size(); ++i) {
+          std::vector<Vec3> inner;
+          for (std::size_t k = 1; k + 1 < paths[i].size(); ++k)
+            inner.push_back(mesh.geometry.position(c, paths[i][k][0], paths[i][k][1]));
+          geo_edges.push_back({resolve(edges[i].first), resolve(edges[i].second), inner});
+        }
+      }
   }
 
   // Fallback cells: k x k refinement through the edge nodes, PL rule (all sub-edges in both
@@ -286,6 +314,8 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
     for (const auto &t : cr.triangles)
       for (int j = 0; j < 3; ++j) {
         join_edges.emplace_back(ids[t[j]], ids[t[(j + 1) % 3]]);
+        if (opt.arc_geometry)
+          geo_edges.push_back({ids[t[j]], ids[t[(j + 1) % 3]], {}});
         split_edges.emplace_back(ids[t[j]], ids[t[(j + 1) % 3]]);
       }
   }
@@ -306,7 +336,22 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
         chain.insert(chain.end(), it->second.begin(), it->second.end());
       chain.push_back({1.0, topo.edge_vertices(e)[1]});
       std::sort(chain.begin(), chain.end());
+      // Positions along the edge through its first cell (for the geometry of the chain pieces).
+      const int64_t ec = topo.edge_cells_begin(e)[0];
+      int ek = 0;
+      while (topo.cell_edge(ec, ek) != e)
+        ++ek;
+      const bool erev = topo.edge_reversed(ec, ek);
       for (std::size_t i = 0; i + 1 < chain.size(); ++i) {
+        if (opt.arc_geometry) {
+          std::vector<Vec3> inner;
+          for (int j = 1; j < 4; ++j) {
+            const double t = chain[i].first + (chain[i + 1].first - chain[i].first) * j / 4;
+            const Vec2 uv = point_on_edge(ek, erev ? 1 - t : t);
+            inner.push_back(mesh.geometry.position(ec, uv[0], uv[1]));
+          }
+          geo_edges.push_back({chain[i].second, chain[i + 1].second, std::move(inner)});
+        }
         join_edges.emplace_back(chain[i].second, chain[i + 1].second);
         split_edges.emplace_back(chain[i].second, chain[i + 1].second);
       }
@@ -339,12 +384,23 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
     n.uv = source[id].uv;
     n.location = source[id].location;
     n.fallback = source[id].fallback;
+    n.graph_node = id;
     n.position = mesh.geometry.position(n.cell, n.uv[0], n.uv[1]);
     n.up = deg[i][0];
     n.down = deg[i][1];
   }
   r.arcs = ct.arcs;
   r.pairs = tree_pairs(ct);
+  if (opt.arc_geometry) {
+    std::vector<Vec3> positions(values.size());
+    for (std::size_t v = 0; v < values.size(); ++v)
+      positions[v] = mesh.geometry.position(source[v].cell, source[v].uv[0], source[v].uv[1]);
+    auto graph = std::make_shared<GeometricGraph>(std::move(positions), values);
+    for (const auto &e : geo_edges)
+      graph->add_edge(e.a, e.b, e.inner);
+    graph->finish();
+    r.graph = std::move(graph);
+  }
   const auto t7 = clock_type::now();
 
   int64_t interior_nodes = 0;

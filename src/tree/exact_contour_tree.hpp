@@ -20,6 +20,9 @@ struct ExactTreeOptions {
   int fallback_refinement = 0;
   // Threads for the cell phase (0: all hardware threads). The result does not depend on it.
   int threads = 1;
+  // Keep the graph with the geometry of every connection (certified paths, edge pieces), so
+  // that arcs can be drawn on the surface (compute_arc_paths). Costs memory; off by default.
+  bool arc_geometry = false;
   // Called after each phase with its name and duration (seconds), e.g. for progress output.
   std::function<void(const std::string &, double)> progress;
 };

@@ -85,6 +85,7 @@ TreeResult contract_flat(const TreeResult &t) {
   r.arcs = ct.arcs;
   r.pairs = tree_pairs(ct);
   r.stats = t.stats;
+  r.graph = t.graph;
   r.add_stat("flat_nodes_merged", static_cast<double>(t.nodes.size() - r.nodes.size()));
   decompose_branches(r);
   return r;
@@ -105,10 +106,24 @@ TreeResult simplify_tree(const TreeResult &t, double threshold) {
   r.arcs = s.tree.arcs;
   r.pairs = tree_pairs(s.tree);
   r.stats = t.stats;
+  r.graph = t.graph;
   r.add_stat("nodes_before_simplification", static_cast<double>(t.nodes.size()));
   r.add_stat("simplification_threshold", threshold);
   decompose_branches(r);
   return r;
+}
+
+void compute_arc_paths(TreeResult &t) {
+  t.arc_paths.clear();
+  if (!t.graph)
+    return;
+  for (const auto &a : t.arcs) {
+    const int64_t x = t.nodes[a[0]].graph_node, y = t.nodes[a[1]].graph_node;
+    if (x < 0 || y < 0)
+      t.arc_paths.push_back({t.nodes[a[0]].position, t.nodes[a[1]].position});
+    else
+      t.arc_paths.push_back(t.graph->path(x, y));
+  }
 }
 
 NodeLocation classify_location(double u, double v) {

@@ -6,11 +6,13 @@
 
 #include "mesh/mesh_input.hpp"
 #include "tree/contour_tree.hpp"
+#include "tree/geometric_graph.hpp"
 #include "tree/persistence.hpp"
 #include "tree/simplification.hpp"
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -31,6 +33,7 @@ struct TreeNode {
   // The node lies in (or on the boundary of) a degenerate cell that fell back to the PL rule:
   // its value is exact, its type is that of the refinement.
   bool fallback = false;
+  int64_t graph_node = -1; // the node of TreeResult::graph it stands for (if any)
 };
 
 struct TreeResult {
@@ -41,6 +44,10 @@ struct TreeResult {
   std::vector<PersistencePair> pairs;       // birth/death are indices into nodes
   std::vector<Branch> branches;             // branch decomposition (indices into nodes)
   std::vector<std::pair<std::string, double>> stats;
+  // The graph the tree came from, with geometry (optional), and each arc drawn on the surface
+  // (compute_arc_paths; empty = straight arcs).
+  std::shared_ptr<const GeometricGraph> graph;
+  std::vector<std::vector<Vec3>> arc_paths;
 
   void add_stat(const std::string &name, double value) { stats.emplace_back(name, value); }
   // Counts of nodes by type: minimum, maximum, saddle, regular.
@@ -59,6 +66,9 @@ TreeResult simplify_tree(const TreeResult &tree, double threshold);
 // (tree/flat_regions.hpp), recomputes pairs and
 // branches, and records "flat_nodes_merged" in the statistics.
 TreeResult contract_flat(const TreeResult &tree);
+
+// Draws every arc on the surface through the tree's graph (needs tree.graph).
+void compute_arc_paths(TreeResult &tree);
 
 // Fills tree.branches with the branch decomposition of the (reduced) tree.
 void decompose_branches(TreeResult &tree);

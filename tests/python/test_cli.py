@@ -33,8 +33,8 @@ with tempdir() as tmp:
     reader.SetFileName(p("t.vtp"))
     reader.Update()
     poly = reader.GetOutput()
-    R.check(poly.GetNumberOfPoints() == len(t["nodes"]) and poly.GetNumberOfLines() == len(t["arcs"]),
-            f"vtp: {poly.GetNumberOfPoints()} points, {poly.GetNumberOfLines()} lines")
+    R.check(poly.GetNumberOfVerts() == len(t["nodes"]) and poly.GetNumberOfLines() == len(t["arcs"]),
+            f"vtp: {poly.GetNumberOfVerts()} vertices, {poly.GetNumberOfLines()} lines")
     values = poly.GetPointData().GetArray("value")
     R.check(values is not None and abs(values.GetValue(0) - t["nodes"][0]["value"]) < 1e-15, "vtp values")
     R.check(poly.GetPointData().GetArray("type") is not None and
@@ -92,6 +92,35 @@ with tempdir() as tmp:
     R.check(len(csv_lines) == 5 and csv_lines[0].startswith("method,k,triangles"), "study csv")
     ET.parse(p("st.svg"))
     R.check("PL k=16" in out, "study table printed")
+
+    # Arcs drawn on the surface: polylines from node to node, on the sphere.
+    for args in ([], ["--refine", "4"]):
+        run("tree", p("sphere.vtu"), "--vtp", p("arcs.vtp"), "--json", p("arcs.json"), "-q", *args)
+        tj = json.load(open(p("arcs.json")))
+        rd = vtk.vtkXMLPolyDataReader()
+        rd.SetFileName(p("arcs.vtp"))
+        rd.Update()
+        pd = rd.GetOutput()
+        R.check(pd.GetNumberOfLines() == len(tj["arcs"]), f"arcs {pd.GetNumberOfLines()} {args}")
+        lines = pd.GetLines()
+        lines.InitTraversal()
+        ids = vtk.vtkIdList()
+        ok_ends, curved, on_sphere, k = True, 0, True, 0
+        while lines.GetNextCell(ids):
+            a, b = tj["arcs"][k]
+            first = pd.GetPoint(ids.GetId(0))
+            last = pd.GetPoint(ids.GetId(ids.GetNumberOfIds() - 1))
+            ok_ends = ok_ends and max(abs(first[i] - tj["nodes"][a]["position"][i]) for i in range(3)) < 1e-12
+            ok_ends = ok_ends and max(abs(last[i] - tj["nodes"][b]["position"][i]) for i in range(3)) < 1e-12
+            curved += ids.GetNumberOfIds() > 2
+            for j in range(ids.GetNumberOfIds()):
+                q = pd.GetPoint(ids.GetId(j))
+                on_sphere = on_sphere and abs((q[0] ** 2 + q[1] ** 2 + q[2] ** 2) ** 0.5 - 1) < 1e-3
+            k += 1
+        R.check(ok_ends, f"arc polylines start and end at their nodes {args}")
+        R.check(curved > len(tj["arcs"]) // 2, f"only {curved} of {len(tj['arcs'])} arcs are polylines {args}")
+        R.check(on_sphere, f"arc polylines leave the surface {args}")
+        R.check(pd.GetPointData().GetArray("value") is not None, "vtp value array")
 
     # PL trees and the comparison.
     run("tree", p("g.vtu"), "--refine", "8", "--json", p("pl.json"), "-q")

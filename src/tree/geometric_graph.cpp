@@ -1,0 +1,92 @@
+#include "tree/geometric_graph.hpp"
+
+#include <algorithm>
+#include <numeric>
+
+namespace hoct {
+
+void GeometricGraph::add_edge(int64_t a, int64_t b, const std::vector<Vec3> &interior) {
+  if (a == b)
+    return;
+  ends_.push_back({a, b});
+  points_.insert(points_.end(), interior.begin(), interior.end());
+  point_offset_.push_back(static_cast<int64_t>(points_.size()));
+}
+
+void GeometricGraph::finish() {
+  const int64_t n = size();
+  offset_.assign(n + 1, 0);
+  for (const auto &e : ends_) {
+    ++offset_[e[0] + 1];
+    ++offset_[e[1] + 1];
+  }
+  std::partial_sum(offset_.begin(), offset_.end(), offset_.begin());
+  adj_.resize(offset_[n]);
+  adj_edge_.resize(offset_[n]);
+  std::vector<int64_t> fill(offset_.begin(), offset_.end() - 1);
+  for (std::size_t i = 0; i < ends_.size(); ++i) {
+    const auto &e = ends_[i];
+    adj_[fill[e[0]]] = e[1];
+    adj_edge_[fill[e[0]]++] = static_cast<int64_t>(i);
+    adj_[fill[e[1]]] = e[0];
+    adj_edge_[fill[e[1]]++] = static_cast<int64_t>(i);
+  }
+}
+
+std::vector<Vec3> GeometricGraph::path(int64_t a, int64_t b, int64_t max_visits) const {
+  const double lo = std::min(value_[a], value_[b]), hi = std::max(value_[a], value_[b]);
+  // Breadth-first search; a node's mark is its generation, `from` the edge it was reached by.
+  if (stamp_.size() != position_.size()) {
+    stamp_.assign(position_.size(), 0);
+    from_.assign(position_.size(), -1);
+  }
+  const uint32_t gen = ++generation_;
+  std::vector<int64_t> queue = {a};
+  stamp_[a] = gen;
+  from_[a] = -1;
+  bool found = a == b;
+  for (std::size_t q = 0; q < queue.size() && !found; ++q) {
+    if (static_cast<int64_t>(q) > max_visits)
+      break;
+    const int64_t v = queue[q];
+    for (int64_t k = offset_[v]; k < offset_[v + 1]; ++k) {
+      const int64_t w = adj_[k];
+      if (stamp_[w] == gen || value_[w] < lo || value_[w] > hi)
+        continue;
+      stamp_[w] = gen;
+      from_[w] = adj_edge_[k];
+      if (w == b) {
+        found = true;
+        break;
+      }
+      queue.push_back(w);
+    }
+  }
+  std::vector<Vec3> out;
+  if (!found) {
+    out = {position_[a], position_[b]};
+    return out;
+  }
+  // Walk back from b, then reverse.
+  int64_t v = b;
+  out.push_back(position_[b]);
+  while (v != a) {
+    const int64_t e = from_[v];
+    const auto &ends = ends_[e];
+    const bool forward = ends[1] == v; // the edge runs ends[0] -> ends[1] = v
+    const int64_t u = forward ? ends[0] : ends[1];
+    // Interior points from v back to u.
+    if (forward)
+      for (int64_t i = point_offset_[e + 1] - 1; i >= point_offset_[e]; --i)
+        out.push_back(points_[i]);
+    else
+      for (int64_t i = point_offset_[e]; i < point_offset_[e + 1]; ++i)
+        out.push_back(points_[i]);
+    out.push_back(position_[u]);
+    v = u;
+  }
+  std::reverse(out.begin(), out.end());
+  return out;
+}
+
+} // namespace hoct

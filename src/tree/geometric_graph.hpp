@@ -1,0 +1,47 @@
+// The graph a tree was computed from, with geometry: node positions and values, and for each
+// edge the polyline it stands for on the surface (a certified monotone path inside a cell, a
+// piece of a mesh edge, or a straight sub-triangle edge). Used to draw the contour tree's arcs on
+// the surface: each arc becomes the polyline of a path between its two nodes through graph nodes
+// whose values lie between theirs.
+#pragma once
+
+#include "mesh/mesh_input.hpp"
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace hoct {
+
+class GeometricGraph {
+public:
+  GeometricGraph() = default;
+  GeometricGraph(std::vector<Vec3> positions, std::vector<double> values)
+      : position_(std::move(positions)), value_(std::move(values)) {}
+
+  // An edge from a to b; `interior` are the polyline's points strictly between them, from a to b.
+  void add_edge(int64_t a, int64_t b, const std::vector<Vec3> &interior = {});
+  // Builds the adjacency; call once after the last add_edge.
+  void finish();
+
+  int64_t size() const { return static_cast<int64_t>(position_.size()); }
+  const Vec3 &position(int64_t v) const { return position_[v]; }
+
+  // The polyline from a to b through a path of nodes with values within [min, max] of the two
+  // ends' values (breadth-first, at most `max_visits` nodes); just {a, b} if there is none.
+  std::vector<Vec3> path(int64_t a, int64_t b, int64_t max_visits = 2000000) const;
+
+private:
+  std::vector<Vec3> position_;
+  std::vector<double> value_;
+  std::vector<std::array<int64_t, 2>> ends_;
+  std::vector<int64_t> point_offset_{0};
+  std::vector<Vec3> points_;
+  std::vector<int64_t> offset_, adj_, adj_edge_;
+  // Scratch of path() (one search at a time).
+  mutable std::vector<uint32_t> stamp_;
+  mutable std::vector<int64_t> from_;
+  mutable uint32_t generation_ = 0;
+};
+
+} // namespace hoct
