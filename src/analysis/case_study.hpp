@@ -2,7 +2,8 @@
 // refinements of the same field. Per refinement level: critical points by type, the bottleneck
 // distance between the diagrams, how far each exact critical point is from the nearest PL
 // critical point of the same type, the features (extrema with persistence above a threshold)
-// the PL tree misses or invents, and the time.
+// the PL tree misses or invents, and the time. Flat regions are contracted in every tree (one
+// node per plateau), as `hoct tree` reports them.
 #pragma once
 
 #include "mesh/mesh.hpp"

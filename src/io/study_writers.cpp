@@ -114,12 +114,13 @@ void write_study_svg(const std::string &path, const std::vector<StudyRow> &rows,
   for (double e = ly0; e <= ly1; ++e)
     s << "<text x=\"" << left - 6 << "\" y=\"" << YE(std::pow(10, e)) + 4
       << "\" text-anchor=\"end\">1e" << e << "</text>\n";
-  frame(top2, "features missed (red) and spurious (orange)");
+  frame(top2, "features missed (red, solid) and spurious (orange, dashed)");
   for (int k = 0; k <= 4; ++k)
     s << "<text x=\"" << left - 6 << "\" y=\"" << YF(fmax * k / 4) + 4 << "\" text-anchor=\"end\">"
       << num(fmax * k / 4) << "</text>\n";
-  auto series = [&](auto value, auto Y, const char *colour) {
-    s << "<polyline fill=\"none\" stroke=\"" << colour << "\" stroke-width=\"2\" points=\"";
+  auto series = [&](auto value, auto Y, const char *colour, const char *dash = "none") {
+    s << "<polyline fill=\"none\" stroke=\"" << colour
+      << "\" stroke-width=\"2\" stroke-dasharray=\"" << dash << "\" points=\"";
     for (const auto *r : pl)
       s << X(static_cast<double>(r->triangles)) << ',' << Y(value(*r)) << ' ';
     s << "\"/>\n";
@@ -137,7 +138,7 @@ void write_study_svg(const std::string &path, const std::vector<StudyRow> &rows,
   series([](const StudyRow &r) { return r.bottleneck; }, YE, "#1f77b4");
   std::swap(pl, positive);
   series([](const StudyRow &r) { return static_cast<double>(r.missed); }, YF, "#d62728");
-  series([](const StudyRow &r) { return static_cast<double>(r.spurious); }, YF, "#ff7f0e");
+  series([](const StudyRow &r) { return static_cast<double>(r.spurious); }, YF, "#ff7f0e", "6,4");
   if (!rows.empty()) {
     const double x = X(static_cast<double>(rows[0].triangles));
     s << "<line x1=\"" << x << "\" y1=\"" << top << "\" x2=\"" << x << "\" y2=\"" << top2 + panel
