@@ -20,7 +20,11 @@ void print_tree_summary(const std::string &file, const Mesh &mesh, const TreeRes
               static_cast<long long>(counts[2]));
   if (tree.augmented)
     std::printf(", regular %lld", static_cast<long long>(counts[3]));
-  std::printf("), arcs: %zu\n", tree.arcs.size());
+  std::printf("), arcs: %zu", tree.arcs.size());
+  for (const auto &[k, v] : tree.stats)
+    if (k == "nodes_before_simplification")
+      std::printf(", %.0f nodes before simplification", v);
+  std::printf("\n");
   std::printf("  where:");
   for (const auto &[k, v] : loc)
     std::printf(" %s %lld", k.c_str(), static_cast<long long>(v));

@@ -59,7 +59,10 @@ void render_field(const std::string &path, const Mesh &mesh, const std::vector<T
   // Sub-triangles, at most ~2M in all.
   int k = o.subdivision;
   if (k <= 0) {
-    k = std::clamp(2 * field.max_degree(), 2, 12);
+    // Sub-triangles of a few pixels: about 2e5 in all, at least 2 per degree per edge.
+    const int fine =
+        static_cast<int>(std::sqrt(2e5 / std::max<double>(1, static_cast<double>(nc))));
+    k = std::clamp(std::max(2 * field.max_degree(), fine), 2, 64);
     while (k > 1 && static_cast<double>(nc) * k * k > 2e6)
       --k;
   }
