@@ -1,0 +1,70 @@
+"""hoct: exact contour trees of piecewise-polynomial (higher-order finite-element) fields.
+
+    import hoct
+    mesh = hoct.read("field.vtu")                 # or hoct.from_arrays / hoct.from_meshio
+    tree = hoct.contour_tree(mesh, simplify="0.5%")
+    tree.positions, tree.values, tree.types, tree.arcs, tree.pairs, tree.branches
+    tree.to_networkx()
+
+The same library computes what the `hoct` command line prints: the results are identical.
+"""
+from . import _hoct
+from ._hoct import HoctError, Mesh, Tree
+
+__all__ = ["read", "from_arrays", "from_meshio", "contour_tree", "Mesh", "Tree", "HoctError"]
+
+
+def read(path, scalar=None):
+    """Read a .vtu or .msh file; `scalar` names the point-data array (default: the first)."""
+    return _hoct.read(str(path), scalar or "")
+
+
+def from_arrays(points, cells, values):
+    """A mesh from numpy arrays: points (n, 2|3), cells (cells, nodes) of complete Lagrange
+    triangles in VTK node order (3, 6, 10, 15, ... nodes per cell), values (n,)."""
+    return _hoct.from_arrays(points, cells, values)
+
+
+def from_meshio(mesh, scalar=None):
+    """A mesh from a meshio.Mesh (its triangle blocks, VTK node order; point data `scalar` or the
+    first)."""
+    import numpy as np
+
+    blocks = [b for b in mesh.cells if b.type.startswith("triangle")]
+    if len(blocks) != 1:
+        raise HoctError("from_meshio: expected exactly one block of triangles, got %d" % len(blocks))
+    name = scalar or next(iter(mesh.point_data))
+    return _hoct.from_arrays(np.asarray(mesh.points, dtype=float), np.asarray(blocks[0].data),
+                             np.asarray(mesh.point_data[name], dtype=float))
+
+
+def _threshold(spec, tree):
+    if isinstance(spec, str) and spec.endswith("%"):
+        values = tree.values
+        return float(spec[:-1]) / 100.0 * (values.max() - values.min())
+    return float(spec)
+
+
+def contour_tree(mesh, simplify=None, threads=None, method="exact", refine=4, keep_flat=False):
+    """The contour tree of `mesh`: method "exact" (default), "linear" (PL of the Lagrange nodes)
+    or "refine" (PL of the exact k x k refinement, k = `refine`). `simplify` removes leaf
+    branches below a persistence threshold (a number, or a percentage like "0.5%")."""
+    tree = _hoct.contour_tree(mesh, method, int(refine), int(threads or 0), bool(keep_flat))
+    if simplify is not None:
+        tree = tree.simplify(_threshold(simplify, tree))
+    return tree
+
+
+def _to_networkx(tree):
+    """The tree as a networkx.Graph with node attributes type, value, position, location."""
+    import networkx as nx
+
+    g = nx.Graph()
+    for i, (t, v, p, loc) in enumerate(zip(tree.types, tree.values, tree.positions, tree.locations)):
+        g.add_node(i, type=t, value=float(v), position=tuple(map(float, p)), location=loc)
+    g.add_edges_from(map(tuple, tree.arcs.tolist()))
+    return g
+
+
+Tree.to_networkx = _to_networkx
+Tree.simplify_by = lambda self, spec: self.simplify(_threshold(spec, self))

@@ -1,0 +1,274 @@
+// Python bindings (pybind11): a thin layer over the library, exposing meshes and trees as
+// numpy arrays. The Python package `hoct` (python/hoct/__init__.py) adds the conveniences.
+#include "error.hpp"
+#include "io/read_mesh.hpp"
+#include "io/tree_json.hpp"
+#include "mesh/mesh.hpp"
+#include "pl/pl_contour_tree.hpp"
+#include "pl/refinement.hpp"
+#include "poly/lagrange_node_order.hpp"
+#include "tree/exact_contour_tree.hpp"
+#include "tree/merge_tree.hpp"
+#include "tree/tree_result.hpp"
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <memory>
+
+namespace py = pybind11;
+using namespace hoct;
+
+namespace {
+
+struct PyMesh {
+  MeshInput input;
+  std::shared_ptr<Mesh> mesh;
+};
+
+struct PyTree {
+  TreeResult tree;
+};
+
+template <class T> py::array_t<T> array_1d(const std::vector<T> &v) {
+  py::array_t<T> a(static_cast<py::ssize_t>(v.size()));
+  std::copy(v.begin(), v.end(), a.mutable_data());
+  return a;
+}
+
+PyMesh make_mesh(MeshInput in) {
+  PyMesh m;
+  m.input = std::move(in);
+  m.mesh = std::make_shared<Mesh>(build_mesh(m.input));
+  return m;
+}
+
+PyMesh from_arrays(py::array_t<double, py::array::c_style | py::array::forcecast> points,
+                   py::array_t<int64_t, py::array::c_style | py::array::forcecast> cells,
+                   py::array_t<double, py::array::c_style | py::array::forcecast> values) {
+  if (points.ndim() != 2 || (points.shape(1) != 2 && points.shape(1) != 3))
+    throw Error("from_arrays: points must have shape (n, 2) or (n, 3)");
+  if (cells.ndim() != 2)
+    throw Error("from_arrays: cells must have shape (cells, nodes per cell), nodes in VTK order");
+  if (values.ndim() != 1 || values.shape(0) != points.shape(0))
+    throw Error("from_arrays: values must have one entry per point");
+  const int degree = degree_from_node_count(cells.shape(1));
+  if (degree < 1)
+    throw Error("from_arrays: " + std::to_string(cells.shape(1)) +
+                " nodes per cell is not a complete triangle (3, 6, 10, 15, ...)");
+  MeshInput in;
+  const auto p = points.unchecked<2>();
+  for (py::ssize_t i = 0; i < points.shape(0); ++i)
+    in.points.push_back({p(i, 0), p(i, 1), points.shape(1) == 3 ? p(i, 2) : 0.0});
+  in.values.assign(values.data(), values.data() + values.shape(0));
+  const auto &perm = node_order_to_lattice(NodeOrdering::Vtk, degree);
+  const auto c = cells.unchecked<2>();
+  std::vector<int64_t> nodes(perm.size());
+  for (py::ssize_t k = 0; k < cells.shape(0); ++k) {
+    for (std::size_t i = 0; i < perm.size(); ++i) {
+      const int64_t id = c(k, static_cast<py::ssize_t>(i));
+      if (id < 0 || id >= points.shape(0))
+        throw Error("from_arrays: cell " + std::to_string(k) + " refers to point " +
+                    std::to_string(id) + ", but there are " + std::to_string(points.shape(0)));
+      nodes[perm[i]] = id;
+    }
+    in.add_cell(degree, nodes.data());
+  }
+  in.source = "arrays";
+  in.field_name = "f";
+  return make_mesh(std::move(in));
+}
+
+PyTree compute_tree(const PyMesh &m, const std::string &method, int levels, int threads,
+                    bool keep_flat) {
+  PyTree t;
+  if (method == "exact") {
+    ExactTreeOptions o;
+    o.threads = threads;
+    o.arc_geometry = true;
+    t.tree = exact_contour_tree(*m.mesh, o);
+  } else if (method == "linear") {
+    t.tree = pl_contour_tree(split_lagrange_cells(m.input), false, "linear", true);
+  } else if (method == "refine") {
+    t.tree = pl_contour_tree(hoct::refine(*m.mesh, levels), false,
+                             "refine k=" + std::to_string(levels), true);
+  } else {
+    throw Error("contour_tree: method must be 'exact', 'linear' or 'refine'");
+  }
+  if (!keep_flat)
+    t.tree = contract_flat(t.tree);
+  else
+    decompose_branches(t.tree);
+  return t;
+}
+
+py::dict merge_tree_dict(const PyTree &t, bool join) {
+  // The join (split) tree of the contour tree's nodes: parent of each node (-1 at the root).
+  std::vector<std::pair<int64_t, int64_t>> edges;
+  std::vector<double> values;
+  for (const auto &n : t.tree.nodes)
+    values.push_back(n.value);
+  for (const auto &a : t.tree.arcs)
+    edges.emplace_back(a[0], a[1]);
+  const ScalarGraph g(values, edges);
+  const MergeTree mt = join ? join_tree(g) : split_tree(g);
+  py::dict d;
+  d["parent"] = array_1d(mt.parent);
+  return d;
+}
+
+} // namespace
+
+PYBIND11_MODULE(_hoct, m) {
+  m.doc() = "hoct: exact contour trees of piecewise-polynomial fields (native part)";
+  py::register_exception<Error>(m, "HoctError", PyExc_ValueError);
+
+  py::class_<PyMesh>(m, "Mesh")
+      .def_property_readonly("num_cells",
+                             [](const PyMesh &x) { return x.mesh->topology.num_cells(); })
+      .def_property_readonly("num_points", [](const PyMesh &x) { return x.mesh->num_points; })
+      .def_property_readonly(
+          "euler_characteristic",
+          [](const PyMesh &x) { return x.mesh->topology.euler_characteristic(); })
+      .def_property_readonly("boundary_loops",
+                             [](const PyMesh &x) { return x.mesh->topology.boundary_loops(); })
+      .def_property_readonly("value_range",
+                             [](const PyMesh &x) {
+                               return std::make_pair(x.mesh->field.min_value(),
+                                                     x.mesh->field.max_value());
+                             })
+      .def_property_readonly("degrees",
+                             [](const PyMesh &x) {
+                               std::vector<int> d(x.input.cell_degree.begin(),
+                                                  x.input.cell_degree.end());
+                               return array_1d(d);
+                             })
+      .def_property_readonly("source", [](const PyMesh &x) { return x.mesh->source; })
+      .def_property_readonly("field_name", [](const PyMesh &x) { return x.mesh->field_name; })
+      .def("value", [](const PyMesh &x, int64_t cell, double u, double v) {
+        if (cell < 0 || cell >= x.mesh->topology.num_cells())
+          throw Error("value: cell out of range");
+        return x.mesh->field.value(cell, u, v);
+      });
+
+  py::class_<PyTree>(m, "Tree")
+      .def_property_readonly("method", [](const PyTree &t) { return t.tree.method; })
+      .def_property_readonly(
+          "positions",
+          [](const PyTree &t) {
+            py::array_t<double> a({static_cast<py::ssize_t>(t.tree.nodes.size()), py::ssize_t{3}});
+            auto w = a.mutable_unchecked<2>();
+            for (std::size_t i = 0; i < t.tree.nodes.size(); ++i)
+              for (int k = 0; k < 3; ++k)
+                w(static_cast<py::ssize_t>(i), k) = t.tree.nodes[i].position[k];
+            return a;
+          })
+      .def_property_readonly("values",
+                             [](const PyTree &t) {
+                               std::vector<double> v;
+                               for (const auto &n : t.tree.nodes)
+                                 v.push_back(n.value);
+                               return array_1d(v);
+                             })
+      .def_property_readonly("types",
+                             [](const PyTree &t) {
+                               std::vector<std::string> v;
+                               for (const auto &n : t.tree.nodes)
+                                 v.push_back(to_string(n.type));
+                               return v;
+                             })
+      .def_property_readonly("locations",
+                             [](const PyTree &t) {
+                               std::vector<std::string> v;
+                               for (const auto &n : t.tree.nodes)
+                                 v.push_back(to_string(n.location));
+                               return v;
+                             })
+      .def_property_readonly("cells",
+                             [](const PyTree &t) {
+                               std::vector<int64_t> v;
+                               for (const auto &n : t.tree.nodes)
+                                 v.push_back(n.cell);
+                               return array_1d(v);
+                             })
+      .def_property_readonly(
+          "arcs",
+          [](const PyTree &t) {
+            py::array_t<int64_t> a({static_cast<py::ssize_t>(t.tree.arcs.size()), py::ssize_t{2}});
+            auto w = a.mutable_unchecked<2>();
+            for (std::size_t i = 0; i < t.tree.arcs.size(); ++i) {
+              w(static_cast<py::ssize_t>(i), 0) = t.tree.arcs[i][0];
+              w(static_cast<py::ssize_t>(i), 1) = t.tree.arcs[i][1];
+            }
+            return a;
+          })
+      .def_property_readonly("pairs",
+                             [](const PyTree &t) {
+                               py::dict d;
+                               std::vector<int64_t> b, e;
+                               std::vector<double> p;
+                               std::vector<std::string> k;
+                               for (const auto &x : t.tree.pairs) {
+                                 b.push_back(x.birth);
+                                 e.push_back(x.death);
+                                 p.push_back(x.persistence());
+                                 k.push_back(to_string(x.kind));
+                               }
+                               d["birth"] = array_1d(b);
+                               d["death"] = array_1d(e);
+                               d["persistence"] = array_1d(p);
+                               d["kind"] = k;
+                               return d;
+                             })
+      .def_property_readonly("branches",
+                             [](const PyTree &t) {
+                               py::dict d;
+                               std::vector<int64_t> ex, sa, pa;
+                               std::vector<double> pe;
+                               std::vector<int> de;
+                               for (const auto &b : t.tree.branches) {
+                                 ex.push_back(b.extremum);
+                                 sa.push_back(b.saddle);
+                                 pa.push_back(b.parent);
+                                 pe.push_back(b.persistence);
+                                 de.push_back(b.depth);
+                               }
+                               d["extremum"] = array_1d(ex);
+                               d["saddle"] = array_1d(sa);
+                               d["persistence"] = array_1d(pe);
+                               d["parent"] = array_1d(pa);
+                               d["depth"] = array_1d(de);
+                               return d;
+                             })
+      .def_property_readonly("stats",
+                             [](const PyTree &t) {
+                               py::dict d;
+                               for (const auto &[k, v] : t.tree.stats)
+                                 d[py::str(k)] = v;
+                               return d;
+                             })
+      .def("simplify",
+           [](const PyTree &t, double threshold) {
+             PyTree r;
+             r.tree = simplify_tree(t.tree, threshold);
+             return r;
+           })
+      .def("arc_paths",
+           [](PyTree &t) {
+             compute_arc_paths(t.tree);
+             std::vector<std::vector<std::array<double, 3>>> out;
+             for (const auto &p : t.tree.arc_paths)
+               out.emplace_back(p.begin(), p.end());
+             return out;
+           })
+      .def("to_json", [](const PyTree &t) { return tree_to_json(t.tree); })
+      .def("join_tree", [](const PyTree &t) { return merge_tree_dict(t, true); })
+      .def("split_tree", [](const PyTree &t) { return merge_tree_dict(t, false); });
+
+  m.def("read", [](const std::string &path, const std::string &scalar) {
+    return make_mesh(read_mesh(path, scalar));
+  });
+  m.def("from_arrays", &from_arrays);
+  m.def("contour_tree", &compute_tree);
+}
