@@ -1,5 +1,6 @@
 // Python bindings (pybind11): a thin layer over the library, exposing meshes and trees as
 // numpy arrays. The Python package `hoct` (python/hoct/__init__.py) adds the conveniences.
+#include "datasets/datasets.hpp"
 #include "error.hpp"
 #include "io/read_mesh.hpp"
 #include "io/tree_json.hpp"
@@ -266,9 +267,24 @@ PYBIND11_MODULE(_hoct, m) {
       .def("join_tree", [](const PyTree &t) { return merge_tree_dict(t, true); })
       .def("split_tree", [](const PyTree &t) { return merge_tree_dict(t, false); });
 
-  m.def("read", [](const std::string &path, const std::string &scalar) {
-    return make_mesh(read_mesh(path, scalar));
-  });
+  // The computations release the GIL: other Python threads run meanwhile.
+  m.def(
+      "read",
+      [](const std::string &path, const std::string &scalar) {
+        return make_mesh(read_mesh(path, scalar));
+      },
+      py::call_guard<py::gil_scoped_release>());
   m.def("from_arrays", &from_arrays);
-  m.def("contour_tree", &compute_tree);
+  m.def("contour_tree", &compute_tree, py::call_guard<py::gil_scoped_release>());
+  m.def(
+      "generate",
+      [](const std::string &name, int degree, long long cells, uint64_t seed) {
+        DatasetOptions o;
+        o.degree = degree;
+        o.cells = cells;
+        o.seed = seed;
+        return make_mesh(generate_dataset(name, o));
+      },
+      py::call_guard<py::gil_scoped_release>());
+  m.def("dataset_names", &dataset_names);
 }

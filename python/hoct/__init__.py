@@ -11,7 +11,8 @@ The same library computes what the `hoct` command line prints: the results are i
 from . import _hoct
 from ._hoct import HoctError, Mesh, Tree
 
-__all__ = ["read", "from_arrays", "from_meshio", "contour_tree", "Mesh", "Tree", "HoctError"]
+__all__ = ["read", "from_arrays", "from_meshio", "generate", "contour_tree", "Mesh", "Tree",
+           "HoctError"]
 
 
 def read(path, scalar=None):
@@ -19,10 +20,38 @@ def read(path, scalar=None):
     return _hoct.read(str(path), scalar or "")
 
 
-def from_arrays(points, cells, values):
+_TRIANGLE_TYPES = {5: 1, 22: 2}  # VTK_TRIANGLE, VTK_QUADRATIC_TRIANGLE; 69 = any degree
+
+
+def from_arrays(points, cells, values, degree=None, cell_types=None):
     """A mesh from numpy arrays: points (n, 2|3), cells (cells, nodes) of complete Lagrange
-    triangles in VTK node order (3, 6, 10, 15, ... nodes per cell), values (n,)."""
+    triangles in VTK node order (3, 6, 10, 15, ... nodes per cell), values (n,). `degree`, if
+    given, must match the node count; `cell_types` (VTK codes 5, 22 or 69 per cell), if given,
+    are checked against it."""
+    import numpy as np
+
+    cells = np.asarray(cells)
+    if cells.ndim != 2:
+        raise HoctError("from_arrays: cells must be a 2D array (cells, nodes per cell)")
+    n = cells.shape[1]
+    if degree is not None and (degree + 1) * (degree + 2) // 2 != n:
+        raise HoctError("from_arrays: degree %d needs %d nodes per cell, cells have %d"
+                        % (degree, (degree + 1) * (degree + 2) // 2, n))
+    if cell_types is not None:
+        for i, t in enumerate(np.asarray(cell_types).ravel()):
+            if t not in (5, 22, 69) or (t in _TRIANGLE_TYPES and
+                                        (_TRIANGLE_TYPES[t] + 1) * (_TRIANGLE_TYPES[t] + 2) // 2 != n):
+                raise HoctError("from_arrays: cell %d has VTK type %d, which does not match %d-node "
+                                "triangles" % (i, t, n))
     return _hoct.from_arrays(points, cells, values)
+
+
+def generate(name, degree=0, cells=0, seed=1):
+    """A synthetic dataset (hoct.dataset_names()): the same as `hoct generate`."""
+    return _hoct.generate(name, int(degree), int(cells), int(seed))
+
+
+dataset_names = _hoct.dataset_names
 
 
 def from_meshio(mesh, scalar=None):

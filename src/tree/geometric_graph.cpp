@@ -1,6 +1,7 @@
 #include "tree/geometric_graph.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <numeric>
 
 namespace hoct {
@@ -34,7 +35,17 @@ void GeometricGraph::finish() {
 }
 
 std::vector<Vec3> GeometricGraph::path(int64_t a, int64_t b, int64_t max_visits) const {
-  const double lo = std::min(value_[a], value_[b]), hi = std::max(value_[a], value_[b]);
+  std::vector<Vec3> p =
+      search(a, b, std::min(value_[a], value_[b]), std::max(value_[a], value_[b]), max_visits);
+  // No path within the arc's values (the graph is sparser than the surface): any path on the
+  // surface rather than a chord through it.
+  if (p.size() == 2 && a != b)
+    p = search(a, b, -INFINITY, INFINITY, max_visits);
+  return p;
+}
+
+std::vector<Vec3> GeometricGraph::search(int64_t a, int64_t b, double lo, double hi,
+                                         int64_t max_visits) const {
   // Breadth-first search; a node's mark is its generation, `from` the edge it was reached by.
   if (stamp_.size() != position_.size()) {
     stamp_.assign(position_.size(), 0);

@@ -28,10 +28,13 @@ public:
   const Vec3 &position(int64_t v) const { return position_[v]; }
 
   // The polyline from a to b through a path of nodes with values within [min, max] of the two
-  // ends' values (breadth-first, at most `max_visits` nodes); just {a, b} if there is none.
+  // ends' values (breadth-first, at most `max_visits` nodes); failing that, through any path;
+  // just {a, b} if there is none.
   std::vector<Vec3> path(int64_t a, int64_t b, int64_t max_visits = 2000000) const;
 
 private:
+  std::vector<Vec3> search(int64_t a, int64_t b, double lo, double hi, int64_t max_visits) const;
+
   std::vector<Vec3> position_;
   std::vector<double> value_;
   std::vector<std::array<int64_t, 2>> ends_;

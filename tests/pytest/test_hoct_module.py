@@ -1,0 +1,125 @@
+"""The Python module `hoct` (pytest): the same trees as the command line on every dataset, numpy
+and meshio input, simplification, networkx, join/split trees, arc paths, errors, GIL release."""
+import json
+import os
+import subprocess
+import tempfile
+import threading
+
+import meshio
+import networkx as nx
+import numpy as np
+import pytest
+
+import hoct
+
+HOCT = os.environ.get("HOCT_BIN", "hoct")
+SIZES = {"heater": 1500, "conductor": 1200, "random": 2000}
+
+
+@pytest.fixture(scope="module")
+def tmp():
+    with tempfile.TemporaryDirectory(prefix="hoct-pytest-") as d:
+        yield d
+
+
+def cli_tree(path, *args):
+    out = path + ".json"
+    subprocess.run([HOCT, "tree", path, "--json", out, "-q", *args], check=True)
+    return json.load(open(out))
+
+
+@pytest.mark.parametrize("name", hoct.dataset_names())
+def test_same_tree_as_the_cli(tmp, name):
+    path = os.path.join(tmp, name + ".vtu")
+    cells = SIZES.get(name, 0)
+    subprocess.run([HOCT, "generate", name, "-o", path] + (["--cells", str(cells)] if cells else []),
+                   check=True, capture_output=True)
+    cli = cli_tree(path)
+    tree = hoct.contour_tree(hoct.read(path))
+    assert list(tree.values) == [n["value"] for n in cli["nodes"]]
+    assert tree.types == [n["type"] for n in cli["nodes"]]
+    assert tree.locations == [n["location"] for n in cli["nodes"]]
+    assert tree.arcs.tolist() == cli["arcs"]
+    assert sorted(tree.pairs["persistence"]) == sorted(p["persistence"] for p in cli["pairs"])
+    # hoct.generate builds the same dataset in memory.
+    same = hoct.contour_tree(hoct.generate(name, cells=cells))
+    assert list(same.values) == list(tree.values)
+
+
+def test_tree_api(tmp):
+    mesh = hoct.generate("sphere")
+    assert mesh.num_cells == 980 and mesh.euler_characteristic == 2 and mesh.boundary_loops == 0
+    tree = hoct.contour_tree(mesh)
+    assert json.loads(tree.to_json())["format"] == "hoct-contour-tree"
+    g = tree.to_networkx()
+    assert nx.is_tree(g) and g.number_of_nodes() == len(tree.values)
+    assert g.nodes[0]["type"] == tree.types[0]
+    jp, sp = tree.join_tree()["parent"], tree.split_tree()["parent"]
+    assert (jp < 0).sum() == 1 and (sp < 0).sum() == 1
+    assert all(tree.values[c] <= tree.values[q] for c, q in enumerate(jp) if q >= 0)
+    assert all(tree.values[c] >= tree.values[q] for c, q in enumerate(sp) if q >= 0)
+    s = hoct.contour_tree(mesh, simplify="2%")
+    rng = tree.values.max() - tree.values.min()
+    kept = [x for x in tree.pairs["persistence"] if x >= 0.02 * rng]
+    assert len(s.pairs["persistence"]) == len(kept)
+    assert len(s.branches["parent"]) == len(kept) and s.branches["parent"][0] == -1
+    assert len(tree.simplify(0.02 * rng).values) == len(s.values)
+    paths = tree.arc_paths()
+    assert len(paths) == len(tree.arcs)
+    for path, (a, b) in zip(paths, tree.arcs):
+        assert np.allclose(path[0], tree.positions[a]) and np.allclose(path[-1], tree.positions[b])
+    pl = hoct.contour_tree(mesh, method="refine", refine=4)
+    assert pl.method == "refine k=4"
+
+
+def test_numpy_and_meshio_input(tmp):
+    pts = np.array([[0, 0], [1, 0], [1, 1], [0, 1], [.5, 0], [1, .5], [.5, .5], [.5, 1], [0, .5]], float)
+    cells = np.array([[0, 1, 2, 4, 5, 6], [0, 2, 3, 6, 7, 8]])
+    vals = (pts[:, 0] - 0.4) ** 2 - (pts[:, 1] - 0.6) ** 2
+    m = hoct.from_arrays(pts, cells, vals, degree=2, cell_types=[22, 69])
+    t = hoct.contour_tree(m)
+    assert m.num_cells == 2 and "saddle" in t.types
+    assert abs(m.value(0, 0.5, 0.25) - ((0.75 - 0.4) ** 2 - (0.25 - 0.6) ** 2)) < 1e-12
+    saddles = [i for i, ty in enumerate(t.types) if ty == "saddle"]
+    assert any(np.allclose(t.positions[i][:2], [0.4, 0.6], atol=1e-12) for i in saddles)
+    mm = meshio.Mesh(np.c_[pts, np.zeros(len(pts))], [("triangle6", cells)], point_data={"f": vals})
+    path = os.path.join(tmp, "q.vtu")
+    meshio.write(path, mm)
+    assert list(hoct.contour_tree(hoct.from_meshio(mm)).values) == list(t.values)
+    assert list(hoct.contour_tree(hoct.read(path)).values) == list(t.values)
+
+
+@pytest.mark.parametrize("call,phrase", [
+    (lambda: hoct.read("/nonexistent/x.vtu"), "cannot open"),
+    (lambda: hoct.from_arrays(np.zeros((3, 2)), [[0, 1]], np.zeros(3)), "not a complete triangle"),
+    (lambda: hoct.from_arrays(np.zeros((3, 2)), [[0, 1, 7]], np.zeros(3)), "refers to point 7"),
+    (lambda: hoct.from_arrays(np.zeros((3, 2)), [[0, 1, 2]], np.zeros(3), degree=2), "degree 2 needs 6"),
+    (lambda: hoct.from_arrays(np.zeros((3, 2)), [[0, 1, 2]], np.zeros(3), cell_types=[22]), "VTK type 22"),
+    (lambda: hoct.generate("nope"), "unknown dataset"),
+    (lambda: hoct.contour_tree(hoct.generate("gauss"), method="magic"), "method must be"),
+])
+def test_errors_are_value_errors_with_the_library_message(call, phrase):
+    with pytest.raises(hoct.HoctError, match=phrase) as e:
+        call()
+    assert isinstance(e.value, ValueError)
+
+
+def test_computation_releases_the_gil():
+    mesh = hoct.generate("random", cells=200000)
+    ticks = []
+    stop = threading.Event()
+
+    def ticker():
+        while not stop.is_set():
+            ticks.append(1)
+            stop.wait(0.001)
+
+    th = threading.Thread(target=ticker)
+    th.start()
+    before = len(ticks)
+    hoct.contour_tree(mesh, threads=1)
+    during = len(ticks) - before
+    stop.set()
+    th.join()
+    assert during > 5  # the other thread kept running while the tree was computed
