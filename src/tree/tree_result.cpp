@@ -55,37 +55,40 @@ void decompose_branches(TreeResult &t) {
   t.branches = simplify(as_contour_tree(t), 0).branches;
 }
 
+namespace {
+
+// The result for a tree derived from t's (contracted or simplified): `kept[i]` is the node of t
+// that node i of `tree` stands for; types and degrees follow the new tree.
+TreeResult derived_result(const TreeResult &t, const ContourTree &tree,
+                          const std::vector<int64_t> &kept) {
+  TreeResult r;
+  r.method = t.method;
+  r.augmented = false;
+  const auto deg = tree.degrees();
+  const auto types = tree.types();
+  for (std::size_t i = 0; i < kept.size(); ++i) {
+    TreeNode n = t.nodes[kept[i]];
+    n.up = deg[i][0];
+    n.down = deg[i][1];
+    n.type = types[i];
+    r.nodes.push_back(n);
+  }
+  r.arcs = tree.arcs;
+  r.pairs = tree_pairs(tree);
+  r.stats = t.stats;
+  r.graph = t.graph;
+  return r;
+}
+
+} // namespace
+
 TreeResult contract_flat(const TreeResult &t) {
   // Flat up to the rounding of polynomial evaluation: 1e-12 of the value scale.
   double scale = 0;
   for (const auto &n : t.nodes)
     scale = std::max(scale, std::abs(n.value));
   const FlatContraction f = contract_flat_arcs(as_contour_tree(t), 1e-12 * scale);
-  TreeResult r;
-  r.method = t.method;
-  r.augmented = false;
-  const auto deg = f.tree.degrees();
-  for (std::size_t i = 0; i < f.kept.size(); ++i) {
-    TreeNode n = t.nodes[f.kept[i]];
-    n.up = deg[i][0];
-    n.down = deg[i][1];
-    r.nodes.push_back(n);
-  }
-  const auto types = f.tree.types();
-  for (std::size_t i = 0; i < r.nodes.size(); ++i)
-    r.nodes[i].type = types[i];
-  // Arcs and pairs in the indices of the result.
-  ContourTree ct;
-  for (std::size_t i = 0; i < r.nodes.size(); ++i) {
-    ct.nodes.push_back(static_cast<int64_t>(i));
-    ct.values.push_back(r.nodes[i].value);
-  }
-  for (const auto &a : f.tree.arcs)
-    ct.arcs.push_back({a[0], a[1]});
-  r.arcs = ct.arcs;
-  r.pairs = tree_pairs(ct);
-  r.stats = t.stats;
-  r.graph = t.graph;
+  TreeResult r = derived_result(t, f.tree, f.kept);
   r.add_stat("flat_nodes_merged", static_cast<double>(t.nodes.size() - r.nodes.size()));
   decompose_branches(r);
   return r;
@@ -93,20 +96,7 @@ TreeResult contract_flat(const TreeResult &t) {
 
 TreeResult simplify_tree(const TreeResult &t, double threshold) {
   const Simplification s = simplify(as_contour_tree(t), threshold);
-  TreeResult r;
-  r.method = t.method;
-  r.augmented = false;
-  const auto deg = s.tree.degrees();
-  for (std::size_t i = 0; i < s.kept.size(); ++i) {
-    TreeNode n = t.nodes[s.kept[i]];
-    n.up = deg[i][0];
-    n.down = deg[i][1];
-    r.nodes.push_back(n);
-  }
-  r.arcs = s.tree.arcs;
-  r.pairs = tree_pairs(s.tree);
-  r.stats = t.stats;
-  r.graph = t.graph;
+  TreeResult r = derived_result(t, s.tree, s.kept);
   r.add_stat("nodes_before_simplification", static_cast<double>(t.nodes.size()));
   r.add_stat("simplification_threshold", threshold);
   decompose_branches(r);
