@@ -73,6 +73,8 @@ int run_info(const InfoOptions &o) {
     j["valid"] = ok;
     j["timings"] = {{"read", lm.read_seconds}, {"build", lm.build_seconds}};
     std::cout << j.dump(2) << "\n";
+    if (!ok)
+      std::fprintf(stderr, "hoct: %s: the mesh is not valid (see \"problems\")\n", o.file.c_str());
     return ok ? 0 : 1;
   }
 

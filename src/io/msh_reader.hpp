@@ -1,4 +1,7 @@
-// Reader for Gmsh MSH 4.1 files (ascii and binary) with triangle elements and $NodeData.
+// Reader for Gmsh MSH files (4.1 ascii and binary, 2.2 ascii) with triangle elements and
+// $NodeData. Points and lines are skipped. If several $NodeData share the chosen name, the last
+// time step is used (partitions of one step are merged). Only nodes used by triangles are kept,
+// in file order.
 #pragma once
 
 #include "mesh/mesh_input.hpp"

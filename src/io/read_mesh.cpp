@@ -18,7 +18,7 @@ MeshInput read_mesh(const std::string &path, const std::string &scalar) {
   if (ext == ".msh")
     return read_msh(path, scalar);
   throw InputError(path + ": unknown file type '" + ext +
-                   "' (supported: .vtu VTK XML UnstructuredGrid, .msh Gmsh 4.1)");
+                   "' (supported: .vtu VTK XML UnstructuredGrid, .msh Gmsh 4.1 or 2.2 ascii)");
 }
 
 } // namespace hoct

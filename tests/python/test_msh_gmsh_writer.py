@@ -1,6 +1,18 @@
-"""MSH files written by Gmsh itself (python3-gmsh): MSH 4.1 ascii and binary and MSH 2.2 ascii,
-orders 1 to 8, with $NodeData views. hoct must read the same triangles, and its field must equal
-the analytic polynomial the views hold, at the nodes and inside straight cells."""
+"""MSH files written by Gmsh itself (python3-gmsh) and read by hoct: MSH 4.1 ascii and binary and
+MSH 2.2 ascii, triangles of orders 1 to 10, with $NodeData views appended by gmsh.view.write.
+
+Checked through the hoct CLI (HOCT_BIN), against Gmsh's own data:
+ - the number of triangles and their degree;
+ - node order: for every triangle, at the reference coordinates Gmsh gives its i-th node
+   (getElementProperties), `hoct eval` returns that node's coordinates and value;
+ - on the straight-sided square, at random points of every triangle, the position is the affine
+   map of the triangle's corners and the value is the polynomial the view holds (degree <= order,
+   so the triangle represents it exactly); on the disk, whose boundary triangles are curved, only
+   the nodes are checked;
+ - several views, time steps (the last one is read), parametric nodes (Mesh.SaveParametric);
+ - what hoct must refuse: serendipity triangles, quadrangles, tetrahedra, and every other element
+   type Gmsh defines, with the type and Gmsh's name for it; points and lines are skipped.
+"""
 import json
 import os
 import random
@@ -10,64 +22,301 @@ import gmsh
 from hoct_testing import Results, evaluate, run, tempdir
 
 R = Results()
-rng = random.Random(3)
+rng = random.Random(7)
 
 
-def f(x, y, order):
-    # Degree <= order, so straight cells of that order represent it exactly.
-    return sum((0.5 - 0.1 * k) * x ** k + 0.3 * (x * y) ** (k // 2) - 0.2 * y ** k for k in range(order + 1))
+def poly(order):
+    """A polynomial of total degree `order` in (x, y) with fixed, unequal coefficients."""
+    terms = [(i, j, ((3 * i + 5 * j) % 7 - 3) / 4 + 0.1 * (i + 1))
+             for i in range(order + 1) for j in range(order + 1 - i)]
+    return lambda x, y: sum(c * x ** i * y ** j for i, j, c in terms)
 
 
-def write(path, order, version, binary, two_views):
+def close(a, b, tol=1e-9):
+    return abs(a - b) <= tol * max(1.0, abs(b))
+
+
+GMSH_OPEN = [False]
+
+
+def start(name):
     gmsh.initialize()
+    GMSH_OPEN[0] = True
     gmsh.option.setNumber("General.Terminal", 0)
-    gmsh.model.add("square")
+    gmsh.model.add(name)
+
+
+def stop():
+    if GMSH_OPEN[0]:
+        gmsh.finalize()
+        GMSH_OPEN[0] = False
+
+
+def mesh_square(order, size=0.3):
     gmsh.model.occ.addRectangle(0, 0, 0, 1, 1)
     gmsh.model.occ.synchronize()
-    gmsh.option.setNumber("Mesh.MeshSizeMax", 0.45)
-    gmsh.option.setNumber("Mesh.ElementOrder", order)
-    gmsh.option.setNumber("Mesh.HighOrderOptimize", 0)
+    gmsh.option.setNumber("Mesh.MeshSizeMax", size)
     gmsh.model.mesh.generate(2)
+    gmsh.model.mesh.setOrder(order)
+
+
+def mesh_disk(order, size=0.5):
+    gmsh.model.occ.addDisk(0, 0, 0, 1, 1)
+    gmsh.model.occ.synchronize()
+    gmsh.option.setNumber("Mesh.MeshSizeMax", size)
+    gmsh.model.mesh.generate(2)
+    gmsh.model.mesh.setOrder(order)
+
+
+def write(path, version, binary, views, parametric=0):
+    """Writes the current model, then appends each view (name, [(step, function)]) with
+    gmsh.view.write. Returns what the checks need from Gmsh: node coordinates by tag, and the
+    triangles: (number of nodes, reference coordinates of the nodes), element tags, node tags
+    in Gmsh order."""
     gmsh.option.setNumber("Mesh.MshFileVersion", version)
     gmsh.option.setNumber("Mesh.Binary", binary)
+    gmsh.option.setNumber("Mesh.SaveParametric", parametric)
     gmsh.write(path)
     tags, coords, _ = gmsh.model.mesh.getNodes()
-    views = [("pressure", lambda x, y: 7.0)] if two_views else []
-    views.append(("temperature", lambda x, y: f(x, y, order)))
-    for name, g in views:
+    xyz = {int(t): tuple(coords[3 * i:3 * i + 3]) for i, t in enumerate(tags)}
+    model = gmsh.model.getCurrent()
+    for name, steps in views:
         v = gmsh.view.add(name)
-        gmsh.view.addModelData(v, 0, "square", "NodeData", tags,
-                               [[g(coords[3 * i], coords[3 * i + 1])] for i in range(len(tags))])
+        for step, g in steps:
+            gmsh.view.addModelData(v, step, model, "NodeData", tags,
+                                   [[g(*xyz[int(t)][:2])] for t in tags], time=float(step))
         gmsh.view.write(v, path, append=True)
-    types, etags, _ = gmsh.model.mesh.getElements(2)
-    ntri = sum(len(t) for t in etags)
-    gmsh.finalize()
-    return ntri
+    types = gmsh.model.mesh.getElementTypes(2)
+    assert len(types) == 1, types
+    etags, enodes = gmsh.model.mesh.getElementsByType(types[0])
+    _, _, _, nn, local, _ = gmsh.model.mesh.getElementProperties(types[0])
+    return xyz, (nn, list(local)), [int(t) for t in etags], [int(n) for n in enodes]
+
+
+def check_nodes(label, path, scalar, g, xyz, element, etags, enodes):
+    """At Gmsh's reference coordinates of each node of each triangle, hoct gives that node."""
+    nn, local = element
+    queries = [(c, local[2 * i], local[2 * i + 1]) for c in range(len(etags)) for i in range(nn)]
+    rows = evaluate(path, queries, scalar)
+    bad = 0
+    for k, row in enumerate(rows):
+        c, i = divmod(k, nn)
+        x, y, z = xyz[enodes[c * nn + i]]
+        if not (abs(row[0] - x) < 1e-12 and abs(row[1] - y) < 1e-12 and abs(row[2] - z) < 1e-12
+                and close(row[3], g(x, y))):
+            bad += 1
+            if bad <= 3:
+                print(f"  {label}: cell {c} node {i}: hoct {row}, gmsh {(x, y, z, g(x, y))}")
+    R.check(len(rows) == len(queries) and bad == 0,
+            f"{label}: {bad} of {len(queries)} nodes differ from Gmsh's")
+
+
+def check_interior(label, path, scalar, g, xyz, etags, enodes, nn):
+    """Straight triangles: affine position, polynomial value, at random points of each cell."""
+    queries = []
+    for c in range(len(etags)):
+        for _ in range(3):
+            u, v = rng.random(), rng.random()
+            if u + v > 1:
+                u, v = 1 - u, 1 - v
+            queries.append((c, u, v))
+    rows = evaluate(path, queries, scalar)
+    bad = 0
+    for (c, u, v), row in zip(queries, rows):
+        p = [xyz[enodes[c * nn + k]] for k in range(3)]
+        x = [p[0][d] + u * (p[1][d] - p[0][d]) + v * (p[2][d] - p[0][d]) for d in range(3)]
+        if not (all(abs(row[d] - x[d]) < 1e-12 for d in range(3)) and close(row[3], g(x[0], x[1]))):
+            bad += 1
+            if bad <= 3:
+                print(f"  {label}: cell {c} at {u},{v}: hoct {row}, expected {x} {g(x[0], x[1])}")
+    R.check(len(rows) == len(queries) and bad == 0,
+            f"{label}: {bad} of {len(queries)} points differ")
+
+
+def info(path, *args):
+    return json.loads(run("info", path, "--json", *args).stdout)
+
+
+def fails(path, phrase, label):
+    r = run("info", path, check=False)
+    R.check(r.returncode != 0 and path in r.stderr and phrase in r.stderr,
+            f"{label}: expected failure with '{phrase}', got {r.returncode}: {r.stderr.strip()}")
+
+
+def guarded(label, check, *args):
+    """Runs one case; an exception (e.g. hoct failing where it should not) is a failed check."""
+    try:
+        check(*args)
+    except Exception as e:  # noqa: BLE001 - every error is a test failure, reported and counted
+        R.check(False, f"{label}: {type(e).__name__}: {str(e).strip()}")
+    finally:
+        stop()
+
+
+FORMATS = [(4.1, 0), (4.1, 1), (2.2, 0)]
+
+
+def square(tmp, order, version, binary):
+    """Straight triangles: node order, cell count, and the field inside every cell."""
+    label = f"square order {order} msh {version} binary={binary}"
+    path = os.path.join(tmp, f"sq{order}_{version}_{binary}.msh")
+    f = poly(order)
+    start("square")
+    mesh_square(order)
+    xyz, element, etags, enodes = write(path, version, binary, [("f", [(0, f)])])
+    stop()
+    j = info(path)
+    R.check(j["cells"] == len(etags) and j["degrees"] == {str(order): len(etags)},
+            f"{label}: hoct {j['cells']} cells {j['degrees']}, gmsh {len(etags)} of order {order}")
+    # One disk: shared nodes are shared (also where the mesh is repeated before the view).
+    R.check((j["components"], j["euler_characteristic"], j["boundary_loops"]) == (1, 1, 1),
+            f"{label}: components, Euler characteristic, boundary loops "
+            f"{j['components']} {j['euler_characteristic']} {j['boundary_loops']}")
+    check_nodes(label, path, None, f, xyz, element, etags, enodes)
+    check_interior(label, path, None, f, xyz, etags, enodes, element[0])
+
+
+def disk(tmp, order, version, binary):
+    """Curved boundary triangles: nodes only; parametric coordinates in the 4.1 files."""
+    parametric = 1 if version == 4.1 else 0
+    label = f"disk order {order} msh {version} binary={binary} parametric={parametric}"
+    path = os.path.join(tmp, f"disk{order}_{version}_{binary}.msh")
+    f = poly(order)
+    start("disk")
+    mesh_disk(order)
+    xyz, element, etags, enodes = write(path, version, binary, [("f", [(0, f)])], parametric)
+    stop()
+    j = info(path)
+    R.check(j["cells"] == len(etags) and j["degrees"] == {str(order): len(etags)},
+            f"{label}: hoct {j['cells']} cells {j['degrees']}, gmsh {len(etags)}")
+    check_nodes(label, path, None, f, xyz, element, etags, enodes)
+
+
+def views(tmp, version, binary):
+    """The first view by default, --scalar picks one, the last time step of a view is read."""
+    label = f"views msh {version} binary={binary}"
+    path = os.path.join(tmp, f"views_{version}_{binary}.msh")
+    f, g = poly(3), (lambda x, y: 7.0 - x)
+    start("square")
+    mesh_square(3, 0.5)
+    xyz, element, etags, enodes = write(
+        path, version, binary, [("pressure", [(0, g)]), ("temperature", [(0, g), (1, f)])])
+    stop()
+    check_nodes(label + " default view", path, None, g, xyz, element, etags, enodes)
+    check_nodes(label + " last time step", path, "temperature", f, xyz, element, etags, enodes)
+    r = run("info", path, "--scalar", "nope", check=False)
+    R.check(r.returncode != 0
+            and "no $NodeData named 'nope' (available: pressure, temperature)" in r.stderr,
+            f"{label}: unknown view: {r.stderr.strip()}")
+
+
+def no_view(tmp):
+    path = os.path.join(tmp, "noview.msh")
+    start("square")
+    mesh_square(2, 0.5)
+    gmsh.write(path)
+    stop()
+    fails(path, "the file has no node data", "mesh without $NodeData")
+
+
+def serendipity(tmp, order):
+    path = os.path.join(tmp, f"serendipity{order}.msh")
+    start("square")
+    gmsh.option.setNumber("Mesh.SecondOrderIncomplete", 1)
+    mesh_square(order, 0.5)
+    write(path, 4.1, order % 2, [("f", [(0, poly(1))])])
+    etype = gmsh.model.mesh.getElementType("Triangle", order, True)
+    stop()
+    fails(path, f"incomplete (serendipity) triangle type {etype} is not supported",
+          f"serendipity order {order}")
+
+
+def quadrangles(tmp, order):
+    path = os.path.join(tmp, f"quads{order}.msh")
+    start("square")
+    gmsh.option.setNumber("Mesh.RecombineAll", 1)
+    mesh_square(order, 0.5)
+    gmsh.option.setNumber("Mesh.Binary", 0)
+    gmsh.write(path)
+    etype = gmsh.model.mesh.getElementTypes(2)[0]
+    name = gmsh.model.mesh.getElementProperties(etype)[0]
+    stop()
+    fails(path, f"element type {etype} ({name}), which is not a triangle",
+          f"quadrangles order {order}")
+
+
+def tetrahedra(tmp):
+    path = os.path.join(tmp, "box.msh")
+    start("box")
+    gmsh.model.occ.addBox(0, 0, 0, 1, 1, 1)
+    gmsh.model.occ.synchronize()
+    gmsh.option.setNumber("Mesh.MeshSizeMax", 0.5)
+    gmsh.model.mesh.generate(3)
+    gmsh.option.setNumber("Mesh.Binary", 1)
+    gmsh.write(path)
+    stop()
+    fails(path, "element type 4 (Tetrahedron 4), which is not a triangle", "tetrahedra")
+
+
+def every_element_type(tmp):
+    """Every element type Gmsh defines, next to one linear triangle: points and lines are
+    skipped, complete triangles are read (above), anything else is refused with Gmsh's name."""
+    start("types")
+    described = []
+    for etype in range(1, 140):
+        try:
+            name, dim, order, nn, _, _ = gmsh.model.mesh.getElementProperties(etype)
+        except Exception:  # noqa: BLE001 - a type number Gmsh does not define
+            continue
+        if nn > 0:
+            described.append((etype, name, dim, order, nn))
+    stop()
+    R.check(len(described) > 100, f"Gmsh describes {len(described)} element types")
+    checked = 0
+    for etype, name, dim, order, nn in described:
+        triangle = name.startswith("Triangle") and order >= 1
+        if triangle and nn == (order + 1) * (order + 2) // 2:
+            continue  # complete triangles: read above
+        n = max(nn, 8)  # the triangle uses nodes 1, 2, 8
+        nodes = "".join(f"{k}\n" for k in range(1, n + 1)) + "".join(
+            f"{k % 7} {k // 7} 0\n" for k in range(n))
+        text = ("$MeshFormat\n4.1 0 8\n$EndMeshFormat\n"
+                f"$Nodes\n1 {n} 1 {n}\n2 1 0 {n}\n{nodes}$EndNodes\n"
+                f"$Elements\n2 2 1 2\n2 1 2 1\n1 1 2 8\n{dim} 1 {etype} 1\n2 "
+                + " ".join(str(k) for k in range(1, nn + 1)) + "\n$EndElements\n"
+                "$NodeData\n1\n\"f\"\n1\n0\n3\n0\n1\n3\n1 0\n2 1\n8 2\n$EndNodeData\n")
+        path = os.path.join(tmp, f"type{etype}.msh")
+        with open(path, "w") as out:
+            out.write(text)
+        r = run("info", path, "--json", check=False)
+        if dim <= 1:
+            ok = r.returncode == 0 and json.loads(r.stdout)["cells"] == 1
+        elif triangle:
+            ok = (r.returncode != 0 and
+                  f"incomplete (serendipity) triangle type {etype} is not supported" in r.stderr)
+        else:
+            ok = r.returncode != 0 and f"element 2 has element type {etype} ({name})" in r.stderr
+        checked += 1
+        R.check(ok, f"element type {etype} ({name}, dimension {dim}): "
+                    f"{r.returncode} {r.stderr.strip()}")
+    R.check(checked > 80, f"{checked} element types checked")
 
 
 with tempdir() as tmp:
-    for version, binary in [(4.1, 0), (4.1, 1), (2.2, 0)]:
-        for order in range(1, 9):
-            path = os.path.join(tmp, "m.msh")
-            ntri = write(path, order, version, binary, two_views=(order == 2))
-            label = f"gmsh {version} binary={binary} order={order}"
-            info = json.loads(run("info", path, "--json", "--scalar", "temperature").stdout)
-            R.check(info["cells"] == ntri, f"{label}: {info['cells']} cells, gmsh has {ntri}")
-            R.check(info["degrees"] == {str(order): ntri}, f"{label}: degrees {info['degrees']}")
-            R.check(info["euler_characteristic"] == 1 and info["boundary_loops"] == 1,
-                    f"{label}: topology {info['euler_characteristic']} {info['boundary_loops']}")
-            queries = [(c, rng.random() * 0.5, rng.random() * 0.5) for c in range(ntri) for _ in range(3)]
-            queries += [(c, a / order, b / order) for c in range(0, ntri, 5)
-                        for b in range(order + 1) for a in range(order + 1 - b)]
-            rows = evaluate(path, queries, "temperature")
-            worst = max(abs(r[3] - f(r[0], r[1], order)) for r in rows)
-            R.check(len(rows) == len(queries) and worst < 1e-8, f"{label}: field error {worst}")
-            if order == 2:
-                # The first view is the default; --scalar picks the other.
-                first = evaluate(path, [(0, 0.2, 0.2)])[0][3]
-                R.check(abs(first - 7.0) < 1e-12, f"{label}: default view gives {first}")
-                bad = run("info", path, "--scalar", "nope", check=False)
-                R.check(bad.returncode != 0 and "available: pressure, temperature" in bad.stderr,
-                        f"{label}: unknown view message: {bad.stderr.strip()}")
+    for order in range(1, 11):
+        for version, binary in FORMATS:
+            guarded(f"square order {order} {version} {binary}", square, tmp, order, version, binary)
+    for order in (2, 3, 5, 8):
+        for version, binary in FORMATS:
+            guarded(f"disk order {order} {version} {binary}", disk, tmp, order, version, binary)
+    for version, binary in FORMATS:
+        guarded(f"views {version} {binary}", views, tmp, version, binary)
+    guarded("no view", no_view, tmp)
+    for order in (3, 4, 5, 6, 10):
+        guarded(f"serendipity {order}", serendipity, tmp, order)
+    for order in (1, 2):
+        guarded(f"quadrangles {order}", quadrangles, tmp, order)
+    guarded("tetrahedra", tetrahedra, tmp)
+    guarded("element types", every_element_type, tmp)
 
 R.finish()

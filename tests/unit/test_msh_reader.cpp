@@ -1,14 +1,26 @@
-// The Gmsh reader on hand-written files: sparse tags, several entity blocks, two views,
-// MSH 2.2, binary 4.1; and a clear error for each kind of malformed file.
+// The Gmsh MSH reader on the fixtures of tests/data/msh:
+//  - hand-written ascii files (degrees 1 and 2, sparse node tags, several entity blocks,
+//    parametric nodes, two views, time steps and partitions, MSH 2.2), checked array by array;
+//  - files written by Gmsh itself (make_gmsh_fixtures.py: 4.1 binary with parametric nodes, 4.1
+//    ascii, 2.2 ascii), checked against the straight-triangle geometry and the polynomial they
+//    hold;
+//  - malformed files, each of which must give an InputError that starts with the file name and
+//    the place (line, or byte offset in binary files) and names the problem;
+//  - every truncation and many corruptions of the good files, which must fail cleanly.
 #include "error.hpp"
+#include "io/msh_element_types.hpp"
 #include "io/msh_reader.hpp"
 #include "poly/lattice.hpp"
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <functional>
+#include <limits>
+#include <sstream>
 #include <unistd.h>
 
 namespace hoct {
@@ -16,146 +28,425 @@ namespace {
 
 namespace fs = std::filesystem;
 
+std::string data_path(const std::string &name) {
+  return std::string(HOCT_TEST_DATA) + "/msh/" + name;
+}
+
+std::string slurp(const std::string &path) {
+  std::ifstream in(path, std::ios::binary);
+  EXPECT_TRUE(in) << path;
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// A directory of this process's files, removed when the tests end.
+const fs::path &temp_dir() {
+  struct Dir {
+    fs::path path = fs::temp_directory_path() / ("hoct-msh-test-" + std::to_string(::getpid()));
+    Dir() { fs::create_directories(path); }
+    ~Dir() {
+      std::error_code ec;
+      fs::remove_all(path, ec);
+    }
+  };
+  static const Dir dir;
+  return dir.path;
+}
+
 std::string write_temp(const std::string &name, const std::string &content) {
-  const fs::path dir = fs::temp_directory_path() / ("hoct-msh-" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  const std::string path = (dir / name).string();
+  const std::string path = (temp_dir() / name).string();
   std::ofstream(path, std::ios::binary) << content;
   return path;
 }
 
-// Two linear triangles (0,0) (1,0) (1,1) and (0,0) (1,1) (0,1), node tags 10, 20, 30, 40 in two
-// entity blocks, a line element that must be skipped, and two views.
-struct MshFixture {
-  std::string version = "4.1 0 8";
-  std::string nodes = "$Nodes\n2 4 10 40\n2 1 0 2\n10\n20\n0 0 0\n1 0 0\n2 1 0 2\n30\n40\n1 1 0\n0 "
-                      "1 0\n$EndNodes\n";
-  std::string elements =
-      "$Elements\n2 3 1 3\n1 1 1 1\n3 10 20\n2 1 2 2\n1 10 20 30\n2 10 30 40\n$EndElements\n";
-  std::string data =
-      "$NodeData\n1\n\"p\"\n1\n0.0\n3\n0\n1\n4\n10 5\n20 5\n30 5\n40 5\n$EndNodeData\n"
-      "$NodeData\n1\n\"T\"\n1\n0.0\n3\n0\n1\n4\n10 1.5\n20 2.5\n30 3.5\n40 4.5\n$EndNodeData\n";
-  std::string text() const {
-    return "$MeshFormat\n" + version +
-           "\n$EndMeshFormat\n$PhysicalNames\n1\n2 1 \"plate\"\n"
-           "$EndPhysicalNames\n" +
-           nodes + elements + data;
-  }
-};
-
-template <class F> std::string with(F &&change) {
-  MshFixture f;
-  change(f);
-  return f.text();
-}
-
-void expect_error(const std::string &content, const std::string &phrase,
-                  const std::string &scalar = "") {
-  const std::string path = write_temp("bad.msh", content);
+// The message of the InputError read_msh throws, or "" (with a test failure) if it does not.
+std::string error_of(const std::string &path, const std::string &scalar = "") {
   try {
     read_msh(path, scalar);
-    ADD_FAILURE() << "accepted a file that should fail with: " << phrase;
   } catch (const InputError &e) {
-    const std::string msg = e.what();
-    EXPECT_EQ(msg.rfind(path, 0), 0u) << msg;
-    EXPECT_NE(msg.find(phrase), std::string::npos) << "expected '" << phrase << "' in: " << msg;
+    return e.what();
+  }
+  ADD_FAILURE() << path << " was accepted";
+  return "";
+}
+
+void expect_error(const std::string &path, const std::string &where, const std::string &phrase,
+                  const std::string &scalar = "") {
+  const std::string msg = error_of(path, scalar);
+  EXPECT_EQ(msg.rfind(path + where, 0), 0u)
+      << "expected '" << path + where << "' first in: " << msg;
+  EXPECT_NE(msg.find(phrase), std::string::npos) << "expected '" << phrase << "' in: " << msg;
+}
+
+TEST(MshReader, LinearTrianglesTwoBlocksTwoViews) {
+  const std::string path = data_path("p1_two_views.msh");
+  const MeshInput p = read_msh(path);
+  EXPECT_EQ(p.source, path);
+  EXPECT_EQ(p.field_name, "p"); // the first view by default
+  EXPECT_EQ(p.values, (std::vector<double>{5, 5, 5, 5}));
+  const MeshInput t = read_msh(path, "T");
+  EXPECT_EQ(t.field_name, "T");
+  EXPECT_EQ(t.points, (std::vector<Vec3>{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}}));
+  EXPECT_EQ(t.values, (std::vector<double>{1.5, 2.5, 3.5, 4.5}));
+  EXPECT_EQ(t.cell_offsets, (std::vector<int64_t>{0, 3, 6}));
+  EXPECT_EQ(t.cell_nodes, (std::vector<int64_t>{0, 1, 2, 0, 2, 3}));
+  EXPECT_EQ(t.cell_degree, (std::vector<uint8_t>{1, 1}));
+  // The same file with Windows line ends.
+  std::string crlf;
+  for (char c : slurp(path))
+    crlf += c == '\n' ? std::string("\r\n") : std::string(1, c);
+  const MeshInput w = read_msh(write_temp("crlf.msh", crlf), "T");
+  EXPECT_EQ(w.points, t.points);
+  EXPECT_EQ(w.values, t.values);
+  EXPECT_EQ(w.cell_nodes, t.cell_nodes);
+}
+
+// p2_sparse_tags.msh and its MSH 2.2 twin: A (0,0) B (2,0) C (2,2) D (0,2), z = 0.25; element 17
+// is A B C, element 4 is A C D (Gmsh order: corners, then the midpoints of edges 01, 12, 20).
+// Points come in the order the file defines them, without node 77 (used by a point element only):
+// C A BC AB CA CD DA D B.
+void expect_sparse_p2(const MeshInput &m) {
+  const double z = 0.25;
+  EXPECT_EQ(m.points, (std::vector<Vec3>{{2, 2, z},
+                                         {0, 0, z},
+                                         {2, 1, z},
+                                         {1, 0, z},
+                                         {1, 1, z},
+                                         {1, 2, z},
+                                         {0, 1, z},
+                                         {0, 2, z},
+                                         {2, 0, z}}));
+  EXPECT_EQ(m.field_name, "f");
+  // f = x^2 + 10 y
+  EXPECT_EQ(m.values, (std::vector<double>{24, 0, 14, 1, 11, 21, 10, 20, 4}));
+  EXPECT_EQ(m.cell_degree, (std::vector<uint8_t>{2, 2}));
+  EXPECT_EQ(m.cell_offsets, (std::vector<int64_t>{0, 6, 12}));
+  // Canonical order of degree 2: (0,0) (1,0) (2,0) (0,1) (1,1) (0,2) in lattice (a, b).
+  // Element 17: A AB B CA BC C; element 4: A AC C DA CD D.
+  EXPECT_EQ(m.cell_nodes, (std::vector<int64_t>{1, 3, 8, 4, 2, 0, 1, 4, 0, 6, 5, 7}));
+}
+
+TEST(MshReader, QuadraticTrianglesSparseTagsParametricNodes) {
+  const MeshInput f = read_msh(data_path("p2_sparse_tags.msh"));
+  expect_sparse_p2(f);
+  const MeshInput g = read_msh(data_path("p2_sparse_tags.msh"), "g");
+  EXPECT_EQ(g.field_name, "g");
+  EXPECT_EQ(g.cell_nodes, f.cell_nodes);
+  // g = x - y
+  EXPECT_EQ(g.values, (std::vector<double>{0, 0, 1, 1, 0, -1, -1, -2, 2}));
+}
+
+TEST(MshReader, Msh22ReadsLikeMsh41) {
+  expect_sparse_p2(read_msh(data_path("p2_sparse_tags_msh22.msh")));
+}
+
+TEST(MshReader, TimeStepsPartitionsRepeatedMeshAndVectorViews) {
+  // The mesh is written twice (as Gmsh's view.write does); "velocity" has 3 components, so the
+  // default is "T", whose last time step comes in two partitions.
+  const std::string path = data_path("time_steps.msh");
+  const MeshInput m = read_msh(path);
+  EXPECT_EQ(m.field_name, "T");
+  EXPECT_EQ(m.num_cells(), 2u);
+  EXPECT_EQ(m.values, (std::vector<double>{11, 12, 13, 14}));
+  expect_error(path, ":", "$NodeData 'velocity' has 3 components; a scalar field needs 1",
+               "velocity");
+  // A later time step replaces the earlier one: a node missing from it has no value (it does not
+  // keep the value of step 0).
+  std::string text = slurp(path);
+  const std::string last = "2\n2\n30 13\n40 14\n"; // 2 values, partition 2
+  ASSERT_NE(text.find(last), std::string::npos);
+  text.replace(text.find(last), last.size(), "1\n2\n30 13\n");
+  expect_error(write_temp("steps.msh", text), ":", "$NodeData 'T' has no value for node 40");
+}
+
+TEST(MshReader, ChoosesViewByName) {
+  const std::string path = data_path("p1_two_views.msh");
+  expect_error(path, ": ", "no $NodeData named 'Q' (available: p, T)", "Q");
+}
+
+// Files written by Gmsh: a unit square of two straight triangles of order k with the view
+// "f" below (make_gmsh_fixtures.py).
+double gmsh_f(double x, double y) {
+  return 1.0 + x - 2.0 * y + 3.0 * x * y - x * x * y + 0.5 * y * y;
+}
+
+void expect_gmsh_square(const MeshInput &m, int degree) {
+  ASSERT_EQ(m.num_cells(), 2u);
+  EXPECT_EQ(m.field_name, "f");
+  EXPECT_EQ(m.points.size(), static_cast<std::size_t>((degree + 1) * (degree + 1)));
+  for (std::size_t c = 0; c < 2; ++c) {
+    ASSERT_EQ(m.cell_degree[c], degree);
+    const int64_t *nodes = m.cell_nodes.data() + m.cell_offsets[c];
+    const Vec3 &p0 = m.points[nodes[corner_index(degree, 0)]];
+    const Vec3 &p1 = m.points[nodes[corner_index(degree, 1)]];
+    const Vec3 &p2 = m.points[nodes[corner_index(degree, 2)]];
+    for (int i = 0; i < lattice_size(degree); ++i) {
+      // Straight cells: lattice point (a, b) sits at p0 + a/d (p1 - p0) + b/d (p2 - p0).
+      const auto [a, b] = lattice_point(degree, i);
+      const Vec3 &p = m.points[nodes[i]];
+      for (int k = 0; k < 3; ++k)
+        EXPECT_NEAR(p[k], p0[k] + (a * (p1[k] - p0[k]) + b * (p2[k] - p0[k])) / degree, 1e-12)
+            << "cell " << c << " lattice point " << a << "," << b;
+      EXPECT_NEAR(m.values[nodes[i]], gmsh_f(p[0], p[1]), 1e-12);
+    }
   }
 }
 
-TEST(MshReader, AsciiFixture) {
-  const MeshInput m = read_msh(write_temp("ok.msh", MshFixture().text()));
-  ASSERT_EQ(m.num_cells(), 2u);
-  EXPECT_EQ(m.field_name, "p"); // the first view by default
-  const MeshInput t = read_msh(write_temp("ok.msh", MshFixture().text()), "T");
-  EXPECT_EQ(t.field_name, "T");
-  ASSERT_EQ(t.points.size(), 4u);
-  // Nodes in first-use order: tags 10, 20, 30, 40.
-  EXPECT_EQ(t.values, (std::vector<double>{1.5, 2.5, 3.5, 4.5}));
-  EXPECT_EQ(t.points[2], (Vec3{1, 1, 0}));
-  EXPECT_EQ(t.cell_nodes, (std::vector<int64_t>{0, 1, 2, 0, 2, 3}));
+TEST(MshReader, FilesWrittenByGmsh) {
+  const MeshInput bin = read_msh(data_path("gmsh_square_p3_binary.msh"));
+  expect_gmsh_square(bin, 3);
+  expect_gmsh_square(read_msh(data_path("gmsh_square_p4_ascii.msh")), 4);
+  const MeshInput v22 = read_msh(data_path("gmsh_square_p3_msh22.msh"));
+  expect_gmsh_square(v22, 3);
+  // Binary 4.1 and ascii 2.2 of the same mesh agree (ascii prints 16 digits).
+  EXPECT_EQ(bin.cell_nodes, v22.cell_nodes);
+  ASSERT_EQ(bin.points.size(), v22.points.size());
+  for (std::size_t i = 0; i < bin.points.size(); ++i)
+    for (int k = 0; k < 3; ++k)
+      EXPECT_NEAR(bin.points[i][k], v22.points[i][k], 1e-15);
 }
 
-TEST(MshReader, Msh22AndBinary41) {
-  const std::string v22 = "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n4\n10 0 0 0\n20 1 0 0\n"
-                          "30 1 1 0\n40 0 1 0\n$EndNodes\n$Elements\n3\n1 1 2 0 1 10 20\n"
-                          "2 2 2 0 1 10 20 30\n3 2 2 0 1 10 30 40\n$EndElements\n"
-                          "$NodeData\n1\n\"T\"\n1\n0.0\n3\n0\n1\n4\n10 1\n20 2\n30 3\n40 4\n"
-                          "$EndNodeData\n";
-  const MeshInput a = read_msh(write_temp("v22.msh", v22));
-  EXPECT_EQ(a.num_cells(), 2u);
-  EXPECT_EQ(a.values, (std::vector<double>{1, 2, 3, 4}));
-  // Binary 4.1, built byte by byte.
-  std::string b = "$MeshFormat\n4.1 1 8\n";
-  auto put = [&](auto v) { b.append(reinterpret_cast<const char *>(&v), sizeof v); };
-  put(int32_t{1});
-  b += "\n$EndMeshFormat\n$Nodes\n";
-  for (uint64_t x : {1ull, 3ull, 1ull, 3ull})
-    put(x);
-  put(int32_t{2}), put(int32_t{1}), put(int32_t{0}), put(uint64_t{3});
-  for (uint64_t t : {1ull, 2ull, 3ull})
-    put(t);
-  for (double c : {0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0, 0.0})
-    put(c);
-  b += "\n$EndNodes\n$Elements\n";
-  for (uint64_t x : {1ull, 1ull, 1ull, 1ull})
-    put(x);
-  put(int32_t{2}), put(int32_t{1}), put(int32_t{2}), put(uint64_t{1});
-  for (uint64_t x : {7ull, 1ull, 2ull, 3ull})
-    put(x);
-  b += "\n$EndElements\n$NodeData\n1\n\"T\"\n1\n0.0\n3\n0\n1\n3\n";
-  for (int i = 1; i <= 3; ++i)
-    put(int32_t{i}), put(double(i) / 2);
-  const std::string good = b + "\n$EndNodeData\n";
-  const MeshInput m = read_msh(write_temp("bin.msh", good));
-  EXPECT_EQ(m.num_cells(), 1u);
-  EXPECT_EQ(m.values, (std::vector<double>{0.5, 1.0, 1.5}));
-  // Truncated binary data names a byte offset.
-  expect_error(good.substr(0, good.find("$EndNodes") - 20), "(byte ");
+TEST(MshReader, MalformedFilesGiveLocatedErrors) {
+  struct Case {
+    const char *file, *where, *phrase, *scalar = "";
+  };
+  const Case cases[] = {
+      {"bad_version_40.msh", ":2: ", "MSH version '4.0' is not supported: hoct reads MSH 4.1"},
+      {"bad_version_22_binary.msh", ":2: ", "binary MSH 2.2 is not supported"},
+      {"bad_file_type.msh", ":2: ", "unknown file type 2"},
+      {"bad_not_msh.msh", ":1: ", "expected a section such as $Nodes, got 'solid'"},
+      {"empty.msh", ": ", "the file is empty"},
+      {"bad_format_only.msh", ": ", "no $Nodes section"},
+      {"bad_no_elements.msh", ": ", "no $Elements section"},
+      {"bad_no_triangles.msh", ": ",
+       "no triangles in $Elements (1 point and line elements skipped)"},
+      {"bad_elements_first.msh", ":16: ", "$Elements before any $Nodes section"},
+      {"bad_no_nodedata.msh", ": ", "the file has no node data"},
+      {"bad_vector_only.msh", ": ", "no scalar $NodeData (available: velocity (3 components))"},
+      {"bad_missing_node.msh", ":35: ", "element 2 refers to node 99, which is not in $Nodes"},
+      {"bad_missing_value.msh", ":37: ", "$NodeData 'p' has no value for node 40 (of element 2)"},
+      {"bad_serendipity.msh",
+       ":34: ", "element 1: incomplete (serendipity) triangle type 20 is not supported"},
+      {"bad_quad.msh",
+       ":37: ", "element 7 has element type 3 (Quadrilateral 4), which is not a triangle"},
+      {"bad_tet.msh",
+       ":37: ", "element 8 has element type 4 (Tetrahedron 4), which is not a triangle"},
+      {"bad_unknown_type.msh", ":37: ", "element 9 has unknown element type 999"},
+      {"bad_nan_value.msh", ":46: ", "$NodeData 'p': node 10 has a non-finite value (nan)"},
+      {"bad_inf_coordinate.msh", ":26: ", "node 30 has a non-finite coordinate (1 inf 0)"},
+      {"bad_number.msh", ":26: ", "expected the y coordinate (a number), got 'x'"},
+      {"bad_node_count.msh", ":28: ", "the $Nodes header announces 5 nodes, its blocks hold 4"},
+      {"bad_block_count.msh",
+       ":23: ", "the node blocks hold more nodes than the 4 the $Nodes header announces"},
+      {"bad_element_short.msh",
+       ":34: ", "element 1 (Triangle 3) has 2 node tags on its line, expected 3"},
+      {"bad_element_long.msh",
+       ":34: ", "element 1 (Triangle 3) has more than 3 node tags on its line"},
+      {"bad_element_count.msh",
+       ":36: ", "the $Elements header announces 4 elements, its blocks hold 3"},
+      {"bad_hostile_nodes.msh",
+       ":17: ", "number of nodes 1000000000000000000 is more than the remaining"},
+      {"bad_hostile_blocks.msh",
+       ":30: ", "number of element blocks 99999999999999999 is more than"},
+      {"bad_hostile_values.msh", ":42: ", "number of values 1000000000000000000 is more than"},
+      {"bad_truncated.msh", ":42: ", "number of values 4 is more than the remaining 13 bytes"},
+      {"bad_missing_end_nodes.msh", ":28: ", "expected $EndNodes, got '$Elements'"},
+      {"bad_missing_end_nodedata.msh", ":63: ", "unexpected end of file: expected $EndNodeData"},
+      {"bad_unterminated_entities.msh", ":12: ", "section $Entities has no $EndEntities"},
+      {"bad_end_without_start.msh", ":16: ", "'$EndComments' ends a section that was not started"},
+      {"bad_duplicate_node.msh", ":47: ", "node 30 is defined twice, with different coordinates"},
+      {"bad_duplicate_element.msh", ":43: ", "element 2 is defined twice, with different nodes"},
+      {"bad_tag_zero.msh", ":20: ", "node tag 0 (tags are positive)"},
+      {"bad_nodedata_ints.msh", ":42: ", "$NodeData 'p' has 2 integer tags; it needs 3"},
+      {"bad_unterminated_string.msh", ":39: ", "unterminated string tag '\"p'"},
+      {"bad_msh22_quad.msh", ":26: ", "element 4 has element type 3 (Quadrilateral 4)"},
+      {"bad_msh22_element_count.msh",
+       ":27: ", "expected an element tag (a non-negative integer), got '$EndElements'"},
+      {"bad_msh22_element_tags.msh",
+       ":25: ", "the line ends where an element tag (physical, elementary, ...) was expected"},
+      {"p1_two_views.msh", ": ", "no $NodeData named 'Q' (available: p, T)", "Q"},
+  };
+  for (const Case &c : cases) {
+    SCOPED_TRACE(c.file);
+    expect_error(data_path(c.file), c.where, c.phrase, c.scalar);
+  }
+  expect_error(data_path("no_such_file.msh"), ": ", "cannot open");
+  expect_error(std::string(HOCT_TEST_DATA) + "/msh", ": ", "is a directory");
 }
 
-TEST(MshReader, MalformedFilesGiveClearErrors) {
-  expect_error(with([](MshFixture &f) { f.version = "4.0 0 8"; }), "version 4.0 is not supported");
-  expect_error(with([](MshFixture &f) { f.version = "4.1 0 4"; }), "data size 4");
-  expect_error(with([](MshFixture &f) { f.nodes.clear(); }), "no $Nodes section");
-  expect_error(with([](MshFixture &f) { f.elements.clear(); }), "no $Elements section");
-  expect_error(with([](MshFixture &f) { f.data.clear(); }), "no scalar $NodeData");
-  expect_error(MshFixture().text(), "no $NodeData named 'Q' (available: p, T)", "Q");
-  expect_error(with([](MshFixture &f) {
-                 f.elements.replace(f.elements.find("2 10 30 40"), 10, "2 10 30 99");
-               }),
-               "element 2 refers to node 99");
-  expect_error(with([](MshFixture &f) {
-                 f.data =
-                     "$NodeData\n1\n\"T\"\n1\n0.0\n3\n0\n1\n3\n10 1\n20 1\n30 1\n$EndNodeData\n";
-               }),
-               "node 40 (of element 2) has no value");
-  expect_error(with([](MshFixture &f) {
-                 f.elements = "$Elements\n1 1 1 1\n2 1 20 1\n1 10 20 30 10 20 30\n$EndElements\n";
-               }),
-               "incomplete (serendipity) triangle type 20");
-  expect_error(with([](MshFixture &f) {
-                 f.elements = "$Elements\n1 1 1 1\n2 1 3 1\n1 10 20 30 40\n$EndElements\n";
-               }),
-               "element type 3 (dimension 2) is not a triangle");
-  expect_error(with([](MshFixture &f) { f.nodes.replace(f.nodes.find("1 1 0"), 5, "1 x 0"); }),
-               "expected a number (node coordinate), got 'x'");
-  expect_error(with([](MshFixture &f) {
-                 f.nodes.replace(f.nodes.find("2 4 10 40"), 9, "2 99999999999999 10 40");
-               }),
-               "implausible number of nodes");
-  expect_error(with([](MshFixture &f) { f.data.replace(f.data.find("10 1.5"), 6, "10 nan"); }),
-               "node 10 has a non-finite value");
+// ---- binary files, patched byte by byte ----
+
+template <class T> void put(std::string &bytes, std::size_t at, T v) {
+  ASSERT_LE(at + sizeof v, bytes.size());
+  std::memcpy(bytes.data() + at, &v, sizeof v);
+}
+template <class T> T get(const std::string &bytes, std::size_t at) {
+  T v{};
+  std::memcpy(&v, bytes.data() + at, sizeof v);
+  return v;
+}
+
+// Offsets in the binary Gmsh fixture (the first copy of the mesh).
+struct BinaryLayout {
+  std::size_t nodes_header, elements_header, first_triangle_block, first_triangle, first_value;
+};
+
+BinaryLayout layout_of(const std::string &b) {
+  BinaryLayout l{};
+  l.nodes_header = b.find("$Nodes\n") + 7;
+  l.elements_header = b.find("$Elements\n") + 10;
+  std::size_t at = l.elements_header + 32;
+  const auto blocks = get<uint64_t>(b, l.elements_header);
+  for (uint64_t k = 0; k < blocks; ++k) {
+    const auto type = get<int32_t>(b, at + 8);
+    const auto n = get<uint64_t>(b, at + 12);
+    if (type == 21) {
+      l.first_triangle_block = at;
+      l.first_triangle = at + 20;
+      break;
+    }
+    at += 20 + 8 * n * (1 + static_cast<uint64_t>(msh_element_type(type)->nodes));
+  }
+  const std::size_t data = b.rfind("$NodeData\n");
+  l.first_value = b.find("\n16\n", data) + 4; // 16 values: the last integer tag
+  return l;
+}
+
+TEST(MshReader, BinaryMalformationsGiveByteOffsets) {
+  const std::string good = slurp(data_path("gmsh_square_p3_binary.msh"));
+  const BinaryLayout l = layout_of(good);
+  ASSERT_NE(l.first_triangle, 0u);
+  ASSERT_EQ(get<int32_t>(good, l.first_value), 1); // node tag 1
+  auto patched = [&](const std::function<void(std::string &)> &change) {
+    std::string b = good;
+    change(b);
+    return write_temp("patched.msh", b);
+  };
+  const auto at = [](std::size_t offset) { return ": byte " + std::to_string(offset) + ": "; };
+
   expect_error(
-      with([](MshFixture &f) { f.nodes.replace(f.nodes.find("$EndNodes"), 9, "$Endnodes"); }),
-      "expected $EndNodes");
-  const std::string full = MshFixture().text();
-  expect_error(full.substr(0, full.find("$EndNodes") - 4), "unexpected end of file");
-  expect_error("hello", "expected a section");
-  expect_error("$Nodes\n1 1 1 1\n", "does not start with $MeshFormat");
-  expect_error("", "the file is empty");
-  // The line number of the problem is in the message.
-  expect_error(with([](MshFixture &f) { f.nodes.replace(f.nodes.find("1 1 0"), 5, "1 x 0"); }),
-               "bad.msh:18:");
+      patched([&](std::string &b) { put<uint64_t>(b, l.nodes_header + 8, 1000000000000000000); }),
+      at(l.nodes_header), "number of nodes 1000000000000000000 is more than the remaining");
+  expect_error(
+      patched([&](std::string &b) { put<uint64_t>(b, l.nodes_header, uint64_t(1) << 62); }),
+      at(l.nodes_header), "number of node blocks 4611686018427387904 is more than");
+  expect_error(
+      patched([&](std::string &b) { put<uint64_t>(b, l.first_triangle_block + 12, ~uint64_t(0)); }),
+      at(l.first_triangle_block), "number of elements in the block 18446744073709551615");
+  expect_error(patched([&](std::string &b) { put<int32_t>(b, l.first_triangle_block + 8, 20); }),
+               at(l.first_triangle), "incomplete (serendipity) triangle type 20 is not supported");
+  expect_error(patched([&](std::string &b) { put<int32_t>(b, l.first_triangle_block + 8, 3); }),
+               at(l.first_triangle),
+               "has element type 3 (Quadrilateral 4), which is not a triangle");
+  const auto first_tag = get<uint64_t>(good, l.first_triangle);
+  expect_error(patched([&](std::string &b) { put<uint64_t>(b, l.first_triangle + 8, 999); }),
+               at(l.first_triangle),
+               "element " + std::to_string(first_tag) +
+                   " refers to node 999, which is not in $Nodes");
+  expect_error(patched([&](std::string &b) {
+                 put<double>(b, l.first_value + 4, std::numeric_limits<double>::quiet_NaN());
+               }),
+               at(l.first_value + 4), "$NodeData 'f': node 1 has a non-finite value");
+  expect_error(patched([&](std::string &b) { put<int32_t>(b, l.first_value, -7); }),
+               at(l.first_value), "node tag -7 is not positive");
+  const std::size_t one = good.find("4.1 1 8\n") + 8;
+  expect_error(patched([&](std::string &b) { put<int32_t>(b, one, 0x01000000); }), at(one),
+               "big-endian");
+  expect_error(patched([&](std::string &b) { b.replace(b.find("4.1 1 8\n"), 7, "4.1 1 4"); }),
+               ":2: ", "binary data size 4 is not supported");
+  // A wrong count in the $NodeData header (ascii in binary files): the binary data that follow
+  // are misread and the section does not end where it should.
+  expect_error(patched([&](std::string &b) { b.replace(l.first_value - 4, 4, "\n15\n"); }),
+               ": byte ", "expected $EndNodeData");
+}
+
+// Prefixes of the good files (every one for the small hand-written files, a sample for Gmsh's):
+// before the first complete $NodeData they must fail, after it they may succeed; nothing but an
+// InputError naming the file.
+TEST(MshReader, TruncatedFilesFailCleanly) {
+  const std::pair<const char *, std::size_t> files[] = {
+      {"p1_two_views.msh", 1},          {"p2_sparse_tags.msh", 1},
+      {"p2_sparse_tags_msh22.msh", 1},  {"time_steps.msh", 1},
+      {"gmsh_square_p3_binary.msh", 7}, {"gmsh_square_p4_ascii.msh", 13},
+      {"gmsh_square_p3_msh22.msh", 5}};
+  for (const auto &[name, stride] : files) {
+    SCOPED_TRACE(name);
+    const std::string full = slurp(data_path(name));
+    const bool binary = full.find("4.1 1 8") != std::string::npos;
+    const std::size_t must_fail = full.find("$EndNodeData") + 12;
+    const std::string path = write_temp(name, "");
+    for (std::size_t n = 0; n < full.size(); n += stride) {
+      std::ofstream(path, std::ios::binary | std::ios::trunc)
+          .write(full.data(), static_cast<std::streamsize>(n));
+      try {
+        read_msh(path);
+        ASSERT_GE(n, must_fail) << "a prefix of " << n << " bytes was accepted";
+      } catch (const InputError &e) {
+        // Binary files give byte offsets once their header has said they are binary.
+        const std::string msg = e.what();
+        ASSERT_EQ(msg.rfind(path + (binary && n > 30 ? ": " : ":"), 0), 0u) << msg;
+      }
+    }
+  }
+}
+
+// Corrupted bytes (a sample of positions, several values): either read or an InputError.
+TEST(MshReader, CorruptedBytesFailCleanly) {
+  const std::pair<const char *, std::size_t> files[] = {
+      {"gmsh_square_p3_binary.msh", 3}, {"p2_sparse_tags.msh", 2}, {"gmsh_square_p3_msh22.msh", 7}};
+  const char values[] = {'\0', '\xff', '9', '\n', '-'};
+  for (const auto &[name, stride] : files) {
+    SCOPED_TRACE(name);
+    const std::string full = slurp(data_path(name));
+    const std::string path = write_temp(name, "");
+    int failed = 0;
+    for (std::size_t i = 0, k = 0; i < full.size(); i += stride, ++k) {
+      std::string b = full;
+      b[i] = values[k % std::size(values)] == b[i] ? 'x' : values[k % std::size(values)];
+      std::ofstream(path, std::ios::binary | std::ios::trunc) << b;
+      try {
+        read_msh(path);
+      } catch (const InputError &e) {
+        ++failed;
+        ASSERT_EQ(std::string(e.what()).rfind(path, 0), 0u) << e.what();
+      }
+    }
+    EXPECT_GT(failed, 0);
+  }
+}
+
+TEST(MshReader, ElementTypeTable) {
+  // Complete triangles: Gmsh types and degrees (gmsh.model.mesh.getElementType("Triangle", d)).
+  const std::pair<int, int> complete[] = {{2, 1},  {9, 2},  {21, 3}, {23, 4}, {25, 5},
+                                          {42, 6}, {43, 7}, {44, 8}, {45, 9}, {46, 10}};
+  for (auto [type, degree] : complete) {
+    const MshElementType *t = msh_element_type(type);
+    ASSERT_NE(t, nullptr) << type;
+    EXPECT_EQ(t->complete_triangle_degree(), degree) << type;
+    EXPECT_EQ(t->nodes, lattice_size(degree)) << type;
+    EXPECT_FALSE(t->incomplete_triangle()) << type;
+  }
+  // Serendipity triangles (getElementType("Triangle", d, serendip=True) for d = 3..10).
+  for (int type : {20, 22, 24, 52, 53, 54, 55, 56}) {
+    const MshElementType *t = msh_element_type(type);
+    ASSERT_NE(t, nullptr) << type;
+    EXPECT_TRUE(t->incomplete_triangle()) << type;
+    EXPECT_EQ(t->complete_triangle_degree(), 0) << type;
+  }
+  // Points and lines of orders 1 to 10, which the reader skips.
+  const std::pair<int, int> lines[] = {{15, 1}, {1, 2},  {8, 3},  {26, 4},  {27, 5}, {28, 6},
+                                       {62, 7}, {63, 8}, {64, 9}, {65, 10}, {66, 11}};
+  for (auto [type, nodes] : lines) {
+    const MshElementType *t = msh_element_type(type);
+    ASSERT_NE(t, nullptr) << type;
+    EXPECT_LE(t->dimension, 1) << type;
+    EXPECT_EQ(t->nodes, nodes) << type;
+  }
+  EXPECT_EQ(msh_element_type(3)->complete_triangle_degree(), 0);  // quadrilateral
+  EXPECT_EQ(msh_element_type(85)->complete_triangle_degree(), 0); // "Triangle 1"
+  for (int type : {0, -1, 34, 67, 90, 138, 1000})
+    EXPECT_EQ(msh_element_type(type), nullptr) << type;
 }
 
 } // namespace
