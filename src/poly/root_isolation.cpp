@@ -14,21 +14,6 @@ struct Interval {
 
 int sign(double x) { return (x > 0) - (x < 0); }
 
-// Sign changes of the coefficients, zeros skipped. Exact zeros at the ends (roots at the ends,
-// recorded separately) are skipped too: they are not roots in the open interval.
-int sign_changes(const BernsteinPoly &q) {
-  int changes = 0, last = 0;
-  for (double x : q.coefficients()) {
-    const int s = sign(x);
-    if (s == 0)
-      continue;
-    if (last != 0 && s != last)
-      ++changes;
-    last = s;
-  }
-  return changes;
-}
-
 // The sign of q just inside its left (or right) end: its first (last) non-zero coefficient.
 int end_sign(const BernsteinPoly &q, bool left) {
   const auto &c = q.coefficients();
@@ -131,7 +116,9 @@ std::vector<Root> find_sign_change_roots(const BernsteinPoly &p, const RootOptio
   while (!stack.empty()) {
     Interval iv = std::move(stack.back());
     stack.pop_back();
-    const int v = sign_changes(iv.p);
+    // Sign changes of the coefficients, zeros skipped: exact zeros at the ends are roots recorded
+    // separately, not roots in the open interval.
+    const int v = iv.p.sign_changes();
     if (v == 0)
       continue;
     if (v == 1) {
