@@ -9,20 +9,37 @@
 namespace hoct {
 namespace {
 
-bool coefficients_below(const BernsteinPoly &r, double threshold, int skip, int depth) {
+constexpr int kMaxSegmentDegree = 64;
+
+// All Bernstein coefficients c[skip..n] below the threshold, or (with skip = 0) those of both
+// halves after up to `depth` subdivisions at 1/2.
+bool coefficients_below(const double *c, int n, double threshold, int skip, int depth) {
   bool ok = true;
-  for (int i = skip; i <= r.degree() && ok; ++i)
-    ok = r[i] < threshold;
+  for (int i = skip; i <= n && ok; ++i)
+    ok = c[i] < threshold;
   if (ok)
     return true;
-  if (skip > 0 || depth <= 0)
+  if (skip > 0 || depth <= 0 || n > kMaxSegmentDegree)
     return false;
   // The values themselves must be below at the ends for a subdivision to help.
-  if (!(r[0] < threshold) || !(r[r.degree()] < threshold))
+  if (!(c[0] < threshold) || !(c[n] < threshold))
     return false;
-  const auto [a, b] = r.split(0.5);
-  return coefficients_below(a, threshold, 0, depth - 1) &&
-         coefficients_below(b, threshold, 0, depth - 1);
+  double w[kMaxSegmentDegree + 1], left[kMaxSegmentDegree + 1], right[kMaxSegmentDegree + 1];
+  std::copy(c, c + n + 1, w);
+  left[0] = w[0];
+  right[n] = w[n];
+  for (int r = 1; r <= n; ++r) {
+    for (int i = 0; i <= n - r; ++i)
+      w[i] = 0.5 * (w[i] + w[i + 1]);
+    left[r] = w[0];
+    right[n - r] = w[n - r];
+  }
+  return coefficients_below(left, n, threshold, 0, depth - 1) &&
+         coefficients_below(right, n, threshold, 0, depth - 1);
+}
+
+bool coefficients_below(const BernsteinPoly &r, double threshold, int skip, int depth) {
+  return coefficients_below(r.coefficients().data(), r.degree(), threshold, skip, depth);
 }
 
 // Largest alpha with p + alpha w in the closed reference triangle (w != 0), and which side
@@ -71,7 +88,11 @@ PathField::PathField(BernsteinTriangle poly) : g(std::move(poly)), gu(g.du()), g
 
 bool certify_below(const BernsteinTriangle &g, const Vec2 &p, const Vec2 &q, double threshold,
                    int skip, int depth) {
-  return coefficients_below(g.restrict_to_segment(p, q), threshold, skip, depth);
+  if (g.degree() > kMaxSegmentDegree)
+    return coefficients_below(g.restrict_to_segment(p, q), threshold, skip, depth);
+  double r[kMaxSegmentDegree + 1];
+  g.restrict_to_segment(p, q, r);
+  return coefficients_below(r, g.degree(), threshold, skip, depth);
 }
 
 int connect_lower(const PathField &f, const CellNodes &cn, const std::vector<double> &values,

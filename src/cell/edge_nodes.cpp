@@ -1,11 +1,50 @@
 #include "cell/edge_nodes.hpp"
 
 #include "poly/root_isolation.hpp"
+#include "util/parallel_for.hpp"
 
 #include <algorithm>
 #include <cmath>
 
 namespace hoct {
+
+namespace {
+
+// The nodes of one edge (ascending t) and its degeneracy bits.
+uint8_t edge_nodes_of(const BernsteinPoly &p, double value_scale, const EdgeNodeOptions &opt,
+                      std::vector<EdgeNode> &nodes) {
+  uint8_t deg = kEdgeOk;
+  if (p.degree() < 1)
+    return deg;
+  const BernsteinPoly dp = p.derivative();
+  // A constant edge (derivative zero up to rounding of the values).
+  double dscale = 0, pscale = 0;
+  for (double c : dp.coefficients())
+    dscale = std::max(dscale, std::abs(c));
+  for (double c : p.coefficients())
+    pscale = std::max(pscale, std::abs(c));
+  if (dscale <= 1e-12 * pscale)
+    return deg | kEdgeConstant;
+  const std::vector<Root> roots = find_roots(dp);
+  if (roots.empty())
+    return deg;
+  const BernsteinPoly ddp = dp.derivative();
+  for (const Root &r : roots) {
+    if (r.t <= opt.vertex_tolerance || r.t >= 1 - opt.vertex_tolerance) {
+      deg |= kEdgeRootAtVertex;
+      continue; // the vertex itself is the node
+    }
+    const double second = ddp(r.t);
+    if (!r.simple)
+      deg |= kEdgeMultipleRoot;
+    else if (std::abs(second) <= opt.flat_tolerance * value_scale)
+      deg |= kEdgeFlatCriticalPoint;
+    nodes.push_back({r.t, p(r.t), second, r.simple});
+  }
+  return deg;
+}
+
+} // namespace
 
 EdgeNodes find_edge_nodes(const Topology &topo, const Field &field, const EdgeNodeOptions &opt) {
   const int64_t ne = topo.num_edges();
@@ -14,40 +53,24 @@ EdgeNodes find_edge_nodes(const Topology &topo, const Field &field, const EdgeNo
   out.degeneracy.assign(ne, kEdgeOk);
   const double value_scale = std::max({std::abs(field.min_value()), std::abs(field.max_value()),
                                        field.max_value() - field.min_value(), 1e-300});
-  for (int64_t e = 0; e < ne; ++e) {
-    const BernsteinPoly p = field.edge_polynomial(e);
-    const BernsteinPoly dp = p.derivative(), ddp = dp.derivative();
-    uint8_t deg = kEdgeOk;
-    if (p.degree() >= 1) {
-      bool zero = false;
-      // A constant edge (derivative zero up to rounding of the values).
-      double dscale = 0, pscale = 0;
-      for (double c : dp.coefficients())
-        dscale = std::max(dscale, std::abs(c));
-      for (double c : p.coefficients())
-        pscale = std::max(pscale, std::abs(c));
-      if (dscale <= 1e-12 * pscale)
-        zero = true;
-      if (zero) {
-        deg |= kEdgeConstant;
-      } else {
-        for (const Root &r : find_roots(dp)) {
-          if (r.t <= opt.vertex_tolerance || r.t >= 1 - opt.vertex_tolerance) {
-            deg |= kEdgeRootAtVertex;
-            continue; // the vertex itself is the node
-          }
-          const double second = ddp(r.t);
-          if (!r.simple)
-            deg |= kEdgeMultipleRoot;
-          else if (std::abs(second) <= opt.flat_tolerance * value_scale)
-            deg |= kEdgeFlatCriticalPoint;
-          out.nodes.push_back({r.t, p(r.t), second, r.simple});
-        }
+  // Fixed blocks of edges, each collecting its own nodes; concatenated in edge order.
+  const int64_t blocks = std::max<int64_t>(1, std::min<int64_t>(ne, 256));
+  std::vector<std::vector<EdgeNode>> block_nodes(blocks);
+  std::vector<int64_t> count(ne, 0);
+  parallel_for(blocks, opt.threads, [&](int64_t b0, int64_t b1, int) {
+    for (int64_t b = b0; b < b1; ++b)
+      for (int64_t e = ne * b / blocks; e < ne * (b + 1) / blocks; ++e) {
+        const std::size_t before = block_nodes[b].size();
+        out.degeneracy[e] =
+            edge_nodes_of(field.edge_polynomial(e), value_scale, opt, block_nodes[b]);
+        count[e] = static_cast<int64_t>(block_nodes[b].size() - before);
       }
-    }
-    out.degeneracy[e] = deg;
-    out.offset[e + 1] = static_cast<int64_t>(out.nodes.size());
-  }
+  });
+  for (int64_t e = 0; e < ne; ++e)
+    out.offset[e + 1] = out.offset[e] + count[e];
+  out.nodes.reserve(static_cast<std::size_t>(out.offset[ne]));
+  for (const auto &bn : block_nodes)
+    out.nodes.insert(out.nodes.end(), bn.begin(), bn.end());
   return out;
 }
 

@@ -38,6 +38,7 @@ struct EdgeNodes {
 struct EdgeNodeOptions {
   double vertex_tolerance = 1e-9; // a root this close to t = 0 or 1 is "at the vertex"
   double flat_tolerance = 1e-8;   // |p''| * (edge scale) below this * value scale: flat
+  int threads = 1;                // edges are independent: any thread count, same result
 };
 
 EdgeNodes find_edge_nodes(const Topology &topology, const Field &field,

@@ -8,18 +8,7 @@
 #include <stdexcept>
 
 namespace hoct {
-namespace {
-
-// One de Casteljau step: degree-n coefficients -> degree-(n-1), with barycentric weights l.
-void casteljau_step(const double *in, int n, const std::array<double, 3> &l, double *out) {
-  for (int b = 0; b <= n - 1; ++b)
-    for (int a = 0; a <= n - 1 - b; ++a)
-      out[lattice_index(n - 1, a, b)] = l[0] * in[lattice_index(n, a, b)] +
-                                        l[1] * in[lattice_index(n, a + 1, b)] +
-                                        l[2] * in[lattice_index(n, a, b + 1)];
-}
-
-} // namespace
+namespace {} // namespace
 
 BernsteinTriangle::BernsteinTriangle(int degree, std::vector<double> coefficients)
     : d_(degree), c_(std::move(coefficients)) {
@@ -123,26 +112,48 @@ void BernsteinTriangle::set_edge(int k, const BernsteinPoly &p) {
   }
 }
 
-BernsteinPoly BernsteinTriangle::restrict_to_segment(const Vec2 &p, const Vec2 &q) const {
-  // Blossom: coefficient m = g[p^(d-m), q^m]. Apply k steps with p, then d-k steps with q.
+namespace {
+
+// One de Casteljau step from degree n to n - 1 in place (see operator()).
+void casteljau_step_in_place(double *w, int n, const std::array<double, 3> &l) {
+  for (int b = 0; b <= n - 1; ++b)
+    for (int a = 0; a <= n - 1 - b; ++a)
+      w[lattice_index(n - 1, a, b)] = l[0] * w[lattice_index(n, a, b)] +
+                                      l[1] * w[lattice_index(n, a + 1, b)] +
+                                      l[2] * w[lattice_index(n, a, b + 1)];
+}
+
+} // namespace
+
+void BernsteinTriangle::restrict_to_segment(const Vec2 &p, const Vec2 &q, double *out) const {
+  // Blossom: coefficient m = g[p^(d-m), q^m]. After k steps with p, d-k steps with q give
+  // coefficient d-k.
   const auto lp = barycentric(p[0], p[1]);
   const auto lq = barycentric(q[0], q[1]);
-  std::vector<double> out(d_ + 1);
-  std::vector<double> level = c_, a(c_.size()), b(c_.size());
-  for (int k = 0; k <= d_; ++k) {
-    // `level` holds the degree-(d-k) coefficients after k steps with p.
-    const int m = d_ - k; // remaining steps, all with q -> coefficient index m
-    std::copy(level.begin(), level.begin() + lattice_size(d_ - k), a.begin());
-    for (int n = d_ - k; n > 0; --n) {
-      casteljau_step(a.data(), n, lq, b.data());
-      std::swap(a, b);
-    }
-    out[m] = a[0];
-    if (k < d_) {
-      casteljau_step(level.data(), d_ - k, lp, b.data());
-      std::copy(b.begin(), b.begin() + lattice_size(d_ - k - 1), level.begin());
-    }
+  constexpr int kStack = 91; // lattice_size(12)
+  double level_buf[kStack], work_buf[kStack];
+  std::vector<double> heap;
+  double *level = level_buf, *work = work_buf;
+  if (c_.size() > kStack) {
+    heap.resize(2 * c_.size());
+    level = heap.data();
+    work = heap.data() + c_.size();
   }
+  std::copy(c_.begin(), c_.end(), level);
+  for (int k = 0; k <= d_; ++k) {
+    const int n0 = d_ - k;
+    std::copy(level, level + lattice_size(n0), work);
+    for (int n = n0; n > 0; --n)
+      casteljau_step_in_place(work, n, lq);
+    out[n0] = work[0];
+    if (k < d_)
+      casteljau_step_in_place(level, n0, lp);
+  }
+}
+
+BernsteinPoly BernsteinTriangle::restrict_to_segment(const Vec2 &p, const Vec2 &q) const {
+  std::vector<double> out(d_ + 1);
+  restrict_to_segment(p, q, out.data());
   return BernsteinPoly(std::move(out));
 }
 

@@ -46,6 +46,8 @@ public:
   // Restriction to the segment p -> q (points in (u, v) coordinates, anywhere in the plane):
   // s(t) = g(p + t (q - p)), t in [0, 1], by blossoming.
   BernsteinPoly restrict_to_segment(const Vec2 &p, const Vec2 &q) const;
+  // The same into out[0..degree()] without allocating (for degrees up to 12; heap beyond).
+  void restrict_to_segment(const Vec2 &p, const Vec2 &q, double *out) const;
 
   // Same polynomial in degree `degree` >= d.
   BernsteinTriangle elevated(int degree) const;

@@ -20,10 +20,92 @@ Iv operator*(Iv a, Iv b) {
   return {*std::min_element(p, p + 4), *std::max_element(p, p + 4)};
 }
 
+// A box of the subdivision; its coefficients (g_u then g_v, tensor Bernstein form on the box)
+// sit at `offset` in the arena, which is used as a stack like the boxes themselves.
 struct Box {
   double u0, v0, w;
-  TensorBernstein p, q; // g_u and g_v on the box
+  std::size_t offset;
 };
+
+// A polynomial in monomial form a[i * (d+1) + j] u^i v^j, evaluated by nested Horner with a
+// rigorous bound on the rounding error.
+struct Monomial {
+  std::vector<double> a;
+  int d = 0;
+  double operator()(double u, double v) const {
+    double r = 0;
+    for (int i = d; i >= 0; --i) {
+      const double *row = &a[static_cast<std::size_t>(i) * (d + 1)];
+      double s = 0;
+      for (int j = d - i; j >= 0; --j)
+        s = s * v + row[j];
+      r = r * u + s;
+    }
+    return r;
+  }
+  // Bound on |computed - exact| of operator()(u, v): gamma_{4d+4} times the Horner sum of the
+  // absolute values (Higham, Accuracy and Stability, 5.1), with margin.
+  double error_bound(double u, double v) const {
+    const double au = std::abs(u), av = std::abs(v);
+    double r = 0;
+    for (int i = d; i >= 0; --i) {
+      const double *row = &a[static_cast<std::size_t>(i) * (d + 1)];
+      double s = 0;
+      for (int j = d - i; j >= 0; --j)
+        s = s * av + std::abs(row[j]);
+      r = r * au + s;
+    }
+    return 2 * (4 * d + 6) * std::numeric_limits<double>::epsilon() * r;
+  }
+  Monomial du() const { return derivative(true); }
+  Monomial dv() const { return derivative(false); }
+
+private:
+  Monomial derivative(bool in_u) const {
+    Monomial m;
+    m.d = std::max(d - 1, 0);
+    m.a.assign(static_cast<std::size_t>(m.d + 1) * (m.d + 1), 0.0);
+    for (int i = 0; i <= d; ++i)
+      for (int j = 0; i + j <= d; ++j) {
+        const double c = a[static_cast<std::size_t>(i) * (d + 1) + j];
+        if (in_u && i > 0)
+          m.a[static_cast<std::size_t>(i - 1) * (m.d + 1) + j] += i * c;
+        if (!in_u && j > 0)
+          m.a[static_cast<std::size_t>(i) * (m.d + 1) + (j - 1)] += j * c;
+      }
+    return m;
+  }
+};
+
+Monomial monomial_of(const BernsteinTriangle &p) { return {to_monomial(p), p.degree()}; }
+
+// True if every coefficient exceeds `margin` in absolute value with one common sign: the
+// polynomial has no zero on the box.
+bool excludes_zero(const double *c, std::size_t n, double margin) {
+  double lo = c[0], hi = c[0];
+  for (std::size_t i = 1; i < n; ++i) {
+    lo = std::min(lo, c[i]);
+    hi = std::max(hi, c[i]);
+  }
+  return lo > margin || hi < -margin;
+}
+
+// No common zero of p and q on the box if a p + b q has one sign there, with (a, b) the
+// gradient at the box's centre (where a p + b q = |grad|^2 > 0). Rounding of the combination
+// and of the coefficients (margins mp, mq) is accounted for.
+bool combination_excludes_zero(const double *p, const double *q, std::size_t n, double a, double b,
+                               double mp, double mq) {
+  const double eps = std::numeric_limits<double>::epsilon();
+  bool positive = true, negative = true;
+  for (std::size_t i = 0; i < n && (positive || negative); ++i) {
+    const double x = a * p[i], y = b * q[i], h = x + y;
+    const double margin =
+        std::abs(a) * mp + std::abs(b) * mq + 2 * eps * (std::abs(x) + std::abs(y));
+    positive = positive && h > margin;
+    negative = negative && h < -margin;
+  }
+  return positive || negative;
+}
 
 } // namespace
 
@@ -58,17 +140,23 @@ GradientZeros find_gradient_zeros(const BernsteinTriangle &g, const GradientZero
     if (ulo > 0 || uhi < 0 || vlo > 0 || vhi < 0)
       return out;
   }
-  const BernsteinTriangle guu = gu.du(), guv = gu.dv(), gvv = gv.dv();
-  const std::vector<double> muu = to_monomial(guu), muv = to_monomial(guv), mvv = to_monomial(gvv);
+  // Evaluation in monomial form (Horner) with rigorous rounding bounds; the subdivision itself
+  // works on tensor Bernstein coefficients.
+  const Monomial mu = monomial_of(gu), mv = monomial_of(gv);
+  const Monomial muu = mu.du(), muv = mu.dv(), mvv = mv.dv();
   const double eps = std::numeric_limits<double>::epsilon();
-  const double f_err = 64 * eps * scale; // bound on the rounding of a gradient evaluation
+  // The coefficients themselves carry the rounding of their computation from the data (e.g. the
+  // Lagrange -> Bernstein conversion), relative to the gradient's scale: a gradient component
+  // below this level is noise, not a certified sign.
+  const double f_err = 64 * eps * scale;
 
   // Newton's method from (u, v); gives up when the iterate leaves the square of half-width
   // `reach` around (cu, cv) (it is then heading for another zero or diverging).
-  auto newton = [&](double &u, double &v, double cu = 0.5, double cv = 0.5, double reach = 10) {
-    for (int it = 0; it < 40; ++it) {
-      const double fu = gu(u, v), fv = gv(u, v);
-      const double a = guu(u, v), b = guv(u, v), c = gvv(u, v);
+  auto newton = [&](double &u, double &v, double cu = 0.5, double cv = 0.5, double reach = 10,
+                    int max_iterations = 40) {
+    for (int it = 0; it < max_iterations; ++it) {
+      const double fu = mu(u, v), fv = mv(u, v);
+      const double a = muu(u, v), b = muv(u, v), c = mvv(u, v);
       const double det = a * c - b * b;
       if (!(std::abs(det) > 0))
         return false;
@@ -87,22 +175,23 @@ GradientZeros find_gradient_zeros(const BernsteinTriangle &g, const GradientZero
   // Krawczyk on the box centred at (cx, cy) with half-widths (rx, ry), around the point (x, y)
   // inside it: 1 = a unique zero in the box, -1 = no zero in the box, 0 = undecided.
   auto krawczyk = [&](double cx, double cy, double rx, double ry, double x, double y) {
-    const double a = guu(x, y), b = guv(x, y), c = gvv(x, y);
+    const double a = muu(x, y), b = muv(x, y), c = mvv(x, y);
     const double det = a * c - b * b;
     if (!(std::abs(det) > 0) || !std::isfinite(det))
       return 0;
     const double y00 = c / det, y01 = -b / det, y10 = -b / det, y11 = a / det;
-    const auto [uu_lo, uu_hi] = monomial_range(muu, guu.degree(), cx, cy, rx, ry);
-    const auto [uv_lo, uv_hi] = monomial_range(muv, guv.degree(), cx, cy, rx, ry);
-    const auto [vv_lo, vv_hi] = monomial_range(mvv, gvv.degree(), cx, cy, rx, ry);
+    const auto [uu_lo, uu_hi] = monomial_range(muu.a, muu.d, cx, cy, rx, ry);
+    const auto [uv_lo, uv_hi] = monomial_range(muv.a, muv.d, cx, cy, rx, ry);
+    const auto [vv_lo, vv_hi] = monomial_range(mvv.a, mvv.d, cx, cy, rx, ry);
     const Iv J00{uu_lo, uu_hi}, J01{uv_lo, uv_hi}, J10{uv_lo, uv_hi}, J11{vv_lo, vv_hi};
     // M = I - Y J(X)
     const Iv M00 = Iv{1, 1} + (-1.0) * (y00 * J00 + y01 * J10);
     const Iv M01 = (-1.0) * (y00 * J01 + y01 * J11);
     const Iv M10 = (-1.0) * (y10 * J00 + y11 * J10);
     const Iv M11 = Iv{1, 1} + (-1.0) * (y10 * J01 + y11 * J11);
-    const double fu = gu(x, y), fv = gv(x, y);
-    const Iv F0{fu - f_err, fu + f_err}, F1{fv - f_err, fv + f_err};
+    const double fu = mu(x, y), fv = mv(x, y);
+    const double eu = f_err + mu.error_bound(x, y), ev = f_err + mv.error_bound(x, y);
+    const Iv F0{fu - eu, fu + eu}, F1{fv - ev, fv + ev};
     const Iv D0{cx - rx - x, cx + rx - x}, D1{cy - ry - y, cy + ry - y};
     const Iv K0 = Iv{x, x} + (-1.0) * (y00 * F0 + y01 * F1) + M00 * D0 + M01 * D1;
     const Iv K1 = Iv{y, y} + (-1.0) * (y10 * F0 + y11 * F1) + M10 * D0 + M11 * D1;
@@ -128,24 +217,49 @@ GradientZeros find_gradient_zeros(const BernsteinTriangle &g, const GradientZero
     return false;
   };
 
-  std::vector<Box> stack;
-  stack.push_back(
-      {0.0, 0.0, 1.0, TensorBernstein::from_triangle(gu), TensorBernstein::from_triangle(gv)});
+  // Depth-first subdivision; boxes and their coefficients live on two stacks reused across
+  // calls of the same thread (no allocation per box).
+  const int m = d - 1;
+  const std::size_t sz = static_cast<std::size_t>(m + 1) * (m + 1);
+  thread_local std::vector<Box> stack;
+  thread_local std::vector<double> arena, current;
+  stack.clear();
+  arena.assign(2 * sz, 0.0);
+  current.resize(2 * sz);
+  TensorBernstein::from_monomial(mu.a.data(), m, arena.data());
+  TensorBernstein::from_monomial(mv.a.data(), m, arena.data() + sz);
+  stack.push_back({0.0, 0.0, 1.0, 0});
+  // Bounds on the rounding of the subdivided coefficients (conversion and de Casteljau steps),
+  // so that a sign test never excludes a box on rounding noise.
+  double mp = 0, mq = 0;
+  for (std::size_t i = 0; i < sz; ++i) {
+    mp = std::max(mp, std::abs(arena[i]));
+    mq = std::max(mq, std::abs(arena[sz + i]));
+  }
+  // One level for both components: a component whose coefficients are all at the noise level of
+  // the gradient gives no certified sign.
+  mp = mq = 64 * (m + 1) * (m + 1) * eps * std::max(mp, mq);
   const double tol = opt.boundary_tolerance;
   int64_t deep = 0;
   while (!stack.empty()) {
-    Box b = std::move(stack.back());
+    const Box b = stack.back();
     stack.pop_back();
+    std::copy(arena.begin() + static_cast<std::ptrdiff_t>(b.offset),
+              arena.begin() + static_cast<std::ptrdiff_t>(b.offset + 2 * sz), current.begin());
+    arena.resize(b.offset);
     if (++out.boxes > opt.max_boxes) {
       out.budget_exhausted = true;
       break;
     }
     if (b.u0 + b.v0 > 1 + tol)
       continue; // entirely outside the triangle
-    if (b.p.excludes_zero() || b.q.excludes_zero())
+    if (excludes_zero(current.data(), sz, mp) || excludes_zero(current.data() + sz, sz, mq))
       continue;
     const double h = 0.5 * b.w;
     const double cx = b.u0 + h, cy = b.v0 + h;
+    if (combination_excludes_zero(current.data(), current.data() + sz, sz, mu(cx, cy), mv(cx, cy),
+                                  mp, mq))
+      continue;
     // Inside a box where Krawczyk already proved a unique zero (found and recorded): nothing
     // else to find here.
     bool covered = false;
@@ -158,7 +272,7 @@ GradientZeros find_gradient_zeros(const BernsteinTriangle &g, const GradientZero
       // Certify on the box inflated by a quarter, so zeros on box edges are interior.
       const double r = 1.25 * h;
       double x = cx, y = cy;
-      if (!newton(x, y, cx, cy, 2 * r) || std::abs(x - cx) > r || std::abs(y - cy) > r) {
+      if (!newton(x, y, cx, cy, 2 * r, 12) || std::abs(x - cx) > r || std::abs(y - cy) > r) {
         x = cx;
         y = cy;
       }
@@ -180,9 +294,18 @@ GradientZeros find_gradient_zeros(const BernsteinTriangle &g, const GradientZero
       found.push_back({cx, cy, cx, cy, h, h, false});
       continue;
     }
-    const auto qp = b.p.quarters(), qq = b.q.quarters();
+    // Children k = 3..0 on top of the stacks (k = 0 is examined next).
+    const std::size_t base = arena.size();
+    arena.resize(base + 8 * sz);
+    for (int part = 0; part < 2; ++part) {
+      double *q[4];
+      for (int k = 0; k < 4; ++k)
+        q[k] = arena.data() + base + static_cast<std::size_t>(3 - k) * 2 * sz + part * sz;
+      TensorBernstein::split_quarters(current.data() + part * sz, m, m, q);
+    }
     for (int k = 3; k >= 0; --k)
-      stack.push_back({b.u0 + (k & 1) * h, b.v0 + (k >> 1) * h, h, qp[k], qq[k]});
+      stack.push_back({b.u0 + (k & 1) * h, b.v0 + (k >> 1) * h, h,
+                       base + static_cast<std::size_t>(3 - k) * 2 * sz});
   }
 
   // Keep zeros in the closed triangle (within tolerance); merge unresolved neighbours.

@@ -63,10 +63,17 @@ std::vector<Root> find_roots(const BernsteinPoly &p, const RootOptions &opt,
   std::vector<Root> roots = find_sign_change_roots(p, opt, identically_zero);
   if (opt.near_zero <= 0 || p.degree() < 2 || (identically_zero && *identically_zero))
     return roots;
-  double scale = 0;
-  for (double c : p.coefficients())
+  double scale = 0, lo = p[0], hi = p[0];
+  for (double c : p.coefficients()) {
     scale = std::max(scale, std::abs(c));
+    lo = std::min(lo, c);
+    hi = std::max(hi, c);
+  }
   if (scale == 0)
+    return roots;
+  // p(t) lies between its smallest and largest coefficient: if those keep |p| above the
+  // tangency threshold, no double root can hide anywhere on [0, 1].
+  if (lo > opt.near_zero * scale || hi < -opt.near_zero * scale)
     return roots;
   RootOptions inner = opt;
   inner.near_zero = 0;
@@ -101,8 +108,11 @@ std::vector<Root> find_sign_change_roots(const BernsteinPoly &p, const RootOptio
     *identically_zero = zero_poly;
   if (zero_poly || p.degree() < 1)
     return roots;
-  const BernsteinPoly dp = p.derivative();
   const int n = p.degree();
+  // Descartes: no sign change and non-zero ends, no root (the common case, without allocating).
+  if (p[0] != 0 && p[n] != 0 && p.sign_changes() == 0)
+    return roots;
+  const BernsteinPoly dp = p.derivative();
   auto exact_root = [&](double t) {
     const bool simple = dp(t) != 0;
     roots.push_back({t, t, t, simple, simple ? 1 : 2});

@@ -33,20 +33,25 @@ TensorBernstein::TensorBernstein(int m, int n, std::vector<double> c)
     throw std::invalid_argument("TensorBernstein: bad degree or coefficient count");
 }
 
-TensorBernstein TensorBernstein::from_triangle(const BernsteinTriangle &p) {
-  const int d = p.degree();
-  const std::vector<double> mono = to_monomial(p);
-  // Monomials -> tensor Bernstein of bidegree (d, d): u^a = sum_{i>=a} C(i,a)/C(d,a) B_i^d(u).
-  std::vector<double> t((d + 1) * (d + 1), 0.0);
+void TensorBernstein::from_monomial(const double *mono, int d, double *out) {
+  // u^a = sum_{i>=a} C(i,a)/C(d,a) B_i^d(u), likewise in v.
   for (int i = 0; i <= d; ++i)
     for (int j = 0; j <= d; ++j) {
       double s = 0;
-      for (int a = 0; a <= i; ++a)
+      for (int a = 0; a <= i; ++a) {
+        const double wa = binomial(i, a) / binomial(d, a);
         for (int b = 0; b <= j && a + b <= d; ++b)
-          s += binomial(i, a) / binomial(d, a) * binomial(j, b) / binomial(d, b) *
-               mono[a * (d + 1) + b];
-      t[i * (d + 1) + j] = s;
+          s += wa * binomial(j, b) / binomial(d, b) * mono[a * (d + 1) + b];
+      }
+      out[i * (d + 1) + j] = s;
     }
+}
+
+TensorBernstein TensorBernstein::from_triangle(const BernsteinTriangle &p) {
+  const int d = p.degree();
+  const std::vector<double> mono = to_monomial(p);
+  std::vector<double> t((d + 1) * (d + 1), 0.0);
+  from_monomial(mono.data(), d, t.data());
   return TensorBernstein(d, d, std::move(t));
 }
 
@@ -87,20 +92,27 @@ TensorBernstein TensorBernstein::dt() const {
   return TensorBernstein(m_, n_ - 1, std::move(c));
 }
 
+void TensorBernstein::split_quarters(const double *b, int m, int n, double *const q[4]) {
+  // Split along s into q[0] (s low) and q[1] (s high), then each along t in place into
+  // (q[0], q[2]) and (q[1], q[3]).
+  const int w = n + 1;
+  for (int j = 0; j <= n; ++j)
+    split_row(&b[j], m, w, &q[0][j], &q[1][j], w);
+  for (int half = 0; half < 2; ++half)
+    for (int i = 0; i <= m; ++i)
+      split_row(&q[half][i * w], n, 1, &q[half][i * w], &q[2 + half][i * w], 1);
+}
+
 std::array<TensorBernstein, 4> TensorBernstein::quarters() const {
-  const int w = n_ + 1, sz = (m_ + 1) * w;
-  std::vector<double> lo_s(sz), hi_s(sz);
-  for (int j = 0; j <= n_; ++j)
-    split_row(&b_[j], m_, w, &lo_s[j], &hi_s[j], w);
+  const std::size_t sz = b_.size();
+  std::array<std::vector<double>, 4> c;
+  for (auto &v : c)
+    v.resize(sz);
+  double *const out[4] = {c[0].data(), c[1].data(), c[2].data(), c[3].data()};
+  split_quarters(b_.data(), m_, n_, out);
   std::array<TensorBernstein, 4> q;
-  std::vector<double> a(sz), b(sz);
-  for (int half = 0; half < 2; ++half) {
-    const std::vector<double> &src = half == 0 ? lo_s : hi_s;
-    for (int i = 0; i <= m_; ++i)
-      split_row(&src[i * w], n_, 1, &a[i * w], &b[i * w], 1);
-    q[half] = TensorBernstein(m_, n_, a);
-    q[2 + half] = TensorBernstein(m_, n_, b);
-  }
+  for (int k = 0; k < 4; ++k)
+    q[k] = TensorBernstein(m_, n_, std::move(c[k]));
   return q;
 }
 

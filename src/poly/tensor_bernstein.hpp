@@ -20,6 +20,9 @@ public:
 
   // The triangle polynomial as bidegree (d, d) on [0,1]^2.
   static TensorBernstein from_triangle(const BernsteinTriangle &p);
+  // The same from monomial coefficients mono[a * (d+1) + b] of u^a v^b (a + b <= d): writes the
+  // (d+1)^2 tensor coefficients to out (no allocation).
+  static void from_monomial(const double *mono, int d, double *out);
 
   int degree_u() const { return m_; }
   int degree_v() const { return n_; }
@@ -33,6 +36,9 @@ public:
   TensorBernstein dt() const;
   // The four quarter boxes: (s in [0,.5] or [.5,1]) x (t likewise), order (0,0),(1,0),(0,1),(1,1).
   std::array<TensorBernstein, 4> quarters() const;
+  // The same on raw coefficient arrays of bidegree (m, n) (no allocation): q[k] receives the
+  // (m+1)(n+1) coefficients of quarter k; the four outputs must not overlap b.
+  static void split_quarters(const double *b, int m, int n, double *const q[4]);
   std::pair<double, double> bounds() const;
   // True if every coefficient is > 0, or every one is < 0: no zero in the box.
   bool excludes_zero() const;

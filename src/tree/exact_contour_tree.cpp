@@ -52,7 +52,9 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
     if (opt.progress)
       opt.progress(phase, seconds(a, b));
   };
-  const EdgeNodes en = find_edge_nodes(topo, field);
+  EdgeNodeOptions edge_options;
+  edge_options.threads = thread_count(opt.threads);
+  const EdgeNodes en = find_edge_nodes(topo, field, edge_options);
   const int64_t edge_base = nv;
   const auto t1 = clock_type::now();
   report("edge critical points", t0, t1);
