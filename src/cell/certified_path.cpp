@@ -86,6 +86,14 @@ PathField::PathField(BernsteinTriangle poly) : g(std::move(poly)), gu(g.du()), g
   margin = 1e-12 * std::max(scale, 1e-300);
 }
 
+PathField PathField::negated() const {
+  PathField f = *this;
+  for (BernsteinTriangle *p : {&f.g, &f.gu, &f.gv})
+    for (double &c : p->coefficients())
+      c = -c;
+  return f;
+}
+
 bool certify_below(const BernsteinTriangle &g, const Vec2 &p, const Vec2 &q, double threshold,
                    int skip, int depth) {
   if (g.degree() > kMaxSegmentDegree)

@@ -24,7 +24,10 @@ struct PathCounters {
 // The cell's field prepared for path computations (g and its gradient), in one orientation:
 // for upper connections pass -g and negated node values.
 struct PathField {
+  PathField() = default;
   explicit PathField(BernsteinTriangle g);
+  // The field -g (for ascending paths), without recomputing the derivatives.
+  PathField negated() const;
   BernsteinTriangle g, gu, gv;
   double margin = 0; // certified strict inequalities use level - margin
 };

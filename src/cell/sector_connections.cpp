@@ -26,10 +26,7 @@ SectorResult connect_sectors(const BernsteinTriangle &g, const CellNodes &cn,
                              bool with_paths) {
   SectorResult out;
   const PathField down(g);
-  BernsteinTriangle neg = g;
-  for (double &c : neg.coefficients())
-    c = -c;
-  const PathField up(neg);
+  const PathField up = down.negated();
   std::vector<double> vals(cn.nodes.size()), neg_vals(cn.nodes.size());
   for (std::size_t i = 0; i < cn.nodes.size(); ++i) {
     vals[i] = cn.nodes[i].value;

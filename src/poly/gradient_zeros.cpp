@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 namespace hoct {
 namespace {
@@ -118,11 +119,20 @@ GradientZeros find_gradient_zeros(const BernsteinTriangle &g, const GradientZero
   }
   if (d == 1)
     return out; // a non-constant linear field has no critical point
-  const BernsteinTriangle gu = g.du(), gv = g.dv();
-  double scale = 0;
-  for (const auto *c : {&gu.coefficients(), &gv.coefficients()})
-    for (double x : *c)
-      scale = std::max(scale, std::abs(x));
+  // The gradient's Bernstein coefficients d (c[a+1,b] - c[a,b]) and d (c[a,b+1] - c[a,b]),
+  // scanned without building them first.
+  double scale = 0, ulo = INFINITY, uhi = -INFINITY, vlo = INFINITY, vhi = -INFINITY;
+  for (int b = 0; b < d; ++b)
+    for (int a = 0; a + b < d; ++a) {
+      const double c = g.coefficient(a, b);
+      const double gu_ab = d * (g.coefficient(a + 1, b) - c),
+                   gv_ab = d * (g.coefficient(a, b + 1) - c);
+      ulo = std::min(ulo, gu_ab);
+      uhi = std::max(uhi, gu_ab);
+      vlo = std::min(vlo, gv_ab);
+      vhi = std::max(vhi, gv_ab);
+    }
+  scale = std::max({-ulo, uhi, -vlo, vhi});
   // Constant up to rounding: the gradient is round-off of the values (e.g. a constant field
   // converted from Lagrange to Bernstein form).
   double value_scale = 0;
@@ -134,12 +144,9 @@ GradientZeros find_gradient_zeros(const BernsteinTriangle &g, const GradientZero
   }
   // Most cells of a smooth field: one gradient component keeps its sign on the whole closed
   // triangle (its Bernstein coefficients share a sign), so there is no critical point at all.
-  {
-    const auto [ulo, uhi] = gu.bounds();
-    const auto [vlo, vhi] = gv.bounds();
-    if (ulo > 0 || uhi < 0 || vlo > 0 || vhi < 0)
-      return out;
-  }
+  if (ulo > 0 || uhi < 0 || vlo > 0 || vhi < 0)
+    return out;
+  const BernsteinTriangle gu = g.du(), gv = g.dv();
   // Evaluation in monomial form (Horner) with rigorous rounding bounds; the subdivision itself
   // works on tensor Bernstein coefficients.
   const Monomial mu = monomial_of(gu), mv = monomial_of(gv);
@@ -220,6 +227,8 @@ GradientZeros find_gradient_zeros(const BernsteinTriangle &g, const GradientZero
   // Depth-first subdivision; boxes and their coefficients live on two stacks reused across
   // calls of the same thread (no allocation per box).
   const int m = d - 1;
+  if (m > 60)
+    throw std::invalid_argument("find_gradient_zeros: degree above 61 is not supported");
   const std::size_t sz = static_cast<std::size_t>(m + 1) * (m + 1);
   thread_local std::vector<Box> stack;
   thread_local std::vector<double> arena, current;
@@ -272,7 +281,7 @@ GradientZeros find_gradient_zeros(const BernsteinTriangle &g, const GradientZero
       // Certify on the box inflated by a quarter, so zeros on box edges are interior.
       const double r = 1.25 * h;
       double x = cx, y = cy;
-      if (!newton(x, y, cx, cy, 2 * r, 12) || std::abs(x - cx) > r || std::abs(y - cy) > r) {
+      if (!newton(x, y, cx, cy, 2 * r, 3) || std::abs(x - cx) > r || std::abs(y - cy) > r) {
         x = cx;
         y = cy;
       }

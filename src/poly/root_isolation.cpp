@@ -29,19 +29,45 @@ int end_sign(const BernsteinPoly &q, bool left) {
   return 0;
 }
 
-// The single root of p in (lo, hi), with p of sign `slo` just right of lo.
-double refine_simple(const BernsteinPoly &p, const BernsteinPoly &dp, double lo, double hi,
-                     int slo) {
+// p(t) and p'(t) in one de Casteljau pass: the last two intermediate values give the derivative.
+void value_and_slope(const BernsteinPoly &p, double t, double &value, double &slope) {
+  const int n = p.degree();
+  const auto &c = p.coefficients();
+  if (n == 0) {
+    value = c[0];
+    slope = 0;
+    return;
+  }
+  double stack_buf[32];
+  std::vector<double> heap;
+  double *w = stack_buf;
+  if (n + 1 > 32) {
+    heap.assign(c.begin(), c.end());
+    w = heap.data();
+  } else {
+    std::copy(c.begin(), c.end(), w);
+  }
+  const double s = 1.0 - t;
+  for (int r = 1; r < n; ++r)
+    for (int i = 0; i <= n - r; ++i)
+      w[i] = s * w[i] + t * w[i + 1];
+  value = s * w[0] + t * w[1];
+  slope = n * (w[1] - w[0]);
+}
+
+// The single root of p in (lo, hi), with p of sign `slo` just right of lo: safeguarded Newton
+// (bisection whenever a step leaves the bracket).
+double refine_simple(const BernsteinPoly &p, double lo, double hi, int slo) {
   double x = 0.5 * (lo + hi);
   for (int it = 0; it < 300; ++it) {
-    const double fx = p(x);
+    double fx, d;
+    value_and_slope(p, x, fx, d);
     if (fx == 0)
       return x;
     if (sign(fx) == slo)
       lo = x;
     else
       hi = x;
-    const double d = dp(x);
     double next = d != 0 ? x - fx / d : 0.5 * (lo + hi);
     if (!(next > lo && next < hi))
       next = 0.5 * (lo + hi);
@@ -112,15 +138,21 @@ std::vector<Root> find_sign_change_roots(const BernsteinPoly &p, const RootOptio
   // Descartes: no sign change and non-zero ends, no root (the common case, without allocating).
   if (p[0] != 0 && p[n] != 0 && p.sign_changes() == 0)
     return roots;
-  const BernsteinPoly dp = p.derivative();
   auto exact_root = [&](double t) {
-    const bool simple = dp(t) != 0;
+    double value, slope;
+    value_and_slope(p, t, value, slope);
+    const bool simple = slope != 0;
     roots.push_back({t, t, t, simple, simple ? 1 : 2});
   };
   if (p[0] == 0)
     exact_root(0.0);
   if (p[n] == 0)
     exact_root(1.0);
+  // One sign change: exactly one root in (0, 1), simple (the common case, no subdivision).
+  if (p[0] != 0 && p[n] != 0 && p.sign_changes() == 1) {
+    roots.push_back({refine_simple(p, 0.0, 1.0, sign(p[0])), 0.0, 1.0, true, 1});
+    return roots;
+  }
   std::vector<Interval> stack;
   stack.push_back({0.0, 1.0, p});
   while (!stack.empty()) {
@@ -132,7 +164,7 @@ std::vector<Root> find_sign_change_roots(const BernsteinPoly &p, const RootOptio
     if (v == 0)
       continue;
     if (v == 1) {
-      const double t = refine_simple(p, dp, iv.a, iv.b, end_sign(iv.p, true));
+      const double t = refine_simple(p, iv.a, iv.b, end_sign(iv.p, true));
       roots.push_back({t, iv.a, iv.b, true, 1});
       continue;
     }

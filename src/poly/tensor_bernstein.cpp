@@ -12,11 +12,15 @@ namespace {
 
 // In-place de Casteljau split of a strided row of n+1 values at 1/2: left and right halves.
 void split_row(const double *in, int n, int stride, double *left, double *right, int ostride) {
-  double w[64] = {};
+  if (n <= 0 || n >= 64) { // degree 0 (the constructor bounds degrees by 60)
+    left[0] = right[0] = in[0];
+    return;
+  }
+  double w[64];
   for (int i = 0; i <= n; ++i)
     w[i] = in[i * stride];
-  left[0] = w[0];
-  right[n * ostride] = w[n];
+  left[0] = in[0];
+  right[n * ostride] = in[n * stride]; // read before any write to in but left[0] = in[0]
   for (int r = 1; r <= n; ++r) {
     for (int i = 0; i <= n - r; ++i)
       w[i] = 0.5 * (w[i] + w[i + 1]);
@@ -92,7 +96,59 @@ TensorBernstein TensorBernstein::dt() const {
   return TensorBernstein(m_, n_ - 1, std::move(c));
 }
 
+namespace {
+
+// split_row for a compile-time degree N (unrolled; the subdivision's inner loop).
+template <int N>
+void split_row_fixed(const double *in, int stride, double *left, double *right, int ostride) {
+  double w[N + 1];
+  for (int i = 0; i <= N; ++i)
+    w[i] = in[i * stride];
+  left[0] = w[0];
+  right[N * ostride] = w[N];
+  for (int r = 1; r <= N; ++r) {
+    for (int i = 0; i <= N - r; ++i)
+      w[i] = 0.5 * (w[i] + w[i + 1]);
+    left[r * ostride] = w[0];
+    right[(N - r) * ostride] = w[N - r];
+  }
+}
+
+template <int M> void split_quarters_fixed(const double *b, double *const q[4]) {
+  constexpr int w = M + 1;
+  for (int j = 0; j <= M; ++j)
+    split_row_fixed<M>(&b[j], w, &q[0][j], &q[1][j], w);
+  for (int half = 0; half < 2; ++half)
+    for (int i = 0; i <= M; ++i)
+      split_row_fixed<M>(&q[half][i * w], 1, &q[half][i * w], &q[2 + half][i * w], 1);
+}
+
+} // namespace
+
 void TensorBernstein::split_quarters(const double *b, int m, int n, double *const q[4]) {
+  // Equal small degrees (the gradient of cells up to degree 9): unrolled versions.
+  if (m == n) {
+    switch (m) {
+    case 1:
+      return split_quarters_fixed<1>(b, q);
+    case 2:
+      return split_quarters_fixed<2>(b, q);
+    case 3:
+      return split_quarters_fixed<3>(b, q);
+    case 4:
+      return split_quarters_fixed<4>(b, q);
+    case 5:
+      return split_quarters_fixed<5>(b, q);
+    case 6:
+      return split_quarters_fixed<6>(b, q);
+    case 7:
+      return split_quarters_fixed<7>(b, q);
+    case 8:
+      return split_quarters_fixed<8>(b, q);
+    default:
+      break;
+    }
+  }
   // Split along s into q[0] (s low) and q[1] (s high), then each along t in place into
   // (q[0], q[2]) and (q[1], q[3]).
   const int w = n + 1;
