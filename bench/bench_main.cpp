@@ -1,7 +1,13 @@
-// hoct's benchmark (not a test): times the exact contour tree on the thesis' datasets and the
-// PL contour tree on large refined meshes, as medians of repeated runs, and prints Markdown
-// tables for docs/PERFORMANCE.md. Run it with bench/run.
+// hoct's benchmark (not a test; run it with bench/run): the exact contour tree on the thesis'
+// datasets against the thesis' times and against hoct's PL tree of the 16x refinement, its
+// scaling on random fields up to 4 million cells for degrees 2, 3 and 5 with one and two
+// threads, phase by phase with peak memory, and the PL tree on large meshes. Prints Markdown
+// for docs/PERFORMANCE.md; medians of --runs runs.
+#include "bench_pipeline.hpp"
+#include "bench_support.hpp"
+
 #include "datasets/datasets.hpp"
+#include "io/vtu_writer.hpp"
 #include "mesh/mesh.hpp"
 #include "pl/pl_contour_tree.hpp"
 #include "pl/pl_mesh.hpp"
@@ -10,134 +16,213 @@
 
 #include <CLI/CLI.hpp>
 
-#include <algorithm>
-#include <chrono>
 #include <cstdio>
-#include <fstream>
-#include <functional>
 #include <map>
 #include <string>
 #include <vector>
 
 using namespace hoct;
-using clock_type = std::chrono::steady_clock;
+using namespace hoct::bench;
 
 namespace {
 
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
+struct Settings {
+  int runs = 5;
+  bool quick = false;
+  std::vector<std::string> sections = {"datasets", "scaling", "pl"};
+  std::vector<int> degrees = {2, 3, 5};
+  std::vector<double> sizes = {1e4, 1e5, 1e6, 4e6};
+  std::vector<int> threads = {1, 2};
+};
+
+bool wants(const Settings &s, const std::string &section) {
+  for (const auto &x : s.sections)
+    if (x == section)
+      return true;
+  return false;
 }
 
-// Median wall time of `runs` calls of f (seconds).
-double time_median(int runs, const std::function<void()> &f) {
-  std::vector<double> t;
+std::vector<PipelineResult> pipeline_runs(const std::string &vtu, int threads, bool vtp, int runs,
+                                          const ScratchDir &scratch) {
+  std::vector<PipelineResult> out;
+  for (int i = 0; i < runs; ++i)
+    out.push_back(run_pipeline(vtu, threads, vtp, scratch));
+  return out;
+}
+
+// Exact tree and PL tree of the k = 4 refinement, interleaved so that the machine's noise hits
+// both alike; medians of the computation alone (mesh and refinement built before).
+std::pair<double, double> exact_vs_pl(const Mesh &mesh, const PlMesh &pl, int threads, int runs) {
+  std::vector<double> te, tp;
+  ExactTreeOptions eo;
+  eo.threads = threads;
   for (int i = 0; i < runs; ++i) {
-    const auto a = clock_type::now();
-    f();
-    t.push_back(std::chrono::duration<double>(clock_type::now() - a).count());
+    auto t = clock_type::now();
+    const TreeResult a = exact_contour_tree(mesh, eo);
+    te.push_back(seconds_since(t));
+    t = clock_type::now();
+    const TreeResult b = pl_contour_tree(pl, false, "");
+    tp.push_back(seconds_since(t));
   }
-  return median(t);
+  return {median(te), median(tp)};
 }
 
-double stat(const TreeResult &t, const std::string &name) {
-  for (const auto &[k, v] : t.stats)
-    if (k == name)
-      return v;
-  return 0;
+void datasets_section(const Settings &s) {
+  const std::vector<std::pair<std::string, double>> thesis = {{"conductor", 962.2},
+                                                              {"gauss", 56.7},
+                                                              {"heater", 10678.1},
+                                                              {"sphere", 206.9},
+                                                              {"two-triangle", 0.193}};
+  const int runs = s.quick ? 3 : std::max(s.runs, 11); // small inputs: more runs are cheap
+  std::printf("## Thesis datasets: `hoct tree FILE.vtu --json J --vtp V`, phase by phase "
+              "(1 thread, median of %d runs, seconds)\n\n",
+              runs);
+  std::printf("| dataset | cells | degree | nodes | read | mesh + Bernstein | critical points | "
+              "connections | sweeps | merge | write | total | exact tree | thesis | speed-up "
+              "(tree) | speed-up (total) |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|"
+              "---|---|---|\n");
+  struct Row {
+    std::string name;
+    double t1 = 0, t2 = 0, c1 = 0, c2 = 0;
+    double e1 = 0, p1 = 0, e2 = 0, p2 = 0, refine = 0;
+  };
+  std::vector<Row> rows;
+  for (const auto &[name, t_thesis] : thesis) {
+    ScratchDir scratch;
+    const MeshInput input = generate_dataset(name, DatasetOptions{});
+    const std::string vtu = scratch.file(name + ".vtu");
+    write_vtu(vtu, input);
+    const Mesh mesh = build_mesh(input);
+    const auto t = clock_type::now();
+    const PlMesh pl = refine(mesh, 4);
+    Row row{name};
+    row.refine = seconds_since(t);
+    PipelineResult m1;
+    for (int threads : s.threads) {
+      const PipelineResult m = median_of(pipeline_runs(vtu, threads, true, runs, scratch));
+      const auto [e, p] = exact_vs_pl(mesh, pl, threads, runs);
+      if (threads == 1) {
+        m1 = m;
+        row.t1 = m.tree, row.c1 = m.cell_phase(), row.e1 = e, row.p1 = p;
+      } else {
+        row.t2 = m.tree, row.c2 = m.cell_phase(), row.e2 = e, row.p2 = p;
+      }
+    }
+    std::printf("| %s | %lld | %d | %zu | %.4f | %.4f | %.4f | %.4f | %.4f | %.4f | %.4f | %.4f | "
+                "%.5f | %.1f | %.0fx | %.0fx |\n",
+                name.c_str(), static_cast<long long>(m1.cells), mesh.field.max_degree(), m1.nodes,
+                m1.read, m1.mesh, m1.critical, m1.connections, m1.sweeps, m1.merge, m1.write,
+                m1.total, m1.tree, t_thesis, t_thesis / m1.tree, t_thesis / m1.total);
+    std::fflush(stdout);
+    rows.push_back(row);
+  }
+  std::printf("\n### Exact tree versus hoct's PL tree of the k = 4 refinement (16x the "
+              "triangles), interleaved runs (median of %d)\n\n",
+              runs);
+  std::printf("| dataset | exact, 1 thread | PL k=4 | exact / PL (1 thread) | exact, 2 threads | "
+              "exact / PL (2 threads) | PL refinement built in | cell phase 1 -> 2 threads |\n"
+              "|---|---|---|---|---|---|---|---|\n");
+  for (const Row &r : rows)
+    std::printf("| %s | %.5f | %.5f | %.2f | %.5f | %.2f | %.4f | %.2fx |\n", r.name.c_str(), r.e1,
+                r.p1, r.e1 / r.p1, r.e2, r.e2 / r.p2, r.refine, r.c2 > 0 ? r.c1 / r.c2 : 0.0);
+  std::printf("\n(The PL tree has no parallel phase: it runs on one thread in both columns.)\n\n");
 }
 
-long peak_rss_kib() {
-  std::ifstream f("/proc/self/status");
-  std::string line;
-  while (std::getline(f, line))
-    if (line.rfind("VmHWM:", 0) == 0)
-      return std::stol(line.substr(6));
-  return -1;
+void scaling_section(const Settings &s) {
+  std::printf("## Scaling on `random` fields: `hoct tree FILE.vtu --json J` phase by phase "
+              "(seconds; medians of %d runs up to 1e5 cells, %d above)\n\n",
+              s.runs, std::min(s.runs, 3));
+  std::printf(
+      "| degree | cells | graph nodes | tree nodes | read | mesh + Bernstein | critical "
+      "points | connections | sweeps | merge | write | total | us/cell (tree) | cells/s "
+      "(total) | peak MiB (`hoct tree`) | bytes/cell | tree, 2 threads | cell phase 1 -> 2 threads "
+      "|\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+  for (int degree : s.degrees)
+    for (double size : s.sizes) {
+      ScratchDir scratch;
+      const std::string vtu = scratch.file("random.vtu");
+      {
+        DatasetOptions o;
+        o.cells = static_cast<long long>(size);
+        o.degree = degree;
+        write_vtu(vtu, generate_dataset("random", o));
+      }
+      const int runs = size > 1.5e5 ? std::min(s.runs, 3) : s.runs;
+      PipelineResult m1, m2;
+      for (int threads : s.threads) {
+        const PipelineResult m = median_of(pipeline_runs(vtu, threads, false, runs, scratch));
+        (threads == 1 ? m1 : m2) = m;
+      }
+      const double cells = static_cast<double>(m1.cells);
+      // Peak memory of the CLI doing the same job in a process of its own.
+      const ProcessPeak peak = run_process({executable_dir() + "/hoct", "tree", vtu, "--json",
+                                            scratch.file("cli.json"), "--threads", "1", "-q"});
+      std::printf("| %d | %lld | %lld | %zu | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f | "
+                  "%.3f | %.2f | %.0f | %.0f | %.0f | %.3f | %.2fx |\n",
+                  degree, static_cast<long long>(m1.cells), static_cast<long long>(m1.graph_nodes),
+                  m1.nodes, m1.read, m1.mesh, m1.critical, m1.connections, m1.sweeps, m1.merge,
+                  m1.write, m1.total, 1e6 * m1.tree / cells, cells / m1.total,
+                  peak.max_rss_kib / 1024.0, 1024.0 * peak.max_rss_kib / cells, m2.tree,
+                  m2.cell_phase() > 0 ? m1.cell_phase() / m2.cell_phase() : 0.0);
+      std::fflush(stdout);
+    }
+  std::printf("\n");
+}
+
+void pl_section(const Settings &s) {
+  std::printf("## PL contour tree on large meshes (degree-1 `random` fields; median of %d "
+              "runs)\n\n",
+              s.runs);
+  std::printf("| vertices | triangles | graph (s) | sweeps (s) | merge (s) | total (s) |\n"
+              "|---|---|---|---|---|---|\n");
+  for (long long cells : s.quick ? std::vector<long long>{500000}
+                                 : std::vector<long long>{500000, 2000000, 8000000}) {
+    DatasetOptions o;
+    o.cells = cells;
+    o.degree = 1;
+    const PlMesh pl = split_lagrange_cells(generate_dataset("random", o));
+    std::vector<double> g, sw, m, total;
+    for (int i = 0; i < s.runs; ++i) {
+      const auto t = clock_type::now();
+      const TreeResult r = pl_contour_tree(pl, false, "");
+      total.push_back(seconds_since(t));
+      g.push_back(stat(r, "time_graph_s"));
+      sw.push_back(stat(r, "time_sweeps_s"));
+      m.push_back(stat(r, "time_merge_s") + stat(r, "time_pairs_s"));
+    }
+    std::printf("| %lld | %zu | %.3f | %.3f | %.3f | %.3f |\n",
+                static_cast<long long>(pl.num_vertices()), pl.triangles.size(), median(g),
+                median(sw), median(m), median(total));
+    std::fflush(stdout);
+  }
+  std::printf("\n");
 }
 
 } // namespace
 
 int main(int argc, char **argv) {
-  CLI::App app{"hoct benchmark"};
-  int runs = 5;
-  bool quick = false;
-  app.add_option("--runs", runs, "Repetitions per measurement (median reported)");
-  app.add_flag("--quick", quick, "Smaller sizes (a smoke run)");
+  CLI::App app{"hoct benchmark: prints Markdown tables for docs/PERFORMANCE.md"};
+  Settings s;
+  app.add_option("--runs", s.runs, "Repetitions per measurement (medians are reported)")
+      ->check(CLI::Range(1, 1000));
+  app.add_flag("--quick", s.quick, "A smoke run: small sizes, few runs");
+  app.add_option("--sections", s.sections, "Sections to run: datasets, scaling, pl")
+      ->delimiter(',');
+  app.add_option("--degrees", s.degrees, "Degrees of the scaling section")->delimiter(',');
+  app.add_option("--sizes", s.sizes, "Cell counts of the scaling section, e.g. 1e4,1e5")
+      ->delimiter(',');
   CLI11_PARSE(app, argc, argv);
-
-  // The thesis' Table 5.1 (seconds).
-  const std::map<std::string, double> thesis = {{"conductor", 962.2},
-                                                {"gauss", 56.7},
-                                                {"heater", 10678.1},
-                                                {"sphere", 206.9},
-                                                {"two-triangle", 0.193}};
-  std::printf("## Exact contour tree on the thesis' datasets (median of %d runs, 1 thread)\n\n",
-              runs);
-  std::printf("| dataset | cells | degree | nodes | fallback cells | exact tree (s) | thesis (s) | "
-              "speed-up | PL tree of k=4 refinement (s) | exact / PL |\n");
-  std::printf("|---|---|---|---|---|---|---|---|---|---|\n");
-  for (const auto &[name, t_thesis] : thesis) {
-    DatasetOptions o;
-    const MeshInput in = generate_dataset(name, o);
-    const Mesh mesh = build_mesh(in);
-    TreeResult tree;
-    const double t_exact = time_median(runs, [&] { tree = exact_contour_tree(mesh); });
-    const PlMesh pl = refine(mesh, 4);
-    const double t_pl = time_median(runs, [&] { pl_contour_tree(pl, false, ""); });
-    std::printf("| %s | %lld | %d | %zu | %.0f | %.4f | %.1f | %.0fx | %.4f | %.2f |\n",
-                name.c_str(), static_cast<long long>(mesh.topology.num_cells()),
-                mesh.field.max_degree(), tree.nodes.size(), stat(tree, "fallback_cells"), t_exact,
-                t_thesis, t_thesis / t_exact, t_pl, t_exact / t_pl);
-    std::fflush(stdout);
+  if (s.quick) {
+    s.runs = std::min(s.runs, 3);
+    if (app.count("--sizes") == 0)
+      s.sizes = {1e4, 1e5};
   }
-
-  std::printf("\n## Exact tree phases on `random` (degree 3; median of %d runs)\n\n", runs);
-  std::printf("| cells | critical points (s) | connections (s) | sweeps + merge (s) | total (s) | "
-              "us per cell |\n|---|---|---|---|---|---|\n");
-  for (long long cells : quick ? std::vector<long long>{10000, 100000}
-                               : std::vector<long long>{10000, 100000, 1000000}) {
-    DatasetOptions o;
-    o.cells = cells;
-    const Mesh mesh = build_mesh(generate_dataset("random", o));
-    std::vector<double> crit, conn, sweep;
-    TreeResult tree;
-    const double total = time_median(runs, [&] {
-      tree = exact_contour_tree(mesh);
-      crit.push_back(stat(tree, "time_edge_nodes_s") +
-                     stat(tree, "time_interior_critical_points_s"));
-      conn.push_back(stat(tree, "time_connections_s") + stat(tree, "time_fallback_and_chains_s"));
-      sweep.push_back(stat(tree, "time_sweeps_s") + stat(tree, "time_merge_s"));
-    });
-    std::printf("| %lld | %.3f | %.3f | %.3f | %.3f | %.2f |\n",
-                static_cast<long long>(mesh.topology.num_cells()), median(crit), median(conn),
-                median(sweep), total, 1e6 * total / static_cast<double>(mesh.topology.num_cells()));
-    std::fflush(stdout);
-  }
-
-  std::printf(
-      "\n## PL contour tree on large meshes (degree-1 `random` fields; median of %d runs)\n\n",
-      runs);
-  std::printf("| vertices | triangles | graph (s) | sweeps (s) | merge (s) | total (s) |\n"
-              "|---|---|---|---|---|---|\n");
-  for (long long cells :
-       quick ? std::vector<long long>{500000} : std::vector<long long>{500000, 2000000, 8000000}) {
-    DatasetOptions o;
-    o.cells = cells;
-    o.degree = 1;
-    const PlMesh pl = split_lagrange_cells(generate_dataset("random", o));
-    std::vector<double> g, s, m;
-    const double total = time_median(runs, [&] {
-      const TreeResult r = pl_contour_tree(pl, false, "");
-      g.push_back(stat(r, "time_graph_s"));
-      s.push_back(stat(r, "time_sweeps_s"));
-      m.push_back(stat(r, "time_merge_s") + stat(r, "time_pairs_s"));
-    });
-    std::printf("| %lld | %zu | %.3f | %.3f | %.3f | %.3f |\n",
-                static_cast<long long>(pl.num_vertices()), pl.triangles.size(), median(g),
-                median(s), median(m), total);
-    std::fflush(stdout);
-  }
-  std::printf("\npeak resident memory: %.1f MiB\n", peak_rss_kib() / 1024.0);
+  if (wants(s, "datasets"))
+    datasets_section(s);
+  if (wants(s, "scaling"))
+    scaling_section(s);
+  if (wants(s, "pl"))
+    pl_section(s);
+  std::printf("peak resident memory of the benchmark: %.1f MiB\n", peak_rss_kib() / 1024.0);
   return 0;
 }

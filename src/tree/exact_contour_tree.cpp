@@ -53,7 +53,7 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
       opt.progress(phase, seconds(a, b));
   };
   EdgeNodeOptions edge_options;
-  edge_options.threads = thread_count(opt.threads);
+  edge_options.threads = threads_for(ne, thread_count(opt.threads), 2 * opt.cells_per_thread);
   const EdgeNodes en = find_edge_nodes(topo, field, edge_options);
   const int64_t edge_base = nv;
   const auto t1 = clock_type::now();
@@ -63,7 +63,7 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
   std::vector<std::vector<InteriorCritical>> interior(nc);
   std::vector<uint8_t> fallback(nc, 0);
   int64_t unresolved_zeros = 0;
-  const int threads = thread_count(opt.threads);
+  const int threads = threads_for(nc, thread_count(opt.threads), opt.cells_per_thread);
   std::vector<int64_t> unresolved_per_thread(threads, 0);
   parallel_for(nc, threads, [&](int64_t begin, int64_t end, int worker) {
     for (int64_t c = begin; c < end; ++c) {

@@ -9,6 +9,7 @@
 #include "mesh/mesh.hpp"
 #include "tree/tree_result.hpp"
 
+#include <cstdint>
 #include <functional>
 #include <string>
 
@@ -20,6 +21,9 @@ struct ExactTreeOptions {
   int fallback_refinement = 0;
   // Threads for the cell phase (0: all hardware threads). The result does not depend on it.
   int threads = 1;
+  // Fewest cells per thread (fewer threads on small meshes, where starting one costs more than
+  // it saves); edges use twice as many.
+  int64_t cells_per_thread = 1024;
   // Keep the graph with the geometry of every connection (certified paths, edge pieces), so
   // that arcs can be drawn on the surface (compute_arc_paths). Costs memory; off by default.
   bool arc_geometry = false;

@@ -18,6 +18,13 @@ inline int thread_count(int requested) {
   return std::max(1u, std::thread::hardware_concurrency());
 }
 
+// At most `threads`, and few enough that each gets at least `grain` of the n items (starting a
+// thread for less work costs more than it saves).
+inline int threads_for(int64_t n, int threads, int64_t grain) {
+  const int64_t useful = std::max<int64_t>(1, n / std::max<int64_t>(grain, 1));
+  return static_cast<int>(std::min<int64_t>(std::max(1, threads), useful));
+}
+
 // Calls body(begin, end, worker) on disjoint chunks of [0, n); rethrows the first exception.
 template <class Body> void parallel_for(int64_t n, int threads, const Body &body) {
   threads = static_cast<int>(std::min<int64_t>(std::max(1, threads), std::max<int64_t>(n, 1)));

@@ -317,6 +317,7 @@ TEST(ExactTree, IdenticalForAnyThreadCount) {
     one.threads = 1;
     two.threads = 2;
     many.threads = 7;
+    two.cells_per_thread = many.cells_per_thread = 1; // really use the threads on 3000 cells
     const TreeResult a = exact_contour_tree(mesh, one), b = exact_contour_tree(mesh, two),
                      c = exact_contour_tree(mesh, many);
     for (const TreeResult *t : {&b, &c}) {

@@ -1,0 +1,69 @@
+#include "bench_pipeline.hpp"
+
+#include "io/read_mesh.hpp"
+#include "io/tree_json.hpp"
+#include "io/tree_vtp_writer.hpp"
+#include "mesh/mesh.hpp"
+#include "tree/exact_contour_tree.hpp"
+
+#include <algorithm>
+#include <utility>
+
+namespace hoct::bench {
+
+PipelineResult run_pipeline(const std::string &vtu, int threads, bool with_vtp,
+                            const ScratchDir &scratch) {
+  PipelineResult r;
+  const auto t0 = clock_type::now();
+  Mesh mesh;
+  {
+    auto t = clock_type::now();
+    const MeshInput input = read_mesh(vtu);
+    r.read = seconds_since(t);
+    t = clock_type::now();
+    mesh = build_mesh(input);
+    r.mesh = seconds_since(t);
+  }
+  ExactTreeOptions eo;
+  eo.threads = threads;
+  eo.arc_geometry = with_vtp;
+  auto t = clock_type::now();
+  TreeResult tree = exact_contour_tree(mesh, eo);
+  r.tree = seconds_since(t);
+  r.critical = stat(tree, "time_edge_nodes_s") + stat(tree, "time_interior_critical_points_s");
+  r.connections = stat(tree, "time_connections_s") + stat(tree, "time_fallback_and_chains_s");
+  r.sweeps = stat(tree, "time_sweeps_s");
+  r.merge = stat(tree, "time_merge_s") + stat(tree, "time_output_s");
+  r.graph_nodes = static_cast<int64_t>(stat(tree, "graph_nodes"));
+  r.fallback_cells = stat(tree, "fallback_cells");
+  r.cells = mesh.topology.num_cells();
+  t = clock_type::now();
+  tree = contract_flat(tree);
+  decompose_branches(tree);
+  write_tree_json(scratch.file("tree.json"), tree);
+  if (with_vtp) {
+    compute_arc_paths(tree);
+    write_tree_vtp(scratch.file("tree.vtp"), tree);
+  }
+  r.write = seconds_since(t);
+  r.total = seconds_since(t0);
+  r.nodes = tree.nodes.size();
+  return r;
+}
+
+PipelineResult median_of(const std::vector<PipelineResult> &runs) {
+  PipelineResult m = runs.front();
+  auto med = [&](double PipelineResult::*field) {
+    std::vector<double> v;
+    for (const auto &r : runs)
+      v.push_back(r.*field);
+    m.*field = median(std::move(v));
+  };
+  for (auto f : {&PipelineResult::read, &PipelineResult::mesh, &PipelineResult::critical,
+                 &PipelineResult::connections, &PipelineResult::sweeps, &PipelineResult::merge,
+                 &PipelineResult::tree, &PipelineResult::write, &PipelineResult::total})
+    med(f);
+  return m;
+}
+
+} // namespace hoct::bench

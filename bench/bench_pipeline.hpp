@@ -1,0 +1,33 @@
+// One run of what `hoct tree FILE --json OUT [--vtp OUT]` does, timed phase by phase: read the
+// file, build the mesh (topology, Lagrange -> Bernstein conversion, checks), the exact tree's
+// phases, and the output (flat-region contraction, branch decomposition, JSON and VTP written).
+#pragma once
+
+#include "bench_support.hpp"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace hoct::bench {
+
+struct PipelineResult {
+  double read = 0, mesh = 0;                                   // input
+  double critical = 0, connections = 0, sweeps = 0, merge = 0; // exact_contour_tree's phases
+  double tree = 0;                                             // exact_contour_tree as a whole
+  double write = 0;                                            // contraction, branches, files
+  double total = 0;                                            // read .. write
+  int64_t cells = 0, graph_nodes = 0;
+  std::size_t nodes = 0; // tree nodes after the flat-region contraction
+  double fallback_cells = 0;
+
+  double cell_phase() const { return critical + connections; }
+};
+
+PipelineResult run_pipeline(const std::string &vtu, int threads, bool with_vtp,
+                            const ScratchDir &scratch);
+
+// Phase-wise medians of several runs (counts from the first run).
+PipelineResult median_of(const std::vector<PipelineResult> &runs);
+
+} // namespace hoct::bench

@@ -1,0 +1,51 @@
+// Small helpers of the benchmark: wall-clock timing, medians, peak resident memory, statistics
+// of a TreeResult, and a scratch directory for the files a run reads and writes.
+#pragma once
+
+#include "tree/tree_result.hpp"
+
+#include <chrono>
+#include <string>
+#include <vector>
+
+namespace hoct::bench {
+
+using clock_type = std::chrono::steady_clock;
+
+inline double seconds_since(clock_type::time_point t0) {
+  return std::chrono::duration<double>(clock_type::now() - t0).count();
+}
+
+double median(std::vector<double> v);
+
+// A statistic of the tree ("time_sweeps_s", ...), 0 if absent.
+double stat(const TreeResult &t, const std::string &name);
+
+// Peak resident memory of this process (VmHWM, KiB).
+long peak_rss_kib();
+
+// Runs a program (argv[0] is its path) with stdout and stderr discarded; returns its peak
+// resident memory (ru_maxrss, KiB) and wall time; throws if it cannot run or fails.
+struct ProcessPeak {
+  long max_rss_kib = 0;
+  double seconds = 0;
+};
+ProcessPeak run_process(const std::vector<std::string> &argv);
+
+// The directory of the running executable (to find the hoct CLI next to hoct_bench).
+std::string executable_dir();
+
+// A fresh scratch directory (removed by the destructor).
+class ScratchDir {
+public:
+  ScratchDir();
+  ~ScratchDir();
+  ScratchDir(const ScratchDir &) = delete;
+  ScratchDir &operator=(const ScratchDir &) = delete;
+  std::string file(const std::string &name) const { return path_ + "/" + name; }
+
+private:
+  std::string path_;
+};
+
+} // namespace hoct::bench
