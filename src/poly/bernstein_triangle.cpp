@@ -125,11 +125,73 @@ void casteljau_step_in_place(double *w, int n, const std::array<double, 3> &l) {
 
 } // namespace
 
+namespace {
+
+// One in-place step for a compile-time degree N (unrolled by the compiler).
+template <int N> void casteljau_step_fixed(double *w, const std::array<double, 3> &l) {
+  for (int b = 0; b <= N - 1; ++b)
+    for (int a = 0; a <= N - 1 - b; ++a)
+      w[lattice_index(N - 1, a, b)] = l[0] * w[lattice_index(N, a, b)] +
+                                      l[1] * w[lattice_index(N, a + 1, b)] +
+                                      l[2] * w[lattice_index(N, a, b + 1)];
+}
+
+// Steps from degree N down to 0 with weights l, in place; w[0] is the result.
+template <int N> void casteljau_down(double *w, const std::array<double, 3> &l) {
+  if constexpr (N > 0) {
+    casteljau_step_fixed<N>(w, l);
+    casteljau_down<N - 1>(w, l);
+  }
+}
+
+// restrict_to_segment for a compile-time degree D: after K steps with p (in `level`), D-K steps
+// with q give coefficient D-K.
+template <int D, int K>
+void restrict_fixed(double *level, const std::array<double, 3> &lp, const std::array<double, 3> &lq,
+                    double *out) {
+  constexpr int n0 = D - K;
+  double work[lattice_size(n0)];
+  for (int i = 0; i < lattice_size(n0); ++i)
+    work[i] = level[i];
+  casteljau_down<n0>(work, lq);
+  out[n0] = work[0];
+  if constexpr (K < D) {
+    casteljau_step_fixed<n0>(level, lp);
+    restrict_fixed<D, K + 1>(level, lp, lq, out);
+  }
+}
+
+template <int D>
+void restrict_fixed(const std::vector<double> &c, const std::array<double, 3> &lp,
+                    const std::array<double, 3> &lq, double *out) {
+  double level[lattice_size(D)];
+  std::copy(c.begin(), c.end(), level);
+  restrict_fixed<D, 0>(level, lp, lq, out);
+}
+
+} // namespace
+
 void BernsteinTriangle::restrict_to_segment(const Vec2 &p, const Vec2 &q, double *out) const {
   // Blossom: coefficient m = g[p^(d-m), q^m]. After k steps with p, d-k steps with q give
   // coefficient d-k.
   const auto lp = barycentric(p[0], p[1]);
   const auto lq = barycentric(q[0], q[1]);
+  switch (d_) { // the usual degrees, unrolled
+  case 1:
+    return restrict_fixed<1>(c_, lp, lq, out);
+  case 2:
+    return restrict_fixed<2>(c_, lp, lq, out);
+  case 3:
+    return restrict_fixed<3>(c_, lp, lq, out);
+  case 4:
+    return restrict_fixed<4>(c_, lp, lq, out);
+  case 5:
+    return restrict_fixed<5>(c_, lp, lq, out);
+  case 6:
+    return restrict_fixed<6>(c_, lp, lq, out);
+  default:
+    break;
+  }
   constexpr int kStack = 91; // lattice_size(12)
   double level_buf[kStack], work_buf[kStack];
   std::vector<double> heap;

@@ -290,8 +290,15 @@ GradientZeros find_gradient_zeros(const BernsteinTriangle &g, const GradientZero
         continue;
       if (k == 1) {
         newton(x, y); // converges inside the box (Krawczyk)
-        if (!known(x, y))
-          found.push_back({x, y, cx, cy, r, r, true});
+        if (!known(x, y)) {
+          // Grow the certified box around the zero while Krawczyk still proves uniqueness: the
+          // larger it is, the fewer boxes around the zero need subdividing. A box centred at the
+          // zero with radius 2r contains the box just certified.
+          Found f{x, y, cx, cy, r, r, true};
+          for (double R = 2 * r; R <= 0.5 && krawczyk(x, y, R, R, x, y) == 1; R *= 2)
+            f = {x, y, x, y, R, R, true};
+          found.push_back(f);
+        }
         continue;
       }
     }

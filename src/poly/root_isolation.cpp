@@ -59,6 +59,19 @@ void value_and_slope(const BernsteinPoly &p, double t, double &value, double &sl
 // (bisection whenever a step leaves the bracket).
 double refine_simple(const BernsteinPoly &p, double lo, double hi, int slo) {
   double x = 0.5 * (lo + hi);
+  if (lo == 0.0 && hi == 1.0) {
+    // Start where the control polygon crosses zero (its first sign change): close to the root,
+    // so Newton needs few steps.
+    const auto &c = p.coefficients();
+    const int n = p.degree();
+    for (int i = 0; i < n; ++i)
+      if ((c[i] > 0 && c[i + 1] < 0) || (c[i] < 0 && c[i + 1] > 0)) {
+        const double t = (i + c[i] / (c[i] - c[i + 1])) / n;
+        if (t > 0 && t < 1)
+          x = t;
+        break;
+      }
+  }
   for (int it = 0; it < 300; ++it) {
     double fx, d;
     value_and_slope(p, x, fx, d);
@@ -69,10 +82,13 @@ double refine_simple(const BernsteinPoly &p, double lo, double hi, int slo) {
     else
       hi = x;
     double next = d != 0 ? x - fx / d : 0.5 * (lo + hi);
+    // Converged: the Newton step is at the last bits of x (it may round back onto x, the end
+    // of the bracket), or the bracket is that narrow.
+    const double ulp = 2 * std::numeric_limits<double>::epsilon() * std::abs(x);
+    if (std::abs(next - x) <= ulp || hi - lo <= ulp)
+      return x;
     if (!(next > lo && next < hi))
       next = 0.5 * (lo + hi);
-    if (next == x || hi - lo <= 2 * std::numeric_limits<double>::epsilon() * std::abs(x))
-      break;
     x = next;
   }
   return x;
