@@ -12,6 +12,7 @@
 #include <chrono>
 #include <cmath>
 #include <map>
+#include <optional>
 
 namespace hoct {
 namespace {
@@ -363,11 +364,24 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
   report("degenerate-cell fallback and edge chains", t3, t4);
 
   // Global sweeps and merge.
-  const ScalarGraph jg(values, join_edges), sg(values, split_edges);
-  const MergeTree jt = join_tree(jg), st = split_tree(sg);
+  // The join and the split sweep are independent: one thread each when there are two.
+  std::optional<ScalarGraph> jg, sg;
+  MergeTree jt, st;
+  const int sweep_threads = threads_for(static_cast<int64_t>(values.size()),
+                                        thread_count(opt.threads), 8 * opt.cells_per_thread);
+  parallel_for(2, std::min(sweep_threads, 2), [&](int64_t begin, int64_t end, int) {
+    for (int64_t k = begin; k < end; ++k)
+      if (k == 0) {
+        jg.emplace(values, join_edges);
+        jt = join_tree(*jg);
+      } else {
+        sg.emplace(values, split_edges);
+        st = split_tree(*sg);
+      }
+  });
   const auto t5 = clock_type::now();
   report("join and split sweeps", t4, t5);
-  const ContourTree aug = merge_trees(jg, jt, st);
+  const ContourTree aug = merge_trees(*jg, jt, st);
   const ContourTree ct = opt.augmented ? aug : reduce(aug);
   const auto t6 = clock_type::now();
 
