@@ -1,6 +1,9 @@
 #include "mesh/field.hpp"
 
 #include "poly/lattice.hpp"
+#include "util/parallel_for.hpp"
+
+#include "poly/lattice.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -36,7 +39,7 @@ BernsteinPoly Field::edge_polynomial(int64_t e) const {
 
 double Field::value(int64_t c, double u, double v) const { return cell_polynomial(c)(u, v); }
 
-Field Field::build(const MeshInput &in, const Topology &topo, ProblemLog &problems) {
+Field Field::build(const MeshInput &in, const Topology &topo, ProblemLog &problems, int threads) {
   Field f;
   const int64_t nc = topo.num_cells(), ne = topo.num_edges();
   f.input_degree_ = in.cell_degree;
@@ -128,27 +131,44 @@ Field Field::build(const MeshInput &in, const Topology &topo, ProblemLog &proble
     f.vertex_value_[v] = in.values[topo.vertex_point(v)];
   f.pin_edge_ends(topo);
 
-  // Cell polynomials from the node values, then elevation and the shared edges.
-  std::vector<BernsteinTriangle> cells(nc);
-  std::vector<double> node_vals;
-  for (int64_t c = 0; c < nc; ++c) {
-    const int din = in.cell_degree[c];
-    node_vals.resize(lattice_size(din));
-    for (int i = 0; i < lattice_size(din); ++i)
-      node_vals[i] = in.values[in.cell_nodes[in.cell_offsets[c] + i]];
-    cells[c] = bernstein_from_lattice_values(node_vals.data(), din);
-  }
-  f.assemble_cells(topo, cells);
+  // Cell polynomials from the node values (written in place; raised where an edge has a higher
+  // degree), then the shared edges.
+  std::vector<int> degrees(nc);
+  for (int64_t c = 0; c < nc; ++c)
+    degrees[c] = in.cell_degree[c];
+  f.assemble_cells(
+      topo, degrees,
+      [&](int64_t c, int degree, double *out) {
+        const int din = in.cell_degree[c];
+        const int n = lattice_size(din);
+        double stack_vals[91]; // lattice_size(12)
+        std::vector<double> heap;
+        double *vals = stack_vals;
+        if (n > 91) {
+          heap.resize(n);
+          vals = heap.data();
+        }
+        for (int i = 0; i < n; ++i)
+          vals[i] = in.values[in.cell_nodes[in.cell_offsets[c] + i]];
+        if (din == degree) {
+          bernstein_from_lattice_values(vals, din, out);
+        } else {
+          const BernsteinTriangle p = bernstein_from_lattice_values(vals, din).elevated(degree);
+          std::copy(p.coefficients().begin(), p.coefficients().end(), out);
+        }
+      },
+      threads);
   return f;
 }
 
-void Field::assemble_cells(const Topology &topo, const std::vector<BernsteinTriangle> &cells) {
+void Field::assemble_cells(const Topology &topo, const std::vector<int> &cell_degree,
+                           const std::function<void(int64_t, int, double *)> &cell, int threads) {
   const int64_t nc = topo.num_cells();
   degree_.resize(nc);
   offset_.assign(nc + 1, 0);
   max_degree_ = 0;
   for (int64_t c = 0; c < nc; ++c) {
-    int d = cells[c].degree();
+    int d = cell_degree[c];
     for (int k = 0; k < 3; ++k)
       d = std::max(d, static_cast<int>(edge_degree_[topo.cell_edge(c, k)]));
     degree_[c] = static_cast<uint8_t>(d);
@@ -156,17 +176,26 @@ void Field::assemble_cells(const Topology &topo, const std::vector<BernsteinTria
     offset_[c + 1] = offset_[c] + lattice_size(d);
   }
   coef_.resize(offset_[nc]);
-  for (int64_t c = 0; c < nc; ++c) {
-    BernsteinTriangle poly =
-        cells[c].degree() == degree_[c] ? cells[c] : cells[c].elevated(degree_[c]);
-    for (int k = 0; k < 3; ++k) {
-      BernsteinPoly p = edge_polynomial(topo.cell_edge(c, k));
-      if (p.degree() != degree_[c])
-        p = p.elevated(degree_[c]);
-      poly.set_edge(k, topo.edge_reversed(c, k) ? p.reversed() : p);
+  parallel_for(nc, threads_for(nc, threads, 4096), [&](int64_t begin, int64_t end, int) {
+    for (int64_t c = begin; c < end; ++c) {
+      const int d = degree_[c];
+      double *out = coef_.data() + offset_[c];
+      cell(c, d, out);
+      for (int k = 0; k < 3; ++k) {
+        const int64_t e = topo.cell_edge(c, k);
+        const bool rev = topo.edge_reversed(c, k);
+        if (edge_degree_[e] == d) {
+          const double *p = edge_coef_.data() + edge_offset_[e];
+          for (int t = 0; t <= d; ++t)
+            out[edge_lattice_index(d, k, t)] = p[rev ? d - t : t];
+        } else {
+          const BernsteinPoly p = edge_polynomial(e).elevated(d);
+          for (int t = 0; t <= d; ++t)
+            out[edge_lattice_index(d, k, t)] = p[rev ? d - t : t];
+        }
+      }
     }
-    std::copy(poly.coefficients().begin(), poly.coefficients().end(), coef_.begin() + offset_[c]);
-  }
+  });
 }
 
 Field Field::build_from_polynomials(const Topology &topo,
@@ -244,7 +273,17 @@ Field Field::build_from_polynomials(const Topology &topo,
                          std::to_string(std::abs(val - f.vertex_value_[v])));
     }
   f.pin_edge_ends(topo);
-  f.assemble_cells(topo, cells);
+  std::vector<int> degrees(nc);
+  for (int64_t c = 0; c < nc; ++c)
+    degrees[c] = cells[c].degree();
+  f.assemble_cells(
+      topo, degrees,
+      [&](int64_t c, int degree, double *out) {
+        const BernsteinTriangle p =
+            cells[c].degree() == degree ? cells[c] : cells[c].elevated(degree);
+        std::copy(p.coefficients().begin(), p.coefficients().end(), out);
+      },
+      1);
   return f;
 }
 

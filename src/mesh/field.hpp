@@ -11,6 +11,7 @@
 #include "poly/bernstein_triangle.hpp"
 
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -24,7 +25,9 @@ public:
 
   // Builds the field from the Lagrange node values of `input`; records discontinuities across
   // edges in `problems`.
-  static Field build(const MeshInput &input, const Topology &topology, ProblemLog &problems);
+  // `threads`: the per-cell conversion runs in parallel (the result does not depend on it).
+  static Field build(const MeshInput &input, const Topology &topology, ProblemLog &problems,
+                     int threads = 1);
 
   // Builds the field from one polynomial per cell (the thesis' general case: e.g. fitted to
   // arbitrary samples with bernstein_from_samples). Each edge's polynomial is taken from the
@@ -58,7 +61,11 @@ public:
 
 private:
   // Elevates each cell to the highest degree around it and copies its edges' polynomials in.
-  void assemble_cells(const Topology &topology, const std::vector<BernsteinTriangle> &cells);
+  // Cell degrees (the largest of the cell's own and its edges'), then every cell's coefficients:
+  // cell(c, degree, out) writes cell c's polynomial raised to `degree`; the shared edges are then
+  // copied in from the edge polynomials.
+  void assemble_cells(const Topology &topology, const std::vector<int> &cell_degree,
+                      const std::function<void(int64_t, int, double *)> &cell, int threads);
   // Sets each edge polynomial's end coefficients to its vertices' values, bit-exactly.
   void pin_edge_ends(const Topology &topology);
 

@@ -24,7 +24,7 @@ Mesh build_mesh(const MeshInput &input, const MeshBuildOptions &options) {
   const bool structural_ok = check_input(input, m.problems);
   if (structural_ok) {
     m.topology = Topology::build(input, m.problems);
-    m.field = Field::build(input, m.topology, m.problems);
+    m.field = Field::build(input, m.topology, m.problems, options.threads);
     m.geometry = Geometry::build(input);
     check_geometry(m.geometry, m.topology, m.problems);
     m.complete = true;

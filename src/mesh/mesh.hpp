@@ -27,6 +27,8 @@ struct MeshBuildOptions {
   // Throw hoct::Error listing the problems if any error-level problem is found. With false, the
   // mesh is returned with its problems recorded (for `hoct info`), as complete as possible.
   bool throw_on_error = true;
+  // Threads for the per-cell work (Lagrange -> Bernstein conversion); same result for any.
+  int threads = 1;
 };
 
 Mesh build_mesh(const MeshInput &input, const MeshBuildOptions &options = {});

@@ -269,17 +269,21 @@ bool BernsteinTriangle::is_constant() const {
   return std::all_of(c_.begin(), c_.end(), [&](double x) { return x == c_[0]; });
 }
 
-BernsteinTriangle bernstein_from_lattice_values(const double *values, int degree) {
+void bernstein_from_lattice_values(const double *values, int degree, double *out) {
   const auto &m = lagrange_to_bernstein_triangle(degree);
   const int n = lattice_size(degree);
-  std::vector<double> c(n);
   for (int i = 0; i < n; ++i) {
     double s = 0.0;
     const double *row = &m[static_cast<std::size_t>(i) * n];
     for (int j = 0; j < n; ++j)
       s += row[j] * values[j];
-    c[i] = s;
+    out[i] = s;
   }
+}
+
+BernsteinTriangle bernstein_from_lattice_values(const double *values, int degree) {
+  std::vector<double> c(lattice_size(degree));
+  bernstein_from_lattice_values(values, degree, c.data());
   return BernsteinTriangle(degree, std::move(c));
 }
 

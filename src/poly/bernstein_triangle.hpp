@@ -68,5 +68,7 @@ inline std::array<double, 3> barycentric(double u, double v) { return {1.0 - u -
 
 // Triangle Bernstein coefficients from equispaced Lagrange node values (canonical lattice order).
 BernsteinTriangle bernstein_from_lattice_values(const double *values, int degree);
+// The same into out[0 .. lattice_size(degree)) without allocating.
+void bernstein_from_lattice_values(const double *values, int degree, double *out);
 
 } // namespace hoct

@@ -68,24 +68,20 @@ void check_degree(int degree) {
 
 const std::vector<double> &lagrange_to_bernstein_triangle(int degree) {
   check_degree(degree);
-  static std::mutex mutex;
+  // Built once per degree (std::call_once: no lock on later calls from many threads).
+  static std::array<std::once_flag, kMaxDegree + 1> once;
   static std::array<std::vector<double>, kMaxDegree + 1> cache;
-  std::lock_guard<std::mutex> lock(mutex);
-  auto &m = cache[degree];
-  if (m.empty())
-    m = build_triangle(degree);
-  return m;
+  std::call_once(once[degree], [&] { cache[degree] = build_triangle(degree); });
+  return cache[degree];
 }
 
 const std::vector<double> &lagrange_to_bernstein_1d(int degree) {
   check_degree(degree);
-  static std::mutex mutex;
+  // Built once per degree (std::call_once: no lock on later calls from many threads).
+  static std::array<std::once_flag, kMaxDegree + 1> once;
   static std::array<std::vector<double>, kMaxDegree + 1> cache;
-  std::lock_guard<std::mutex> lock(mutex);
-  auto &m = cache[degree];
-  if (m.empty())
-    m = build_1d(degree);
-  return m;
+  std::call_once(once[degree], [&] { cache[degree] = build_1d(degree); });
+  return cache[degree];
 }
 
 } // namespace hoct
