@@ -2,7 +2,7 @@
 
 #include "error.hpp"
 #include "io/base64.hpp"
-#include "poly/lagrange_node_order.hpp"
+#include "io/vtk_cells.hpp"
 
 #include <pugixml.hpp>
 #include <zlib.h>
@@ -496,7 +496,7 @@ MeshInput VtuFile::read() {
     if (nconn < 0 || static_cast<unsigned long long>(nconn) > bytes_.size())
       fail(where + ": the last cell offset " + std::to_string(nconn) + " is invalid");
     const std::vector<int64_t> conn = read_ints(ca, static_cast<std::size_t>(nconn));
-    std::vector<int64_t> nodes;
+    std::string problem;
     for (long long c = 0; c < nc; ++c) {
       const int64_t begin = c ? offsets[c - 1] : 0, end = offsets[c];
       if (end < begin)
@@ -505,39 +505,12 @@ MeshInput VtuFile::read() {
       if (end > nconn)
         fail(where + ": cell " + std::to_string(c) + ": offset " + std::to_string(end) +
              " is beyond the connectivity (" + std::to_string(nconn) + " values)");
-      const int64_t n = end - begin;
-      const int64_t type = types[c];
-      int degree;
-      if (type == 5 || type == 22 || type == 69) {
-        degree = degree_from_node_count(n);
-        if ((type == 5 && n != 3) || (type == 22 && n != 6) || degree < 1)
-          fail(where + ": cell " + std::to_string(c) + " of type " + std::to_string(type) +
-               " has " + std::to_string(n) + " nodes" +
-               (type == 69 && n == 7 ? " (the 7-node 'bubble' triangle is not a complete "
-                                       "polynomial space and is not supported)"
-                                     : ", not a complete triangle"));
-        if (degree > 20)
-          fail(where + ": cell " + std::to_string(c) + " has degree " + std::to_string(degree) +
-               " (at most 20 supported)");
-      } else if (type == 1 || type == 2 || type == 3 || type == 4 || type == 21 || type == 35 ||
-                 type == 68) {
-        ++skipped; // vertices and lines: boundary markers some writers add
-        continue;
-      } else {
-        fail(where + ": cell " + std::to_string(c) + " has VTK cell type " + std::to_string(type) +
-             ", which is not a triangle (supported: 5 VTK_TRIANGLE, 22 VTK_QUADRATIC_TRIANGLE, "
-             "69 VTK_LAGRANGE_TRIANGLE)");
-      }
-      const auto &perm = node_order_to_lattice(NodeOrdering::Vtk, degree);
-      nodes.assign(static_cast<std::size_t>(n), -1);
-      for (int64_t i = 0; i < n; ++i) {
-        const int64_t id = conn[begin + i];
-        if (id < 0 || id >= np)
-          fail(where + ": cell " + std::to_string(c) + " refers to point " + std::to_string(id) +
-               ", but the piece has " + std::to_string(np) + " points");
-        nodes[perm[i]] = base + id;
-      }
-      m.add_cell(degree, nodes.data());
+      const VtkCellResult r =
+          add_vtk_cell(m, types[c], conn.data() + begin, end - begin, np, base, &problem);
+      if (r == VtkCellResult::Invalid)
+        fail(where + ": cell " + std::to_string(c) + problem);
+      if (r == VtkCellResult::Skipped)
+        ++skipped;
     }
     ++piece_index;
   }

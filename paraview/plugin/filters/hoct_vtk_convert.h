@@ -1,0 +1,32 @@
+// Between VTK objects and hoct's: a vtkUnstructuredGrid with a point scalar array becomes a
+// MeshInput (io/vtk_cells converts the cells), a tree laid out by io/tree_polydata becomes
+// vtkPolyData with the arrays ParaView and TTK users know.
+#pragma once
+
+#include "io/tree_polydata.hpp"
+#include "mesh/mesh_input.hpp"
+
+class vtkDataArray;
+class vtkPolyData;
+class vtkUnstructuredGrid;
+
+namespace hoct::paraview {
+
+// The grid's points, its triangle cells (vertex and line cells are skipped) and the values of
+// `scalar` (one component, one tuple per point). Throws hoct::InputError naming the cell or point
+// for anything else (other cell types, non-finite values or coordinates, no triangles).
+MeshInput mesh_input_from_grid(vtkUnstructuredGrid *grid, vtkDataArray *scalar);
+
+// TTK's critical type codes: 0 minimum, 1 saddle, 3 maximum, 5 regular.
+int ttk_critical_type(NodeType type);
+
+// The nodes as vertices with the point arrays CriticalType (TTK codes), TypeName, Value,
+// Persistence, NodeId, Cell, Location (0 vertex, 1 edge, 2 interior, 3 unknown), Fallback.
+void critical_points_polydata(const TreePolyData &tree, vtkPolyData *out);
+
+// The arcs as polylines (with the nodes as vertices too if with_nodes): point arrays Value,
+// Persistence, CriticalType, NodeId (-1 inside a polyline); cell arrays Persistence and ArcId
+// (-1 for the vertices).
+void arcs_polydata(const TreePolyData &tree, bool with_nodes, vtkPolyData *out);
+
+} // namespace hoct::paraview

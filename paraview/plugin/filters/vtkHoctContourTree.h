@@ -1,0 +1,55 @@
+// The ParaView filter "Higher-Order Contour Tree": the exact contour tree (hoct) of a point scalar
+// on an unstructured grid of linear, quadratic or Lagrange triangles. Output 0: the critical
+// points as vertices; output 1: the arcs as polylines on the surface; output 2: the simplified
+// tree (nodes and arcs) when PersistenceThreshold > 0. All outputs are vtkPolyData; the input is
+// a vtkUnstructuredGrid (FillInputPortInformation).
+#ifndef vtkHoctContourTree_h
+#define vtkHoctContourTree_h
+
+#include "HoctParaViewModule.h"
+#include "vtkPolyDataAlgorithm.h"
+
+class HOCTPARAVIEW_EXPORT vtkHoctContourTree : public vtkPolyDataAlgorithm {
+public:
+  static vtkHoctContourTree *New();
+  vtkTypeMacro(vtkHoctContourTree, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream &os, vtkIndent indent) override;
+
+  // Leaf branches with persistence below this are removed in output 2 (0: no output 2).
+  vtkSetClampMacro(PersistenceThreshold, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(PersistenceThreshold, double);
+
+  // How PersistenceThreshold is read: PERCENT_OF_RANGE (of the tree's value range, as
+  // `hoct tree --simplify 1%`) or ABSOLUTE.
+  enum ThresholdModes { PERCENT_OF_RANGE = 0, ABSOLUTE = 1 };
+  vtkSetClampMacro(ThresholdMode, int, PERCENT_OF_RANGE, ABSOLUTE);
+  vtkGetMacro(ThresholdMode, int);
+
+  // Keep the regular (degree-2) nodes (`hoct tree --augmented`); no simplification then.
+  vtkSetMacro(Augmented, bool);
+  vtkGetMacro(Augmented, bool);
+  vtkBooleanMacro(Augmented, bool);
+
+  // Threads for the cell phase (0: all cores). The result does not depend on it.
+  vtkSetClampMacro(Threads, int, 0, 1024);
+  vtkGetMacro(Threads, int);
+
+protected:
+  vtkHoctContourTree();
+  ~vtkHoctContourTree() override = default;
+
+  int FillInputPortInformation(int port, vtkInformation *info) override;
+  int RequestData(vtkInformation *request, vtkInformationVector **inputVector,
+                  vtkInformationVector *outputVector) override;
+
+  double PersistenceThreshold = 0.0;
+  int ThresholdMode = PERCENT_OF_RANGE;
+  bool Augmented = false;
+  int Threads = 0;
+
+private:
+  vtkHoctContourTree(const vtkHoctContourTree &) = delete;
+  void operator=(const vtkHoctContourTree &) = delete;
+};
+
+#endif

@@ -1,0 +1,24 @@
+// VTK's triangle cells as MeshInput cells: the part of reading VTK data that does not depend on
+// where the cells come from (a .vtu file in io/vtu_reader, a vtkUnstructuredGrid in the ParaView
+// plugin).
+#pragma once
+
+#include "mesh/mesh_input.hpp"
+
+#include <cstdint>
+#include <string>
+
+namespace hoct {
+
+enum class VtkCellResult { Added, Skipped, Invalid };
+
+// Appends the VTK cell of type `type` whose n point ids (VTK node order, relative to `base`) are
+// `ids` to m, its nodes converted to canonical lattice order. VTK_TRIANGLE (5),
+// VTK_QUADRATIC_TRIANGLE (22) and VTK_LAGRANGE_TRIANGLE (69) of degree up to 20 are Added;
+// vertex and line cells (1, 2, 3, 4, 21, 35, 68: boundary markers some writers add) are Skipped;
+// anything else is Invalid and *problem says why, phrased to follow "cell N" (" has VTK cell type
+// 9, which is not a triangle (...)"). Point ids must lie in [0, num_points).
+VtkCellResult add_vtk_cell(MeshInput &m, int64_t type, const int64_t *ids, int64_t n,
+                           int64_t num_points, int64_t base, std::string *problem);
+
+} // namespace hoct
