@@ -18,6 +18,8 @@
 
 #include <cstdio>
 #include <map>
+#include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -33,6 +35,7 @@ struct Settings {
   std::vector<int> degrees = {2, 3, 5};
   std::vector<double> sizes = {1e4, 1e5, 1e6, 4e6};
   std::vector<int> threads = {1, 2};
+  std::string ttk_ftm; // an external TTK FTM driver to time side by side (see pl_section)
 };
 
 bool wants(const Settings &s, const std::string &section) {
@@ -169,19 +172,76 @@ void scaling_section(const Settings &s) {
   std::printf("\n");
 }
 
+// The PL mesh in the binary layout the external FTM driver reads: "HOCTPL1\n", u64 vertices,
+// u64 triangles, xyz doubles, scalar doubles, int64 vertex ids per triangle.
+void write_pl_binary(const std::string &path, const PlMesh &pl) {
+  std::FILE *f = std::fopen(path.c_str(), "wb");
+  if (!f)
+    throw std::runtime_error("cannot write " + path);
+  const uint64_t nv = pl.points.size(), nt = pl.triangles.size();
+  std::fwrite("HOCTPL1\n", 1, 8, f);
+  std::fwrite(&nv, sizeof nv, 1, f);
+  std::fwrite(&nt, sizeof nt, 1, f);
+  std::fwrite(pl.points.data(), sizeof(Vec3), nv, f);
+  std::fwrite(pl.values.data(), sizeof(double), nv, f);
+  std::fwrite(pl.triangles.data(), sizeof(std::array<int64_t, 3>), nt, f);
+  std::fclose(f);
+}
+
+// "key=value" from a line of the driver's output, -1 if absent.
+double field(const std::string &text, const std::string &line_start, const std::string &key) {
+  std::istringstream in(text);
+  std::string line;
+  while (std::getline(in, line))
+    if (line.rfind(line_start, 0) == 0) {
+      const auto at = line.find(" " + key + "=");
+      if (at != std::string::npos)
+        return std::stod(line.substr(at + key.size() + 2));
+    }
+  return -1;
+}
+
+std::string capture(const std::string &command) {
+  std::FILE *p = popen(command.c_str(), "r");
+  if (!p)
+    throw std::runtime_error("cannot run " + command);
+  std::string out;
+  char buf[4096];
+  for (std::size_t n; (n = std::fread(buf, 1, sizeof buf, p)) > 0;)
+    out.append(buf, n);
+  if (pclose(p) != 0)
+    throw std::runtime_error(command + " failed");
+  return out;
+}
+
 void pl_section(const Settings &s) {
+  const bool ttk = !s.ttk_ftm.empty();
   std::printf("## PL contour tree on large meshes (degree-1 `random` fields; median of %d "
-              "runs)\n\n",
+              "runs, 1 thread)\n\n",
               s.runs);
-  std::printf("| vertices | triangles | graph (s) | sweeps (s) | merge (s) | total (s) |\n"
-              "|---|---|---|---|---|---|\n");
+  if (ttk)
+    std::printf("Side by side with TTK's FTM (`%s`, an external driver built outside this "
+                "repository from topology-tool-kit/ttk; one process per run, runs interleaved "
+                "with hoct's; TTK total = triangulation preconditioning + order array + "
+                "FTMTree::build, the same scope as hoct's tree time).\n\n",
+                s.ttk_ftm.c_str());
+  std::printf("| vertices | triangles | graph (s) | sweeps (s) | merge (s) | hoct total (s) |%s\n"
+              "|---|---|---|---|---|---|%s\n",
+              ttk ? " TTK build (s) | TTK total (s) | hoct / TTK total | same critical points |"
+                  : "",
+              ttk ? "---|---|---|---|" : "");
   for (long long cells : s.quick ? std::vector<long long>{500000}
                                  : std::vector<long long>{500000, 2000000, 8000000}) {
     DatasetOptions o;
     o.cells = cells;
     o.degree = 1;
     const PlMesh pl = split_lagrange_cells(generate_dataset("random", o));
-    std::vector<double> g, sw, m, total;
+    ScratchDir scratch;
+    const std::string bin = scratch.file("pl.bin");
+    if (ttk)
+      write_pl_binary(bin, pl);
+    std::vector<double> g, sw, m, total, tb, tt;
+    bool same = true;
     for (int i = 0; i < s.runs; ++i) {
       const auto t = clock_type::now();
       const TreeResult r = pl_contour_tree(pl, false, "");
@@ -189,10 +249,25 @@ void pl_section(const Settings &s) {
       g.push_back(stat(r, "time_graph_s"));
       sw.push_back(stat(r, "time_sweeps_s"));
       m.push_back(stat(r, "time_merge_s") + stat(r, "time_pairs_s"));
+      if (ttk) {
+        const std::string out = capture(s.ttk_ftm + " " + bin + " --runs 1 --threads 1");
+        tb.push_back(field(out, "median", "ftm"));
+        tt.push_back(field(out, "median", "total"));
+        int64_t counts[3] = {0, 0, 0};
+        for (const auto &n : r.nodes)
+          ++counts[n.type == NodeType::Minimum ? 0 : n.type == NodeType::Maximum ? 1 : 2];
+        same = same && field(out, "tree:", "minima") == counts[0] &&
+               field(out, "tree:", "maxima") == counts[1] &&
+               field(out, "tree:", "saddles") == counts[2];
+      }
     }
-    std::printf("| %lld | %zu | %.3f | %.3f | %.3f | %.3f |\n",
+    std::printf("| %lld | %zu | %.3f | %.3f | %.3f | %.3f |",
                 static_cast<long long>(pl.num_vertices()), pl.triangles.size(), median(g),
                 median(sw), median(m), median(total));
+    if (ttk)
+      std::printf(" %.3f | %.3f | %.2f | %s |", median(tb), median(tt), median(total) / median(tt),
+                  same ? "yes" : "NO");
+    std::printf("\n");
     std::fflush(stdout);
   }
   std::printf("\n");
@@ -211,6 +286,9 @@ int main(int argc, char **argv) {
   app.add_option("--degrees", s.degrees, "Degrees of the scaling section")->delimiter(',');
   app.add_option("--sizes", s.sizes, "Cell counts of the scaling section, e.g. 1e4,1e5")
       ->delimiter(',');
+  app.add_option("--ttk-ftm", s.ttk_ftm,
+                 "An external TTK FTM driver (reads the binary PL mesh, prints 'median ... "
+                 "ftm=S total=S' and 'tree: minima=N maxima=N saddles=N') to time side by side");
   CLI11_PARSE(app, argc, argv);
   if (s.quick) {
     s.runs = std::min(s.runs, 3);
