@@ -195,36 +195,63 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
   std::vector<NodeSource> source(next);
   // Sources and values of vertices and edge nodes.
   {
-    for (int64_t v = 0; v < nv; ++v) {
-      values[v] = field.vertex_value(v);
-      source[v] = {topo.vertex_cell(v), point_on_edge(topo.vertex_corner(v), 0.0),
-                   NodeLocation::Vertex};
-    }
-    for (int64_t e = 0; e < ne; ++e) {
-      const int64_t c = topo.edge_cells_begin(e)[0];
-      int k = 0;
-      while (topo.cell_edge(c, k) != e)
-        ++k;
-      for (int64_t i = en.offset[e]; i < en.offset[e + 1]; ++i) {
-        const double s = topo.edge_reversed(c, k) ? 1 - en.nodes[i].t : en.nodes[i].t;
-        values[edge_base + i] = en.nodes[i].value;
-        source[edge_base + i] = {c, point_on_edge(k, s), NodeLocation::Edge};
+    parallel_for(nv, threads, [&](int64_t begin, int64_t end, int) {
+      for (int64_t v = begin; v < end; ++v) {
+        values[v] = field.vertex_value(v);
+        source[v] = {topo.vertex_cell(v), point_on_edge(topo.vertex_corner(v), 0.0),
+                     NodeLocation::Vertex};
       }
-    }
+    });
+    parallel_for(ne, threads, [&](int64_t begin, int64_t end, int) {
+      for (int64_t e = begin; e < end; ++e) {
+        if (en.offset[e] == en.offset[e + 1])
+          continue;
+        const int64_t c = topo.edge_cells_begin(e)[0];
+        int k = 0;
+        while (topo.cell_edge(c, k) != e)
+          ++k;
+        for (int64_t i = en.offset[e]; i < en.offset[e + 1]; ++i) {
+          const double s = topo.edge_reversed(c, k) ? 1 - en.nodes[i].t : en.nodes[i].t;
+          values[edge_base + i] = en.nodes[i].value;
+          source[edge_base + i] = {c, point_on_edge(k, s), NodeLocation::Edge};
+        }
+      }
+    });
   }
-  for (int64_t c = 0; c < nc; ++c) {
-    if (fallback[c])
-      continue;
-    for (std::size_t i = 0; i < interior[c].size(); ++i) {
-      values[interior_base[c] + i] = interior[c][i].value;
-      source[interior_base[c] + i] = {c, interior[c][i].uv, NodeLocation::Interior};
+  // Interior nodes and the cells' connections in global ids: each cell writes its own slots
+  // (offsets by prefix sums), so this runs in parallel with the same result.
+  {
+    std::vector<int64_t> join_off(nc + 1, 0), split_off(nc + 1, 0);
+    for (int64_t c = 0; c < nc; ++c) {
+      join_off[c + 1] = join_off[c] + (fallback[c] ? 0 : static_cast<int64_t>(cell_join[c].size()));
+      split_off[c + 1] =
+          split_off[c] + (fallback[c] ? 0 : static_cast<int64_t>(cell_split[c].size()));
     }
-    auto resolve = [&](int64_t ref) { return ref >= 0 ? ref : interior_base[c] + (-1 - ref); };
-    for (auto [a, b] : cell_join[c])
-      join_edges.emplace_back(resolve(a), resolve(b));
-    for (auto [a, b] : cell_split[c])
-      split_edges.emplace_back(resolve(a), resolve(b));
-    if (opt.arc_geometry)
+    join_edges.resize(static_cast<std::size_t>(join_off[nc]));
+    split_edges.resize(static_cast<std::size_t>(split_off[nc]));
+    parallel_for(nc, threads, [&](int64_t begin, int64_t end, int) {
+      for (int64_t c = begin; c < end; ++c) {
+        if (fallback[c])
+          continue;
+        for (std::size_t i = 0; i < interior[c].size(); ++i) {
+          values[interior_base[c] + i] = interior[c][i].value;
+          source[interior_base[c] + i] = {c, interior[c][i].uv, NodeLocation::Interior};
+        }
+        auto resolve = [&](int64_t ref) { return ref >= 0 ? ref : interior_base[c] + (-1 - ref); };
+        int64_t j = join_off[c];
+        for (auto [a, b] : cell_join[c])
+          join_edges[j++] = {resolve(a), resolve(b)};
+        j = split_off[c];
+        for (auto [a, b] : cell_split[c])
+          split_edges[j++] = {resolve(a), resolve(b)};
+      }
+    });
+  }
+  if (opt.arc_geometry)
+    for (int64_t c = 0; c < nc; ++c) {
+      if (fallback[c])
+        continue;
+      auto resolve = [&](int64_t ref) { return ref >= 0 ? ref : interior_base[c] + (-1 - ref); };
       for (int side = 0; side < 2; ++side) {
         const auto &edges = side == 0 ? cell_join[c] : cell_split[c];
         const auto &paths = side == 0 ? cell_join_paths[c] : cell_split_paths[c];
@@ -235,7 +262,7 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
           geo_edges.push_back({resolve(edges[i].first), resolve(edges[i].second), inner});
         }
       }
-  }
+    }
 
   // Fallback cells: k x k refinement through the edge nodes, PL rule (all sub-edges in both
   // graphs). Lattice points on an edge are shared by both cells of the edge.
@@ -325,6 +352,9 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
 
   // Edge chains: consecutive nodes along every edge (vertices, edge nodes, lattice nodes).
   {
+    const std::size_t chain_edges = static_cast<std::size_t>(ne + en.offset[ne]);
+    join_edges.reserve(join_edges.size() + chain_edges);
+    split_edges.reserve(split_edges.size() + chain_edges);
     std::vector<std::pair<double, int64_t>> chain;
     std::map<int64_t, std::vector<std::pair<double, int64_t>>> lattice_by_edge;
     for (const auto &[key, id] : lattice_node)
@@ -334,11 +364,13 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
       chain.push_back({0.0, topo.edge_vertices(e)[0]});
       for (int64_t i = en.offset[e]; i < en.offset[e + 1]; ++i)
         chain.push_back({en.nodes[i].t, edge_base + i});
-      auto it = lattice_by_edge.find(e);
-      if (it != lattice_by_edge.end())
-        chain.insert(chain.end(), it->second.begin(), it->second.end());
       chain.push_back({1.0, topo.edge_vertices(e)[1]});
-      std::sort(chain.begin(), chain.end());
+      // Edge nodes are ascending already; only fallback lattice nodes need sorting in.
+      auto it = lattice_by_edge.empty() ? lattice_by_edge.end() : lattice_by_edge.find(e);
+      if (it != lattice_by_edge.end()) {
+        chain.insert(chain.end(), it->second.begin(), it->second.end());
+        std::sort(chain.begin(), chain.end());
+      }
       // Positions along the edge through its first cell (for the geometry of the chain pieces).
       const int64_t ec = topo.edge_cells_begin(e)[0];
       int ek = 0;
