@@ -128,7 +128,8 @@ int connect_lower(const PathField &f, const CellNodes &cn, const std::vector<dou
     return -1;
   }
   // Candidate targets: nodes below the threshold, nearest first.
-  std::vector<int> order;
+  thread_local std::vector<int> order; // reused: no allocation per call
+  order.clear();
   for (std::size_t i = 0; i < cn.nodes.size(); ++i)
     if (values[i] < thr)
       order.push_back(static_cast<int>(i));

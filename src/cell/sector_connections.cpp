@@ -27,7 +27,9 @@ SectorResult connect_sectors(const BernsteinTriangle &g, const CellNodes &cn,
   SectorResult out;
   const PathField down(g);
   const PathField up = down.negated();
-  std::vector<double> vals(cn.nodes.size()), neg_vals(cn.nodes.size());
+  thread_local std::vector<double> vals, neg_vals; // reused across cells of a thread
+  vals.resize(cn.nodes.size());
+  neg_vals.resize(cn.nodes.size());
   for (std::size_t i = 0; i < cn.nodes.size(); ++i) {
     vals[i] = cn.nodes[i].value;
     neg_vals[i] = -cn.nodes[i].value;
