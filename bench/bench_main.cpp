@@ -1,7 +1,7 @@
 // hoct's benchmark (not a test; run it with bench/run): the exact contour tree on the thesis'
 // datasets against the thesis' times and against hoct's PL tree of the 16x refinement, its
 // scaling on random fields up to 4 million cells for degrees 2, 3 and 5 with one and two
-// threads, phase by phase with peak memory, and the PL tree on large meshes. Prints Markdown
+// threads, phase by phase, the CLI's peak memory, and the PL tree on large meshes. Prints Markdown
 // for docs/PERFORMANCE.md; medians of --runs runs.
 #include "bench_pipeline.hpp"
 #include "bench_support.hpp"
@@ -31,7 +31,7 @@ namespace {
 struct Settings {
   int runs = 5;
   bool quick = false;
-  std::vector<std::string> sections = {"datasets", "scaling", "pl"};
+  std::vector<std::string> sections = {"datasets", "scaling", "memory", "pl"};
   std::vector<int> degrees = {2, 3, 5};
   std::vector<double> sizes = {1e4, 1e5, 1e6, 4e6};
   std::vector<int> threads = {1, 2};
@@ -138,8 +138,8 @@ void scaling_section(const Settings &s) {
   std::printf(
       "| degree | cells | graph nodes | tree nodes | read | mesh + Bernstein | critical "
       "points | connections | sweeps | merge | write | total | us/cell (tree) | cells/s "
-      "(total) | peak MiB (`hoct tree`) | bytes/cell | tree, 2 threads | cell phase 1 -> 2 threads "
-      "|\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+      "(total) | tree, 2 threads | cell phase 1 -> 2 threads "
+      "|\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   for (int degree : s.degrees)
     for (double size : s.sizes) {
       ScratchDir scratch;
@@ -157,16 +157,40 @@ void scaling_section(const Settings &s) {
         (threads == 1 ? m1 : m2) = m;
       }
       const double cells = static_cast<double>(m1.cells);
-      // Peak memory of the CLI doing the same job in a process of its own.
-      const ProcessPeak peak = run_process({executable_dir() + "/hoct", "tree", vtu, "--json",
-                                            scratch.file("cli.json"), "--threads", "1", "-q"});
       std::printf("| %d | %lld | %lld | %zu | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f | "
-                  "%.3f | %.2f | %.0f | %.0f | %.0f | %.3f | %.2fx |\n",
+                  "%.3f | %.2f | %.0f | %.3f | %.2fx |\n",
                   degree, static_cast<long long>(m1.cells), static_cast<long long>(m1.graph_nodes),
                   m1.nodes, m1.read, m1.mesh, m1.critical, m1.connections, m1.sweeps, m1.merge,
                   m1.write, m1.total, 1e6 * m1.tree / cells, cells / m1.total,
-                  peak.max_rss_kib / 1024.0, 1024.0 * peak.max_rss_kib / cells, m2.tree,
+                  m2.tree,
                   m2.cell_phase() > 0 ? m1.cell_phase() / m2.cell_phase() : 0.0);
+      std::fflush(stdout);
+    }
+  std::printf("\n");
+}
+
+// Peak memory of `hoct tree FILE.vtu --json J --threads 1` in a process of its own (GNU time).
+void memory_section(const Settings &s) {
+  std::printf("## Peak memory of `hoct tree FILE.vtu --json J` (random fields; GNU time's maximum "
+              "resident set)\n\n| degree | cells | peak MiB | bytes per cell | wall time (s) "
+              "|\n|---|---|---|---|---|\n");
+  for (int degree : s.degrees)
+    for (double size : s.sizes) {
+      ScratchDir scratch;
+      const std::string vtu = scratch.file("random.vtu");
+      long long cells = 0;
+      {
+        DatasetOptions o;
+        o.cells = static_cast<long long>(size);
+        o.degree = degree;
+        const MeshInput in = generate_dataset("random", o);
+        cells = static_cast<long long>(in.num_cells());
+        write_vtu(vtu, in);
+      }
+      const ProcessPeak peak = run_process({executable_dir() + "/hoct", "tree", vtu, "--json",
+                                            scratch.file("cli.json"), "--threads", "1", "-q"});
+      std::printf("| %d | %lld | %.0f | %.0f | %.2f |\n", degree, cells, peak.max_rss_kib / 1024.0,
+                  1024.0 * peak.max_rss_kib / static_cast<double>(cells), peak.seconds);
       std::fflush(stdout);
     }
   std::printf("\n");
@@ -281,7 +305,7 @@ int main(int argc, char **argv) {
   app.add_option("--runs", s.runs, "Repetitions per measurement (medians are reported)")
       ->check(CLI::Range(1, 1000));
   app.add_flag("--quick", s.quick, "A smoke run: small sizes, few runs");
-  app.add_option("--sections", s.sections, "Sections to run: datasets, scaling, pl")
+  app.add_option("--sections", s.sections, "Sections to run: datasets, scaling, memory, pl")
       ->delimiter(',');
   app.add_option("--degrees", s.degrees, "Degrees of the scaling section")->delimiter(',');
   app.add_option("--sizes", s.sizes, "Cell counts of the scaling section, e.g. 1e4,1e5")
@@ -299,6 +323,8 @@ int main(int argc, char **argv) {
     datasets_section(s);
   if (wants(s, "scaling"))
     scaling_section(s);
+  if (wants(s, "memory"))
+    memory_section(s);
   if (wants(s, "pl"))
     pl_section(s);
   std::printf("peak resident memory of the benchmark: %.1f MiB\n", peak_rss_kib() / 1024.0);

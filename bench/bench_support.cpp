@@ -1,6 +1,7 @@
 #include "bench_support.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -8,7 +9,6 @@
 
 #include <fcntl.h>
 #include <spawn.h>
-#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -45,8 +45,17 @@ long status_field_kib(const char *key) {
 long peak_rss_kib() { return status_field_kib("VmHWM:"); }
 
 ProcessPeak run_process(const std::vector<std::string> &argv) {
+  // Through GNU time (-f %M: the peak resident set of the program it runs): a child spawned
+  // directly from this large process would inherit this process's peak at exec.
+  char report[] = "/tmp/hoct-bench-peak-XXXXXX";
+  const int fd = mkstemp(report);
+  if (fd < 0)
+    throw std::runtime_error("cannot create a temporary file");
+  close(fd);
+  std::vector<std::string> full = {"/usr/bin/time", "-f", "%M", "-o", report};
+  full.insert(full.end(), argv.begin(), argv.end());
   std::vector<char *> args;
-  for (const auto &a : argv)
+  for (const auto &a : full)
     args.push_back(const_cast<char *>(a.c_str()));
   args.push_back(nullptr);
   posix_spawn_file_actions_t actions;
@@ -57,13 +66,20 @@ ProcessPeak run_process(const std::vector<std::string> &argv) {
   const auto t0 = clock_type::now();
   const int rc = posix_spawn(&pid, args[0], &actions, nullptr, args.data(), environ);
   posix_spawn_file_actions_destroy(&actions);
-  if (rc != 0)
-    throw std::runtime_error("cannot run " + argv[0]);
+  if (rc != 0) {
+    std::remove(report);
+    throw std::runtime_error("cannot run /usr/bin/time (Debian package 'time')");
+  }
   int status = 0;
-  rusage usage{};
-  if (wait4(pid, &status, 0, &usage) != pid || !WIFEXITED(status) || WEXITSTATUS(status) != 0)
+  const bool ok = waitpid(pid, &status, 0) == pid && WIFEXITED(status) && WEXITSTATUS(status) == 0;
+  ProcessPeak peak;
+  peak.seconds = seconds_since(t0);
+  std::ifstream in(report);
+  in >> peak.max_rss_kib;
+  std::remove(report);
+  if (!ok || !in)
     throw std::runtime_error(argv[0] + " failed");
-  return {usage.ru_maxrss, seconds_since(t0)};
+  return peak;
 }
 
 std::string executable_dir() {

@@ -24,8 +24,8 @@ double stat(const TreeResult &t, const std::string &name);
 // Peak resident memory of this process (VmHWM, KiB).
 long peak_rss_kib();
 
-// Runs a program (argv[0] is its path) with stdout and stderr discarded; returns its peak
-// resident memory (ru_maxrss, KiB) and wall time; throws if it cannot run or fails.
+// Runs a program (argv[0] is its path) under GNU time with stdout and stderr discarded; returns
+// its peak resident memory (KiB) and wall time; throws if it cannot run or fails.
 struct ProcessPeak {
   long max_rss_kib = 0;
   double seconds = 0;
