@@ -1,5 +1,6 @@
 #include "commands.hpp"
 #include "error.hpp"
+#include "memory_guard.hpp"
 
 #include <cstdio>
 #include <exception>
@@ -16,6 +17,7 @@ int main(int argc, char **argv) {
   hoct::cli::register_compare(app);
   hoct::cli::register_render(app);
   hoct::cli::register_study(app);
+  hoct::cli::add_max_memory_option(app); // after every command is registered
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError &e) {
