@@ -289,10 +289,12 @@ std::vector<T> VtuFile::read_array(const pugi::xml_node &a, std::size_t expected
   const TypeInfo &ti = type_of(a);
   const std::string format = a.attribute("format").as_string("ascii");
   std::vector<T> out;
-  out.reserve(expected);
   if (format == "ascii") {
     const char *p = a.child_value();
     const char *end = p + std::strlen(p);
+    // A value takes at least two characters (a digit and a separator): never reserve more than
+    // the text can hold, whatever the header counts claim.
+    out.reserve(std::min(expected, static_cast<std::size_t>(end - p) / 2 + 1));
     std::size_t index = 0;
     while (true) {
       while (p < end && std::isspace(static_cast<unsigned char>(*p)))
@@ -335,6 +337,7 @@ std::vector<T> VtuFile::read_array(const pugi::xml_node &a, std::size_t expected
     if (n != expected)
       fail(describe(a) + " has " + std::to_string(n) + " values, expected " +
            std::to_string(expected));
+    out.reserve(n);
     for (std::size_t i = 0; i < n; ++i) {
       uint8_t b[8];
       std::memcpy(b, raw.data() + i * ti.size, ti.size);
