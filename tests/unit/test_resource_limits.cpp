@@ -8,6 +8,7 @@
 #include "io/read_limits.hpp"
 #include "io/vtu_reader.hpp"
 #include "io/vtu_writer.hpp"
+#include "mesh/mesh.hpp"
 #include "test_meshes.hpp"
 
 #include <gtest/gtest.h>
@@ -132,6 +133,27 @@ TEST(ResourceLimits, MshMemoryBudget) {
     EXPECT_NE(what.find("need ~"), std::string::npos) << what;
     EXPECT_NE(what.find("limit 1 MiB"), std::string::npos) << what;
   }
+}
+
+// Finite but huge values (fuzz_vtu found 8.3e307, which gave NaN tree nodes) and coordinates:
+// refused by the mesh checks beyond 1e100 in magnitude, accepted below.
+TEST(ResourceLimits, ValuesAndCoordinatesBeyond1e100) {
+  auto error = [](const MeshInput &m) -> std::string {
+    try {
+      build_mesh(m);
+    } catch (const Error &e) {
+      return e.what();
+    }
+    return "(no error)";
+  };
+  MeshInput m = small_mesh(2);
+  m.values[3] = 1e99;
+  EXPECT_EQ(error(m), "(no error)");
+  m.values[3] = 8.3e307;
+  EXPECT_NE(error(m).find("value out of range"), std::string::npos) << error(m);
+  m.values[3] = 0;
+  m.points[4][2] = -1e150;
+  EXPECT_NE(error(m).find("point 4 has a coordinate beyond 1e100"), std::string::npos) << error(m);
 }
 
 TEST(ResourceLimits, EstimateGrowsWithEveryCountAndSaturates) {
