@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -35,6 +36,26 @@ int replay(const char *dir, Target target) {
     ++n;
   }
   return n;
+}
+
+// The invariant check the targets rely on detects broken trees.
+TEST(FuzzRegressions, InvariantCheckDetectsBrokenTrees) {
+  hoct::TreeResult t;
+  t.nodes.resize(3);
+  t.nodes[0].value = 0;
+  t.nodes[1].value = 1;
+  t.nodes[2].value = 2;
+  t.arcs = {{0, 1}, {1, 2}};
+  EXPECT_EQ(hoct::fuzz::tree_invariant_violation(t), "");
+  t.arcs = {{0, 1}};
+  EXPECT_EQ(hoct::fuzz::tree_invariant_violation(t), "arcs != nodes - 1");
+  t.arcs = {{0, 1}, {0, 1}};
+  EXPECT_EQ(hoct::fuzz::tree_invariant_violation(t), "tree not connected");
+  t.arcs = {{1, 0}, {1, 2}};
+  EXPECT_EQ(hoct::fuzz::tree_invariant_violation(t), "arc not from the lower to the higher node");
+  t.arcs = {{0, 1}, {1, 2}};
+  t.nodes[1].value = std::nan("");
+  EXPECT_EQ(hoct::fuzz::tree_invariant_violation(t), "arc descends in value (or a value is NaN)");
 }
 
 TEST(FuzzRegressions, Vtu) { EXPECT_GT(replay("fuzz_vtu", Target::Vtu), 0); }
