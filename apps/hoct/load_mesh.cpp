@@ -1,6 +1,7 @@
 #include "load_mesh.hpp"
 
 #include "io/read_mesh.hpp"
+#include "memory_guard.hpp"
 
 #include <chrono>
 
@@ -10,7 +11,7 @@ LoadedMesh load_mesh(const std::string &path, const std::string &scalar, bool st
   using clock = std::chrono::steady_clock;
   LoadedMesh r;
   const auto t0 = clock::now();
-  r.input = read_mesh(path, scalar);
+  r.input = read_mesh(path, scalar, read_limits());
   const auto t1 = clock::now();
   r.mesh = build_mesh(r.input, {.throw_on_error = strict});
   const auto t2 = clock::now();

@@ -1,5 +1,6 @@
 #include "commands.hpp"
 #include "error.hpp"
+#include "memory_guard.hpp"
 
 #include <cstdio>
 #include <exception>
@@ -17,6 +18,7 @@ int main(int argc, char **argv) {
   hoct::cli::register_render(app);
   hoct::cli::register_study(app);
   hoct::cli::register_convert(app);
+  hoct::cli::add_max_memory_option(app); // after every command is registered
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError &e) {

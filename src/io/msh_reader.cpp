@@ -81,8 +81,8 @@ std::string str(double v) {
 
 class MshReader {
 public:
-  MshReader(const std::string &path, std::string data, std::string scalar)
-      : s_(path, std::move(data)), scalar_(std::move(scalar)) {}
+  MshReader(const std::string &path, std::string data, std::string scalar, const ReadLimits &limits)
+      : s_(path, std::move(data)), scalar_(std::move(scalar)), limits_(limits) {}
   MeshInput read();
 
 private:
@@ -106,12 +106,20 @@ private:
                                    std::size_t at) const;
   const std::vector<int> &gmsh_to_lattice(int degree);
   MeshInput finish();
+  // The memory budget for these totals; the place (whose line takes a scan to find) is formatted
+  // only when the budget is exceeded.
+  void check_budget(uint64_t points, uint64_t cells, uint64_t cell_nodes, std::size_t at) const {
+    if (limits_.max_memory_bytes &&
+        estimate_memory_bytes(points, cells, cell_nodes) > limits_.max_memory_bytes)
+      check_memory(limits_, points, cells, cell_nodes, s_.where(at));
+  }
   [[noreturn]] void fail_file(const std::string &what) const {
     throw InputError(s_.path() + ": " + what);
   }
 
   MshScanner s_;
   std::string scalar_;
+  ReadLimits limits_;
   bool have_format_ = false, have_nodes_ = false, have_elements_ = false;
   bool binary_ = false;
   int version_ = 0; // 41 or 22
@@ -277,6 +285,7 @@ void MshReader::read_nodes_41(std::size_t) {
   // At least: block header 3 ints + size_t (binary) or 4 numbers (ascii); node: tag and x y z.
   s_.check_count(blocks, binary_ ? 20 : 8, "node blocks", header_at);
   s_.check_count(total, binary_ ? 32 : 8, "nodes", header_at);
+  check_budget(points_.size() + total, cells_.num_cells(), cells_.cell_nodes.size(), header_at);
   node_index_.allow_flat(2 * (points_.size() + total) + 1024);
   if (points_.empty()) {
     points_.reserve(total);
@@ -356,6 +365,7 @@ void MshReader::read_nodes_22(std::size_t) {
   const uint64_t n = s_.unsigned_number("the number of nodes", true);
   s_.end_line("the number of nodes");
   s_.check_count(n, 8, "nodes", header_at);
+  check_budget(points_.size() + n, cells_.num_cells(), cells_.cell_nodes.size(), header_at);
   node_index_.allow_flat(2 * (points_.size() + n) + 1024);
   for (uint64_t i = 0; i < n; ++i) {
     const std::size_t node_at = (s_.skip_space(), s_.pos());
@@ -443,6 +453,9 @@ void MshReader::read_elements_41(std::size_t at) {
   (void)min_tag, (void)max_tag;
   s_.check_count(blocks, binary_ ? 20 : 8, "element blocks", header_at);
   s_.check_count(total, binary_ ? 16 : 4, "elements", header_at);
+  // Every element could be a triangle (3 nodes at least); points and lines are skipped later.
+  check_budget(points_.size(), cells_.num_cells() + total, cells_.cell_nodes.size() + 3 * total,
+               header_at);
   element_index_.allow_flat(2 * (cells_.num_cells() + total) + 1024);
   uint64_t seen = 0;
   for (uint64_t b = 0; b < blocks; ++b) {
@@ -524,6 +537,7 @@ void MshReader::read_elements_22(std::size_t at) {
   const uint64_t n = s_.unsigned_number("the number of elements", true);
   s_.end_line("the number of elements");
   s_.check_count(n, 8, "elements", header_at); // tag, type, number of tags, a node
+  check_budget(points_.size(), cells_.num_cells() + n, cells_.cell_nodes.size() + 3 * n, header_at);
   element_index_.allow_flat(2 * (cells_.num_cells() + n) + 1024);
   for (uint64_t i = 0; i < n; ++i) {
     const std::size_t element_at = (s_.skip_space(), s_.pos());
@@ -721,8 +735,13 @@ MeshInput MshReader::finish() {
 
 } // namespace
 
-MeshInput read_msh(const std::string &path, const std::string &scalar) {
-  return MshReader(path, read_whole_file(path), scalar).read();
+MeshInput read_msh(const std::string &path, const std::string &scalar, const ReadLimits &limits) {
+  return MshReader(path, read_whole_file(path), scalar, limits).read();
+}
+
+MeshInput read_msh_buffer(std::string bytes, const std::string &name, const std::string &scalar,
+                          const ReadLimits &limits) {
+  return MshReader(name, std::move(bytes), scalar, limits).read();
 }
 
 } // namespace hoct

@@ -9,14 +9,14 @@
 
 namespace hoct {
 
-MeshInput read_mesh(const std::string &path, const std::string &scalar) {
+MeshInput read_mesh(const std::string &path, const std::string &scalar, const ReadLimits &limits) {
   std::string ext = std::filesystem::path(path).extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(),
                  [](unsigned char c) { return std::tolower(c); });
   if (ext == ".vtu")
-    return read_vtu(path, scalar);
+    return read_vtu(path, scalar, limits);
   if (ext == ".msh")
-    return read_msh(path, scalar);
+    return read_msh(path, scalar, limits);
   throw InputError(path + ": unknown file type '" + ext +
                    "' (supported: .vtu VTK XML UnstructuredGrid, .msh Gmsh 4.1 or 2.2 ascii)");
 }

@@ -11,12 +11,16 @@
 #include <charconv>
 #include <cmath>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <limits>
 #include <sstream>
 
 namespace hoct {
 namespace {
+
+// The largest expansion zlib's deflate format allows (about 1032:1), with margin.
+constexpr uint64_t kMaxZlibRatio = 1100;
 
 enum class Scalar { F32, F64, I8, U8, I16, U16, I32, U32, I64, U64 };
 
@@ -33,8 +37,11 @@ constexpr TypeInfo kTypes[] = {
 
 class VtuFile {
 public:
-  VtuFile(std::string path, std::string scalar)
-      : path_(std::move(path)), scalar_(std::move(scalar)) {}
+  VtuFile(std::string path, std::string scalar, const ReadLimits &limits)
+      : path_(std::move(path)), scalar_(std::move(scalar)), limits_(limits) {}
+  // Reads the file at path_ into bytes_.
+  void read_file();
+  void set_bytes(std::string bytes) { bytes_ = std::move(bytes); }
   MeshInput read();
 
 private:
@@ -50,6 +57,7 @@ private:
   template <class T> std::vector<T> read_array(const pugi::xml_node &a, std::size_t expected) const;
 
   std::string path_, scalar_;
+  ReadLimits limits_;
   std::string bytes_;         // the file
   std::string xml_;           // the file without the appended payload
   std::string_view appended_; // appended payload (after '_')
@@ -59,13 +67,19 @@ private:
   bool big_endian_ = false, compressed_ = false;
 };
 
-void VtuFile::load() {
+void VtuFile::read_file() {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path_, ec))
+    fail("is a directory, not a .vtu file");
   std::ifstream in(path_, std::ios::binary);
   if (!in)
     fail("cannot open (" + std::string(std::strerror(errno)) + ")");
   std::ostringstream ss;
   ss << in.rdbuf();
   bytes_ = ss.str();
+}
+
+void VtuFile::load() {
   if (bytes_.empty())
     fail("the file is empty");
   // Cut the appended payload out before XML parsing: raw bytes may contain anything.
@@ -146,7 +160,9 @@ std::vector<uint8_t> VtuFile::decode_blocks(const uint8_t *p, std::size_t avail,
   if (!compressed_) {
     need(hs, "the header");
     const uint64_t n = read_uint(p, hs, big_endian_);
-    need(hs + n, "the data");
+    if (n > avail - hs) // not need(hs + n): a hostile n makes the sum wrap around
+      fail(describe(a) + ": truncated binary data (the header claims " + std::to_string(n) +
+           " bytes, " + std::to_string(avail - hs) + " available)");
     if (consumed)
       *consumed = hs + n;
     return std::vector<uint8_t>(p + hs, p + hs + n);
@@ -167,10 +183,22 @@ std::vector<uint8_t> VtuFile::decode_blocks(const uint8_t *p, std::size_t avail,
            std::to_string(csize[b]) + " bytes");
   }
   need(pos + total, "the compressed blocks");
-  const uint64_t out_size = nb == 0 ? 0 : (nb - 1) * bs + (last ? last : bs);
-  if (bs > (uint64_t{1} << 31) || out_size > (uint64_t{1} << 40))
-    fail(describe(a) + ": implausible compression header (block size " + std::to_string(bs) + ")");
+  if (bs > (uint64_t{1} << 31) || last > bs)
+    fail(describe(a) + ": implausible compression header (block size " + std::to_string(bs) +
+         ", last block " + std::to_string(last) + ")");
+  // zlib expands at most ~1032:1, so a block's size is bounded by its compressed size: check
+  // every block before allocating for any (a hostile header cannot make us allocate gigabytes).
+  uint64_t out_size = 0;
+  for (uint64_t b = 0; b < nb; ++b) {
+    const uint64_t want = (b + 1 == nb && last) ? last : bs;
+    if (want > kMaxZlibRatio * csize[b] + 64)
+      fail(describe(a) + ": compressed block " + std::to_string(b) + " of " +
+           std::to_string(csize[b]) + " bytes cannot expand to the " + std::to_string(want) +
+           " bytes the header claims");
+    out_size += want;
+  }
   std::vector<uint8_t> out;
+  out.reserve(out_size);
   for (uint64_t b = 0; b < nb; ++b) {
     const uint64_t want = (b + 1 == nb && last) ? last : bs;
     const std::size_t at = out.size();
@@ -223,6 +251,8 @@ std::vector<uint8_t> VtuFile::binary_payload(const pugi::xml_node &a) const {
     if (!compressed_) {
       const std::size_t hchars = base64_length(hs);
       const std::vector<uint8_t> h = decode(hchars);
+      if (h.size() < static_cast<std::size_t>(hs))
+        fail(describe(a) + ": truncated appended base64 header");
       const uint64_t n = read_uint(h.data(), hs, big_endian_);
       if (n > rest.size())
         fail(describe(a) + ": header claims " + std::to_string(n) + " bytes");
@@ -232,14 +262,19 @@ std::vector<uint8_t> VtuFile::binary_payload(const pugi::xml_node &a) const {
       return decode_blocks(all.data(), all.size(), a, nullptr);
     }
     const std::vector<uint8_t> h3 = decode(base64_length(3 * hs));
+    if (h3.size() < 3 * static_cast<std::size_t>(hs))
+      fail(describe(a) + ": truncated appended base64 compression header");
     const uint64_t nb = read_uint(h3.data(), hs, big_endian_);
     if (nb > rest.size())
       fail(describe(a) + ": compression header claims " + std::to_string(nb) + " blocks");
     const std::size_t hchars = base64_length((3 + nb) * hs);
     const std::vector<uint8_t> h = decode(hchars);
+    if (h.size() < (3 + nb) * hs)
+      fail(describe(a) + ": truncated appended base64 compression header");
     uint64_t total = 0;
-    for (uint64_t b = 0; b < nb; ++b)
-      total += read_uint(h.data() + (3 + b) * hs, hs, big_endian_);
+    for (uint64_t b = 0; b < nb && total <= rest.size(); ++b)
+      total +=
+          std::min<uint64_t>(read_uint(h.data() + (3 + b) * hs, hs, big_endian_), rest.size() + 1);
     if (total > rest.size())
       fail(describe(a) + ": compressed sizes exceed the appended data");
     std::vector<uint8_t> all = decode(hchars + base64_length(total));
@@ -254,10 +289,12 @@ std::vector<T> VtuFile::read_array(const pugi::xml_node &a, std::size_t expected
   const TypeInfo &ti = type_of(a);
   const std::string format = a.attribute("format").as_string("ascii");
   std::vector<T> out;
-  out.reserve(expected);
   if (format == "ascii") {
     const char *p = a.child_value();
     const char *end = p + std::strlen(p);
+    // A value takes at least two characters (a digit and a separator): never reserve more than
+    // the text can hold, whatever the header counts claim.
+    out.reserve(std::min(expected, static_cast<std::size_t>(end - p) / 2 + 1));
     std::size_t index = 0;
     while (true) {
       while (p < end && std::isspace(static_cast<unsigned char>(*p)))
@@ -300,6 +337,7 @@ std::vector<T> VtuFile::read_array(const pugi::xml_node &a, std::size_t expected
     if (n != expected)
       fail(describe(a) + " has " + std::to_string(n) + " values, expected " +
            std::to_string(expected));
+    out.reserve(n);
     for (std::size_t i = 0; i < n; ++i) {
       uint8_t b[8];
       std::memcpy(b, raw.data() + i * ti.size, ti.size);
@@ -432,6 +470,8 @@ MeshInput VtuFile::read() {
         static_cast<unsigned long long>(nc) > bytes_.size())
       fail(where + ": NumberOfPoints " + std::to_string(np) + " / NumberOfCells " +
            std::to_string(nc) + " exceed what the file can hold");
+    check_memory(limits_, m.points.size() + np, m.num_cells() + nc,
+                 m.cell_nodes.size() + 3 * static_cast<uint64_t>(nc), path_ + ": " + where);
     const int64_t base = static_cast<int64_t>(m.points.size());
     // Points.
     const pugi::xml_node pa = piece.child("Points").child("DataArray");
@@ -495,6 +535,8 @@ MeshInput VtuFile::read() {
     const int64_t nconn = nc ? offsets.back() : 0;
     if (nconn < 0 || static_cast<unsigned long long>(nconn) > bytes_.size())
       fail(where + ": the last cell offset " + std::to_string(nconn) + " is invalid");
+    check_memory(limits_, m.points.size(), m.num_cells() + nc,
+                 m.cell_nodes.size() + static_cast<uint64_t>(nconn), path_ + ": " + where);
     const std::vector<int64_t> conn = read_ints(ca, static_cast<std::size_t>(nconn));
     std::string problem;
     for (long long c = 0; c < nc; ++c) {
@@ -525,8 +567,17 @@ MeshInput VtuFile::read() {
 
 } // namespace
 
-MeshInput read_vtu(const std::string &path, const std::string &scalar) {
-  return VtuFile(path, scalar).read();
+MeshInput read_vtu(const std::string &path, const std::string &scalar, const ReadLimits &limits) {
+  VtuFile f(path, scalar, limits);
+  f.read_file();
+  return f.read();
+}
+
+MeshInput read_vtu_buffer(std::string bytes, const std::string &name, const std::string &scalar,
+                          const ReadLimits &limits) {
+  VtuFile f(name, scalar, limits);
+  f.set_bytes(std::move(bytes));
+  return f.read();
 }
 
 } // namespace hoct

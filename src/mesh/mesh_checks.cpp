@@ -7,6 +7,20 @@
 #include <sstream>
 
 namespace hoct {
+namespace {
+
+// Largest magnitude of a coordinate or value: the cell computations multiply a few of them
+// (Jacobians, degree elevation, derivatives), which must stay finite in double precision.
+constexpr double kMaxMagnitude = 1e100;
+
+std::string format_double(double v) {
+  std::ostringstream s;
+  s.precision(17);
+  s << v;
+  return s.str();
+}
+
+} // namespace
 
 bool check_input(const MeshInput &in, ProblemLog &problems) {
   bool ok = true;
@@ -31,9 +45,19 @@ bool check_input(const MeshInput &in, ProblemLog &problems) {
     if (!std::isfinite(x[0]) || !std::isfinite(x[1]) || !std::isfinite(x[2]))
       problems.add("non-finite point coordinate", Severity::Error,
                    "point " + std::to_string(p) + " has a NaN or infinite coordinate");
+    else if (std::abs(x[0]) > kMaxMagnitude || std::abs(x[1]) > kMaxMagnitude ||
+             std::abs(x[2]) > kMaxMagnitude)
+      problems.add("coordinate out of range", Severity::Error,
+                   "point " + std::to_string(p) + " has a coordinate beyond 1e100 in magnitude " +
+                       "(products of coordinates would overflow double precision)");
     if (!std::isfinite(in.values[p]))
       problems.add("non-finite value", Severity::Error,
                    "point " + std::to_string(p) + " has value " + std::to_string(in.values[p]));
+    else if (std::abs(in.values[p]) > kMaxMagnitude)
+      problems.add("value out of range", Severity::Error,
+                   "point " + std::to_string(p) + " has value " + format_double(in.values[p]) +
+                       ", beyond 1e100 in magnitude (the Bernstein form and the root isolation "
+                       "would overflow double precision; rescale the field)");
   }
   std::vector<int64_t> seen;
   for (std::size_t c = 0; c < in.cell_degree.size(); ++c) {

@@ -1,0 +1,36 @@
+// Resource limits for the readers: a memory budget checked against an estimate computed from the
+// counts in a file's headers before the reader allocates for them. The estimate covers the whole
+// pipeline (the MeshInput, the checked Mesh and the exact contour tree of it), so an input that
+// cannot be processed fails early with "needs ~X GiB, limit Y GiB" instead of being killed later.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+namespace hoct {
+
+struct ReadLimits {
+  // Memory budget in bytes; 0 = no limit.
+  uint64_t max_memory_bytes = 0;
+};
+
+// Estimated peak bytes to read, build and compute the exact tree of a mesh with `points` nodes,
+// `cells` triangles and `cell_nodes` entries in the connectivity (sum of the nodes per cell).
+uint64_t estimate_memory_bytes(uint64_t points, uint64_t cells, uint64_t cell_nodes);
+
+// Throws InputError "<where>: <what> needs ~X GiB, limit Y GiB (...)" if the estimate exceeds
+// the limit.
+void check_memory(const ReadLimits &limits, uint64_t points, uint64_t cells, uint64_t cell_nodes,
+                  const std::string &where);
+
+// "1.5 GiB", "300 MiB", ...
+std::string format_bytes(uint64_t bytes);
+
+// Parses a size: a number with an optional unit K, M, G, T (powers of 1024; "GiB"/"GB" accepted)
+// or "%" of the physical memory ("50%"). Throws Error on bad input.
+uint64_t parse_memory_size(const std::string &text, uint64_t physical_bytes);
+
+// Physical memory of the machine in bytes (0 if unknown).
+uint64_t physical_memory_bytes();
+
+} // namespace hoct
