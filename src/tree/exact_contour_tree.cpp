@@ -351,7 +351,27 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
   }
 
   // Edge chains: consecutive nodes along every edge (vertices, edge nodes, lattice nodes).
-  {
+  // Without fallback lattice nodes or geometry, edge e adds count(e) + 1 pieces at a known
+  // offset: written in parallel.
+  if (lattice_node.empty() && !opt.arc_geometry) {
+    const std::size_t base_join = join_edges.size(), base_split = split_edges.size();
+    const std::size_t chain_edges = static_cast<std::size_t>(ne + en.offset[ne]);
+    join_edges.resize(base_join + chain_edges);
+    split_edges.resize(base_split + chain_edges);
+    parallel_for(ne, threads, [&](int64_t begin, int64_t end, int) {
+      for (int64_t e = begin; e < end; ++e) {
+        std::size_t slot = static_cast<std::size_t>(e + en.offset[e]);
+        int64_t prev = topo.edge_vertices(e)[0];
+        for (int64_t i = en.offset[e]; i <= en.offset[e + 1]; ++i) {
+          const int64_t cur = i < en.offset[e + 1] ? edge_base + i : topo.edge_vertices(e)[1];
+          join_edges[base_join + slot] = {prev, cur};
+          split_edges[base_split + slot] = {prev, cur};
+          ++slot;
+          prev = cur;
+        }
+      }
+    });
+  } else {
     const std::size_t chain_edges = static_cast<std::size_t>(ne + en.offset[ne]);
     join_edges.reserve(join_edges.size() + chain_edges);
     split_edges.reserve(split_edges.size() + chain_edges);
