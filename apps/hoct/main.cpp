@@ -16,6 +16,7 @@ int main(int argc, char **argv) {
   hoct::cli::register_compare(app);
   hoct::cli::register_render(app);
   hoct::cli::register_study(app);
+  hoct::cli::register_check(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError &e) {
