@@ -33,6 +33,8 @@ json to_json(const TreeResult &t) {
                      {"uv", n.uv},
                      {"location", to_string(n.location)},
                      {"fallback", n.fallback}});
+    if (n.merged > 1)
+      nodes.back()["merged"] = n.merged;
     ++by_type[to_string(n.type)];
     ++by_location[to_string(n.location)];
   }
@@ -142,6 +144,9 @@ TreeResult read_tree_json(const std::string &path) {
         node.uv = n.at("uv").get<std::array<double, 2>>();
       node.location = parse_location(n.value("location", std::string("unknown")));
       node.fallback = n.value("fallback", false);
+      node.merged = n.value("merged", int64_t{1});
+      if (node.merged < 1)
+        throw std::invalid_argument("node " + std::to_string(i) + " has \"merged\" < 1");
       t.nodes.push_back(node);
     }
     const int64_t nn = static_cast<int64_t>(t.nodes.size());

@@ -34,6 +34,13 @@ bool check_input(const MeshInput &in, ProblemLog &problems) {
     if (!std::isfinite(in.values[p]))
       problems.add("non-finite value", Severity::Error,
                    "point " + std::to_string(p) + " has value " + std::to_string(in.values[p]));
+    else if (std::abs(in.values[p]) > kMaxAbsValue) {
+      std::ostringstream m;
+      m << "point " << p << " has value " << in.values[p] << ", beyond +-" << kMaxAbsValue
+        << " (the Bernstein coefficients, derivatives and products would overflow; rescale the "
+           "field)";
+      problems.add("value too large", Severity::Error, m.str());
+    }
   }
   std::vector<int64_t> seen;
   for (std::size_t c = 0; c < in.cell_degree.size(); ++c) {

@@ -9,9 +9,13 @@
 
 namespace hoct {
 
+// Largest |value| accepted: Lagrange -> Bernstein conversion, derivatives and the products of
+// the certification multiply values by factors far below 1e150 for every supported degree.
+inline constexpr double kMaxAbsValue = 1e150;
+
 // Structure of the input: array sizes, node counts per degree, node indices in range, no node
-// repeated within a cell, finite point coordinates and values. Returns false if the input is too
-// broken to build a topology from (the problems say why).
+// repeated within a cell, finite point coordinates, finite values of at most kMaxAbsValue. Returns
+// false if the input is too broken to build a topology from (the problems say why).
 bool check_input(const MeshInput &input, ProblemLog &problems);
 
 // Degenerate (zero-area) and inverted cells. Planar meshes: the Jacobian determinant of each

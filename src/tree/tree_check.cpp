@@ -16,6 +16,10 @@ using P2 = std::array<double, 2>;
 // The reference triangle's corners.
 constexpr P2 kCorner[3] = {{0, 0}, {1, 0}, {0, 1}};
 
+// Differences below this are not told apart: subnormal numbers have no relative precision left
+// (a field of values around 1e-310 evaluates to 0 in places).
+constexpr double kTiny = 1e-300;
+
 std::string node_str(int64_t i) { return "node " + std::to_string(i); }
 
 // One sample direction around a node: in `cell`, the point base + r * dir.
@@ -172,16 +176,20 @@ private:
     const bool single = up + down == 0 && n_ <= components;
     std::string want;
     switch (nd.type) {
+    // A minimum has arcs up only: one, or more where a flat region (one contracted node) is
+    // both a minimum and a split; the samples around the node then tell (a non-flat minimum has
+    // one upper sector, so two arcs up fail there).
     case NodeType::Minimum:
-      if (!(down == 0 && (up == 1 || single)))
-        want = "a minimum has one arc, up";
+      if (!(down == 0 && (up >= 1 || single)))
+        want = "a minimum has arcs up only";
       break;
     case NodeType::Maximum:
-      if (!(up == 0 && (down == 1 || single)))
-        want = "a maximum has one arc, down";
+      if (!(up == 0 && (down >= 1 || single)))
+        want = "a maximum has arcs down only";
       break;
     case NodeType::Saddle:
-      if (!(up >= 1 && down >= 1 && up + down >= 3))
+      // (ContourTree::types calls the node of a one-node tree, e.g. a constant field, a saddle.)
+      if (!(up >= 1 && down >= 1 && up + down >= 3) && !single)
         want = "a saddle has at least three arcs, up and down";
       break;
     case NodeType::Regular:
@@ -212,7 +220,7 @@ private:
       return;
     }
     const double f = mesh_.field.value(nd.cell, u, v);
-    if (!(std::abs(f - nd.value) <= opt_.value_tolerance * scale_))
+    if (!(std::abs(f - nd.value) <= std::max(opt_.value_tolerance * scale_, kTiny)))
       fail("value", {i}, {},
            node_str(i) + " has value " + fmt(nd.value) + " but the field at cell " +
                std::to_string(nd.cell) + " (" + fmt(u) + ", " + fmt(v) + ") is " + fmt(f));
@@ -422,6 +430,11 @@ private:
                             "refinement's (skipped)");
       return;
     }
+    if (nd.merged > 1) {
+      skip(i, node_str(i) + " stands for a flat region of " + std::to_string(nd.merged) +
+                  " nodes of one value (skipped)");
+      return;
+    }
     const double u = nd.uv[0], v = nd.uv[1];
     Ring ring;
     switch (classify_location(u, v)) {
@@ -463,7 +476,7 @@ private:
     for (const auto &s : ring.samples)
       for (double b : poly(s.cell).coefficients())
         eps = std::max(eps, std::abs(b));
-    eps *= 256 * std::numeric_limits<double>::epsilon();
+    eps = std::max(eps * 256 * std::numeric_limits<double>::epsilon(), kTiny);
     // The smallest radius at which every sample differs from the node's value by more than
     // rounding decides: small enough to see only this node, large enough to be above rounding.
     for (double r : {1e-5, 3e-5, 1e-4, 3e-4, 1e-3, 3e-3, 1e-2}) {

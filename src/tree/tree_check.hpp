@@ -5,14 +5,16 @@
 //   - order: nodes ascending by value, every arc from the lower to the higher node;
 //   - positions: each node's value is the field at its (cell, u, v), its position the cell's
 //     geometry map there (tolerances relative to the value range and the mesh extent);
-//   - types versus degrees: minima and maxima have degree 1, saddles degree >= 3, regular nodes
-//     one arc up and one down;
+//   - types versus degrees: minima have arcs up only, maxima down only (one, or more for a
+//     flat region contracted into one node, which the samples then judge), saddles degree >= 3
+//     with arcs both ways, regular nodes one arc up and one down;
 //   - types versus the field: f - f(node) sampled on small circles around the node, in every
 //     cell around it (the fan of a vertex, both cells of an edge), gives the number of lower and
 //     upper sectors; a minimum has no lower one, a maximum no upper one, a saddle at least two of
 //     one kind, a regular node one of each, and no node has more arcs down (up) than sectors.
-// Nodes of degenerate (fallback) cells and nodes whose neighbourhood is flat to rounding (plateaus
-// contracted into one node) are reported as skipped, not as failures. No I/O.
+// Nodes of degenerate (fallback) cells, nodes standing for a flat region (TreeNode::merged > 1)
+// and nodes whose neighbourhood is flat to rounding are reported as skipped, not as failures.
+// No I/O.
 #pragma once
 
 #include "mesh/mesh.hpp"

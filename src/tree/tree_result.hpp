@@ -34,6 +34,9 @@ struct TreeNode {
   // its value is exact, its type is that of the refinement.
   bool fallback = false;
   int64_t graph_node = -1; // the node of TreeResult::graph it stands for (if any)
+  // The number of nodes of a flat region (equal values) contract_flat merged into this one: the
+  // node then stands for all of them, and sits at one of their positions.
+  int64_t merged = 1;
 };
 
 struct TreeResult {
