@@ -18,12 +18,13 @@ struct CheckOptions {
   std::string tree, file, scalar;
   bool verbose = false;
   double value_tolerance = 1e-9;
+  MergeOption merge;
 };
 
 void run_check(const CheckOptions &o) {
   const TreeResult tree = read_tree_json(o.tree);
   // Not strict: a tree computed with --force on an invalid domain can still be checked.
-  const LoadedMesh lm = load_mesh(o.file, o.scalar, /*strict=*/false);
+  const LoadedMesh lm = load_mesh(o.file, o.scalar, /*strict=*/false, o.merge.tolerance());
   if (!lm.mesh.complete)
     throw Error(o.file + ": the mesh is too broken to check a tree against:\n" +
                 lm.mesh.problems.summary());
@@ -63,6 +64,7 @@ void register_check(CLI::App &app) {
   sub->add_option("--value-tolerance", o->value_tolerance,
                   "Allowed |value - field| relative to the value range (default 1e-9)")
       ->check(CLI::PositiveNumber);
+  add_merge_option(sub, o->merge);
   sub->add_flag("-v,--verbose", o->verbose, "List every failure and every skipped node");
   sub->callback([o] { run_check(*o); });
 }

@@ -25,7 +25,8 @@ namespace {
 struct TreeOptions {
   std::string file, scalar, json, vtp, svg, simplify;
   bool branches = false;
-  bool linear = false, augmented = false, allow_other = false, quiet = false, keep_flat = false;
+  bool linear = false, augmented = false, force = false, quiet = false, keep_flat = false;
+  MergeOption merge;
   int refine = 0;
   int threads = 0;
 };
@@ -55,10 +56,10 @@ void run_tree(const TreeOptions &o) {
   if (o.linear && o.refine > 0)
     throw Error("--linear and --refine exclude each other");
   const auto t0 = clock::now();
-  const LoadedMesh lm = load_mesh(o.file, o.scalar, /*strict=*/true);
-  const std::string warning = check_domain(lm.mesh.topology, o.file, o.allow_other);
-  if (!warning.empty())
-    std::fprintf(stderr, "hoct: warning: %s\n", warning.c_str());
+  const LoadedMesh lm = load_mesh(o.file, o.scalar, /*strict=*/false, o.merge.tolerance());
+  const std::vector<std::string> forced = check_domain(lm.mesh, o.file, o.force);
+  for (const auto &why : forced)
+    std::fprintf(stderr, "hoct: warning: --force: %s\n", why.c_str());
   const auto t1 = clock::now();
   TreeResult tree;
   auto t2 = t1;
@@ -96,6 +97,7 @@ void run_tree(const TreeOptions &o) {
   } else {
     decompose_branches(tree);
   }
+  tree.forced = forced;
   tree.add_stat("input_cells", static_cast<double>(lm.mesh.topology.num_cells()));
   tree.add_stat("time_read_s", lm.read_seconds);
   tree.add_stat("time_check_s", lm.build_seconds);
@@ -147,9 +149,12 @@ void register_tree(CLI::App &app) {
   sub->add_flag("--keep-flat", o->keep_flat,
                 "Keep the nodes and zero-length arcs that plateaus (equal values) produce, instead "
                 "of one node per flat region");
-  sub->add_flag("--allow-non-simply-connected", o->allow_other,
-                "Go on when the domain is not a disk or a sphere (the result is not a contour "
-                "tree then)");
+  sub->add_flag("--force,--allow-non-simply-connected", o->force,
+                "Compute what is well defined when the domain is not one disk or sphere (one "
+                "tree per component; the join/split merge where there are holes or handles) or "
+                "has inverted cells or unmerged duplicate vertices; the output says so "
+                "(\"forced\" in the JSON, warnings on stderr)");
+  add_merge_option(sub, o->merge);
   sub->add_option("--threads", o->threads,
                   "Threads for the cell phase (default: all cores; the result does not depend on "
                   "it)")

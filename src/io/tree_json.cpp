@@ -21,6 +21,10 @@ json to_json(const TreeResult &t) {
   j["version"] = 1;
   j["method"] = t.method;
   j["augmented"] = t.augmented;
+  if (!t.forced.empty()) {
+    j["forced"] = true;
+    j["forced_reasons"] = t.forced;
+  }
   json nodes = json::array();
   std::map<std::string, int64_t> by_type, by_location;
   for (std::size_t i = 0; i < t.nodes.size(); ++i) {
@@ -127,6 +131,8 @@ TreeResult read_tree_json(const std::string &path) {
     TreeResult t;
     t.method = j.value("method", "");
     t.augmented = j.value("augmented", false);
+    if (j.value("forced", false))
+      t.forced = j.value("forced_reasons", std::vector<std::string>{"forced"});
     const auto &nodes = j.at("nodes");
     for (std::size_t i = 0; i < nodes.size(); ++i) {
       const auto &n = nodes.at(i);

@@ -18,6 +18,11 @@ inline constexpr double kMaxAbsValue = 1e150;
 // false if the input is too broken to build a topology from (the problems say why).
 bool check_input(const MeshInput &input, ProblemLog &problems);
 
+// Distinct vertices (cell corners) at the same position, within 1e-10 of the bounding-box
+// diagonal: a crack in the mesh (merge_duplicate_points repairs it).
+void check_duplicate_vertices(const MeshInput &input, const Topology &topology,
+                              ProblemLog &problems);
+
 // Degenerate (zero-area) and inverted cells. Planar meshes: the Jacobian determinant of each
 // cell's map, in Bernstein form (certified where its coefficients share a sign, else sampled), must
 // be bounded away from zero and agree in sign with a consistent orientation of the mesh. Surfaces:

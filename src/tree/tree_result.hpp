@@ -47,6 +47,9 @@ struct TreeResult {
   std::vector<PersistencePair> pairs;       // birth/death are indices into nodes
   std::vector<Branch> branches;             // branch decomposition (indices into nodes)
   std::vector<std::pair<std::string, double>> stats;
+  // Why the result was computed although the input is not a valid disk or sphere (hoct tree
+  // --force); empty for a regular result.
+  std::vector<std::string> forced;
   // The graph the tree came from, with geometry (optional), and each arc drawn on the surface
   // (compute_arc_paths; empty = straight arcs).
   std::shared_ptr<const GeometricGraph> graph;
