@@ -26,6 +26,7 @@ struct TreeOptions {
   std::string file, scalar, json, vtp, svg, simplify;
   bool branches = false;
   bool linear = false, augmented = false, force = false, quiet = false, keep_flat = false;
+  bool no_timings = false;
   MergeOption merge;
   int refine = 0;
   int threads = 0;
@@ -104,6 +105,8 @@ void run_tree(const TreeOptions &o) {
   if (t2 != t1)
     tree.add_stat("time_pl_mesh_s", seconds(t1, t2));
   tree.add_stat("time_tree_s", seconds(t2, t3));
+  if (o.no_timings) // byte-identical files for identical inputs
+    std::erase_if(tree.stats, [](const auto &s) { return s.first.rfind("time_", 0) == 0; });
   if (!o.json.empty())
     write_tree_json(o.json, tree);
   if (!o.vtp.empty()) {
@@ -159,6 +162,9 @@ void register_tree(CLI::App &app) {
                   "Threads for the cell phase (default: all cores; the result does not depend on "
                   "it)")
       ->check(CLI::Range(0, 1024));
+  sub->add_flag("--no-timings", o->no_timings,
+                "Leave the timings (time_* statistics) out of the JSON: the same input then gives "
+                "byte-identical files, whatever the thread count");
   sub->add_flag("-q,--quiet", o->quiet, "No summary on the terminal");
   sub->callback([o] { run_tree(*o); });
 }

@@ -1,11 +1,14 @@
 #include "commands.hpp"
 #include "error.hpp"
+#include "io/atomic_file.hpp"
 
 #include <cstdio>
 #include <exception>
 #include <iostream>
 
 int main(int argc, char **argv) {
+  // An interrupted run (Ctrl-C, kill) removes its temporary files: no partial output is left.
+  hoct::install_interrupt_cleanup();
   CLI::App app{"hoct: exact contour trees of piecewise-polynomial fields on triangle meshes"};
   app.require_subcommand(1);
   app.set_version_flag("--version", "hoct 0.1.0");
