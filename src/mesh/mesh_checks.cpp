@@ -43,6 +43,20 @@ bool check_input(const MeshInput &in, ProblemLog &problems) {
       problems.add("value too large", Severity::Error, m.str());
     }
   }
+  double lo = INFINITY, hi = -INFINITY;
+  for (double v : in.values)
+    if (std::isfinite(v)) {
+      lo = std::min(lo, v);
+      hi = std::max(hi, v);
+    }
+  if (hi > lo && hi - lo < kMinValueRange) {
+    std::ostringstream m;
+    m << "the values span only " << hi - lo << " (from " << lo << " to " << hi << "), less than "
+      << kMinValueRange
+      << ": products of derivatives would underflow and critical points be lost; rescale the "
+         "field";
+    problems.add("value range too small", Severity::Error, m.str());
+  }
   std::vector<int64_t> seen;
   for (std::size_t c = 0; c < in.cell_degree.size(); ++c) {
     const int d = in.cell_degree[c];

@@ -12,9 +12,14 @@ namespace hoct {
 // Largest |value| accepted: Lagrange -> Bernstein conversion, derivatives and the products of
 // the certification multiply values by factors far below 1e150 for every supported degree.
 inline constexpr double kMaxAbsValue = 1e150;
+// Smallest non-zero value range accepted: below it, products of derivatives (Hessian
+// determinants, the certification's bounds) underflow and critical points are lost (seen from
+// 1e-160 on).
+inline constexpr double kMinValueRange = 1e-140;
 
 // Structure of the input: array sizes, node counts per degree, node indices in range, no node
-// repeated within a cell, finite point coordinates, finite values of at most kMaxAbsValue. Returns
+// repeated within a cell, finite point coordinates, finite values of at most kMaxAbsValue
+// spanning 0 or at least kMinValueRange. Returns
 // false if the input is too broken to build a topology from (the problems say why).
 bool check_input(const MeshInput &input, ProblemLog &problems);
 
