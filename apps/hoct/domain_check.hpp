@@ -32,7 +32,7 @@ inline std::string domain_problem(const Topology &t) {
   else if (!t.orientable())
     why = "a non-orientable surface (like a Moebius strip)";
   else if (t.boundary_loops() > 1)
-    why = std::to_string(t.boundary_loops() - 1) + " hole(s) (" +
+    why = "a surface with " + std::to_string(t.boundary_loops() - 1) + " hole(s) (" +
           std::to_string(t.boundary_loops()) + " boundary loops, like an annulus)";
   else
     why = "a surface with handles (genus > 0)";
@@ -70,7 +70,7 @@ inline std::vector<std::string> check_domain(const Mesh &m, const std::string &f
     if (!force)
       throw Error(msg + ". Use --force to compute the join/split merge anyway (one tree per "
                         "component; for holes or handles the result is not the Reeb graph).");
-    reasons.push_back("the domain is " + why +
+    reasons.push_back("the domain is not a disk or a sphere but " + why +
                       ": the join/split merge is computed (one tree per "
                       "component), not the Reeb graph");
   }
