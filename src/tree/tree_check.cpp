@@ -510,6 +510,10 @@ private:
       }
       break;
     }
+    if (ring.max_radius < 1e-5) {
+      skip(i, node_str(i) + ": too close to a cell corner or side to sample around it (skipped)");
+      return;
+    }
     if (!conclusive) {
       skip(i, node_str(i) + ": the field is flat around it to rounding (a contracted plateau or "
                             "a degenerate critical point; skipped)");
