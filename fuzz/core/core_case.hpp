@@ -66,8 +66,7 @@ inline double decode_value(ByteReader &in, double previous) {
 }
 
 // Builds the mesh described by the bytes (throws hoct::Error for an invalid one).
-inline Mesh decode_mesh(const uint8_t *data, std::size_t size) {
-  ByteReader in(data, size);
+inline Mesh decode_mesh(ByteReader &in) {
   const int ncells = 1 + in.byte() % 16;
   // Vertices of a 3 x 3 grid of squares on [0, 3]^2, each jittered by up to 0.45 per axis.
   std::vector<Vec3> verts;
@@ -113,17 +112,49 @@ inline Mesh decode_mesh(const uint8_t *data, std::size_t size) {
   return build_mesh(input);
 }
 
+inline Mesh decode_mesh(const uint8_t *data, std::size_t size) {
+  ByteReader in(data, size);
+  return decode_mesh(in);
+}
+
+// The same nodes (type, value, position, cell, uv) and arcs.
+inline bool same_tree(const TreeResult &a, const TreeResult &b) {
+  if (a.nodes.size() != b.nodes.size() || a.arcs != b.arcs)
+    return false;
+  for (std::size_t i = 0; i < a.nodes.size(); ++i) {
+    const TreeNode &x = a.nodes[i], &y = b.nodes[i];
+    if (x.type != y.type || x.value != y.value || x.position != y.position || x.cell != y.cell ||
+        x.uv != y.uv || x.merged != y.merged)
+      return false;
+  }
+  return true;
+}
+
 // Runs the case. Returns an empty string if the tree passed the checker or the input was
-// refused with hoct::Error; else the checker's findings.
+// refused with hoct::Error; else the findings. A byte after the mesh (absent: 0) asks for the
+// augmented tree (bit 0) and for a second computation on 3 threads that must be identical
+// (bit 1).
 inline std::string run_core_case(const uint8_t *data, std::size_t size) {
   try {
-    const Mesh mesh = decode_mesh(data, size);
+    ByteReader in(data, size);
+    const Mesh mesh = decode_mesh(in);
+    const uint8_t options = in.byte();
     ExactTreeOptions o;
     o.threads = 1;
-    const TreeResult tree = contract_flat(exact_contour_tree(mesh, o));
+    o.augmented = options & 1;
+    auto compute = [&] {
+      const TreeResult t = exact_contour_tree(mesh, o);
+      return o.augmented ? t : contract_flat(t);
+    };
+    const TreeResult tree = compute();
     const TreeCheckReport r = check_tree(tree, mesh);
     if (!r.ok())
       return r.summary();
+    if (options & 2) {
+      o.threads = 3;
+      if (!same_tree(tree, compute()))
+        return "the tree on 3 threads differs from the tree on 1 thread\n";
+    }
   } catch (const Error &) {
   }
   return "";

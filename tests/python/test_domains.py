@@ -82,6 +82,19 @@ def moebius(n=24):
     return pts, tris
 
 
+def torus(n=16, m=8):
+    pts = [((2 + math.cos(2 * math.pi * j / m)) * math.cos(2 * math.pi * i / n),
+            (2 + math.cos(2 * math.pi * j / m)) * math.sin(2 * math.pi * i / n),
+            math.sin(2 * math.pi * j / m)) for i in range(n) for j in range(m)]
+    idx = lambda i, j: (i % n) * m + (j % m)
+    tris = []
+    for i in range(n):
+        for j in range(m):
+            tris += [(idx(i, j), idx(i + 1, j), idx(i + 1, j + 1)),
+                     (idx(i, j), idx(i + 1, j + 1), idx(i, j + 1))]
+    return pts, tris
+
+
 def tree(path, *extra, check=False):
     return run("tree", path, "-q", *extra, check=check)
 
@@ -133,6 +146,13 @@ with tempdir() as tmp:
     expect_refused("moebius", p("moebius.vtu"), ["non-orientable"])
     info = run("info", p("moebius.vtu"), check=False).stdout
     R.check("non-orientable" in info, "info names the non-orientable surface")
+
+    # Torus: a handle.
+    write_vtu(p("torus.vtu"), *torus())
+    expect_refused("torus", p("torus.vtu"), ["handles", "Euler characteristic 0, 0 boundary loop"])
+    tree(p("torus.vtu"), "--force", "--json", p("torus.json"), check=True)
+    t = json.load(open(p("torus.json")))
+    R.check(t.get("forced") and len(t["arcs"]) == len(t["nodes"]) - 1, "torus --force: a tree, labelled")
 
     # Non-manifold: three triangles on one edge, and two disks touching at one vertex. Never
     # computed, not even with --force.
