@@ -14,6 +14,7 @@ namespace {
 
 struct InfoOptions {
   std::string file, scalar;
+  MergeOption merge;
   bool json = false;
 };
 
@@ -29,7 +30,7 @@ std::string domain_kind(const Topology &t) {
 }
 
 int run_info(const InfoOptions &o) {
-  const LoadedMesh lm = load_mesh(o.file, o.scalar, /*strict=*/false);
+  const LoadedMesh lm = load_mesh(o.file, o.scalar, /*strict=*/false, o.merge.tolerance());
   const Mesh &m = lm.mesh;
   std::map<int, int64_t> degrees;
   for (int64_t c = 0; c < m.field.num_cells(); ++c)
@@ -121,6 +122,7 @@ void register_info(CLI::App &app) {
   sub->add_option("file", o->file, "Input file (.vtu, .msh)")->required();
   sub->add_option("--scalar", o->scalar, "Point-data array / node-data view (default: the first)");
   sub->add_flag("--json", o->json, "Print JSON instead of text");
+  add_merge_option(sub, o->merge);
   sub->callback([o] {
     const int rc = run_info(*o);
     if (rc != 0)

@@ -25,7 +25,9 @@ namespace {
 struct TreeOptions {
   std::string file, scalar, json, vtp, svg, simplify;
   bool branches = false;
-  bool linear = false, augmented = false, allow_other = false, quiet = false, keep_flat = false;
+  bool linear = false, augmented = false, force = false, quiet = false, keep_flat = false;
+  bool no_timings = false;
+  MergeOption merge;
   int refine = 0;
   int threads = 0;
 };
@@ -55,10 +57,10 @@ void run_tree(const TreeOptions &o) {
   if (o.linear && o.refine > 0)
     throw Error("--linear and --refine exclude each other");
   const auto t0 = clock::now();
-  const LoadedMesh lm = load_mesh(o.file, o.scalar, /*strict=*/true);
-  const std::string warning = check_domain(lm.mesh.topology, o.file, o.allow_other);
-  if (!warning.empty())
-    std::fprintf(stderr, "hoct: warning: %s\n", warning.c_str());
+  const LoadedMesh lm = load_mesh(o.file, o.scalar, /*strict=*/false, o.merge.tolerance());
+  const std::vector<std::string> forced = check_domain(lm.mesh, o.file, o.force);
+  for (const auto &why : forced)
+    std::fprintf(stderr, "hoct: warning: --force: %s\n", why.c_str());
   const auto t1 = clock::now();
   TreeResult tree;
   auto t2 = t1;
@@ -96,12 +98,15 @@ void run_tree(const TreeOptions &o) {
   } else {
     decompose_branches(tree);
   }
+  tree.forced = forced;
   tree.add_stat("input_cells", static_cast<double>(lm.mesh.topology.num_cells()));
   tree.add_stat("time_read_s", lm.read_seconds);
   tree.add_stat("time_check_s", lm.build_seconds);
   if (t2 != t1)
     tree.add_stat("time_pl_mesh_s", seconds(t1, t2));
   tree.add_stat("time_tree_s", seconds(t2, t3));
+  if (o.no_timings) // byte-identical files for identical inputs
+    std::erase_if(tree.stats, [](const auto &s) { return s.first.rfind("time_", 0) == 0; });
   if (!o.json.empty())
     write_tree_json(o.json, tree);
   if (!o.vtp.empty()) {
@@ -147,13 +152,19 @@ void register_tree(CLI::App &app) {
   sub->add_flag("--keep-flat", o->keep_flat,
                 "Keep the nodes and zero-length arcs that plateaus (equal values) produce, instead "
                 "of one node per flat region");
-  sub->add_flag("--allow-non-simply-connected", o->allow_other,
-                "Go on when the domain is not a disk or a sphere (the result is not a contour "
-                "tree then)");
+  sub->add_flag("--force,--allow-non-simply-connected", o->force,
+                "Compute what is well defined when the domain is not one disk or sphere (one "
+                "tree per component; the join/split merge where there are holes or handles) or "
+                "has inverted cells or unmerged duplicate vertices; the output says so "
+                "(\"forced\" in the JSON, warnings on stderr)");
+  add_merge_option(sub, o->merge);
   sub->add_option("--threads", o->threads,
                   "Threads for the cell phase (default: all cores; the result does not depend on "
                   "it)")
       ->check(CLI::Range(0, 1024));
+  sub->add_flag("--no-timings", o->no_timings,
+                "Leave the timings (time_* statistics) out of the JSON: the same input then gives "
+                "byte-identical files, whatever the thread count");
   sub->add_flag("-q,--quiet", o->quiet, "No summary on the terminal");
   sub->callback([o] { run_tree(*o); });
 }

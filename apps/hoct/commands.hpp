@@ -14,5 +14,6 @@ void register_compare(CLI::App &app);
 void register_render(CLI::App &app);
 void register_study(CLI::App &app);
 void register_convert(CLI::App &app);
+void register_check(CLI::App &app);
 
 } // namespace hoct::cli

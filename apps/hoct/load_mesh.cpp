@@ -1,23 +1,61 @@
 #include "load_mesh.hpp"
 
+#include "error.hpp"
 #include "io/read_mesh.hpp"
 #include "memory_guard.hpp"
+#include "mesh/duplicate_points.hpp"
 
 #include <chrono>
+#include <cstdio>
 
 namespace hoct::cli {
 
-LoadedMesh load_mesh(const std::string &path, const std::string &scalar, bool strict) {
+LoadedMesh load_mesh(const std::string &path, const std::string &scalar, bool strict,
+                     double merge_tolerance) {
   using clock = std::chrono::steady_clock;
   LoadedMesh r;
   const auto t0 = clock::now();
   r.input = read_mesh(path, scalar, read_limits());
+  if (merge_tolerance >= 0) {
+    const MergeReport m = merge_duplicate_points(r.input, merge_tolerance);
+    if (m.merged_points > 0)
+      std::fprintf(stderr,
+                   "hoct: merged %lld duplicate point(s) of %s (tolerance %g of the "
+                   "bounding-box diagonal)\n",
+                   static_cast<long long>(m.merged_points), path.c_str(), merge_tolerance);
+  }
   const auto t1 = clock::now();
   r.mesh = build_mesh(r.input, {.throw_on_error = strict});
   const auto t2 = clock::now();
   r.read_seconds = std::chrono::duration<double>(t1 - t0).count();
   r.build_seconds = std::chrono::duration<double>(t2 - t1).count();
   return r;
+}
+
+void add_merge_option(CLI::App *sub, MergeOption &merge) {
+  merge.option = sub->add_option("--merge-duplicates", merge.text,
+                                 "Merge points at the same position before building the mesh "
+                                 "(--merge-duplicates=TOL: within TOL of the bounding-box "
+                                 "diagonal; default 1e-9)")
+                     ->expected(0, 1);
+}
+
+double MergeOption::tolerance() const {
+  if (option == nullptr || option->count() == 0)
+    return -1;
+  if (text.empty())
+    return 1e-9;
+  double v = -1;
+  std::size_t used = 0;
+  try {
+    v = std::stod(text, &used);
+  } catch (const std::exception &) {
+    used = 0;
+  }
+  if (used != text.size() || !(v >= 0 && v <= 0.1))
+    throw Error("--merge-duplicates: '" + text +
+                "' is not a tolerance between 0 and 0.1 (write --merge-duplicates=TOL)");
+  return v;
 }
 
 } // namespace hoct::cli

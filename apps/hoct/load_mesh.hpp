@@ -3,6 +3,8 @@
 
 #include "mesh/mesh.hpp"
 
+#include <CLI/CLI.hpp>
+
 #include <string>
 
 namespace hoct::cli {
@@ -14,7 +16,18 @@ struct LoadedMesh {
 };
 
 // Reads `path` (any supported format) and builds the mesh. With strict = true, any error-level
-// problem throws hoct::Error listing them.
-LoadedMesh load_mesh(const std::string &path, const std::string &scalar, bool strict);
+// problem throws hoct::Error listing them. With merge_tolerance >= 0, points closer than that
+// (relative to the bounding-box diagonal) are merged first (mesh/duplicate_points.hpp).
+LoadedMesh load_mesh(const std::string &path, const std::string &scalar, bool strict,
+                     double merge_tolerance = -1);
+
+// --merge-duplicates[=TOL] of a command.
+struct MergeOption {
+  std::string text;
+  CLI::Option *option = nullptr;
+  // -1 when not given, 1e-9 when given without a value; throws hoct::Error for a bad value.
+  double tolerance() const;
+};
+void add_merge_option(CLI::App *sub, MergeOption &merge);
 
 } // namespace hoct::cli

@@ -1,12 +1,15 @@
 #include "commands.hpp"
 #include "error.hpp"
 #include "memory_guard.hpp"
+#include "io/atomic_file.hpp"
 
 #include <cstdio>
 #include <exception>
 #include <iostream>
 
 int main(int argc, char **argv) {
+  // An interrupted run (Ctrl-C, kill) removes its temporary files: no partial output is left.
+  hoct::install_interrupt_cleanup();
   CLI::App app{"hoct: exact contour trees of piecewise-polynomial fields on triangle meshes"};
   app.require_subcommand(1);
   app.set_version_flag("--version", "hoct 0.1.0");
@@ -19,6 +22,7 @@ int main(int argc, char **argv) {
   hoct::cli::register_study(app);
   hoct::cli::register_convert(app);
   hoct::cli::add_max_memory_option(app); // after every command is registered
+  hoct::cli::register_check(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError &e) {

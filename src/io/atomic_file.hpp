@@ -14,4 +14,11 @@ namespace hoct {
 void write_file_atomic(const std::string &path, const std::function<void(std::ostream &)> &write,
                        bool binary = true);
 
+// Installs handlers for SIGINT, SIGTERM and SIGHUP that remove the temporary files of the writes
+// in progress (a fixed registry of live temporary paths; the handler only calls unlink, which is
+// async-signal-safe) and exit at once with status 128 + signal (130 for SIGINT, 143 for SIGTERM).
+// An interrupted run thus leaves neither a partial file nor a temporary one, and every existing
+// output file keeps its old content. For programs (the CLI), not for libraries' users.
+void install_interrupt_cleanup();
+
 } // namespace hoct

@@ -21,6 +21,10 @@ json to_json(const TreeResult &t) {
   j["version"] = 1;
   j["method"] = t.method;
   j["augmented"] = t.augmented;
+  if (!t.forced.empty()) {
+    j["forced"] = true;
+    j["forced_reasons"] = t.forced;
+  }
   json nodes = json::array();
   std::map<std::string, int64_t> by_type, by_location;
   for (std::size_t i = 0; i < t.nodes.size(); ++i) {
@@ -33,6 +37,8 @@ json to_json(const TreeResult &t) {
                      {"uv", n.uv},
                      {"location", to_string(n.location)},
                      {"fallback", n.fallback}});
+    if (n.merged > 1)
+      nodes.back()["merged"] = n.merged;
     ++by_type[to_string(n.type)];
     ++by_location[to_string(n.location)];
   }
@@ -125,6 +131,8 @@ TreeResult read_tree_json(const std::string &path) {
     TreeResult t;
     t.method = j.value("method", "");
     t.augmented = j.value("augmented", false);
+    if (j.value("forced", false))
+      t.forced = j.value("forced_reasons", std::vector<std::string>{"forced"});
     const auto &nodes = j.at("nodes");
     for (std::size_t i = 0; i < nodes.size(); ++i) {
       const auto &n = nodes.at(i);
@@ -142,6 +150,9 @@ TreeResult read_tree_json(const std::string &path) {
         node.uv = n.at("uv").get<std::array<double, 2>>();
       node.location = parse_location(n.value("location", std::string("unknown")));
       node.fallback = n.value("fallback", false);
+      node.merged = n.value("merged", int64_t{1});
+      if (node.merged < 1)
+        throw std::invalid_argument("node " + std::to_string(i) + " has \"merged\" < 1");
       t.nodes.push_back(node);
     }
     const int64_t nn = static_cast<int64_t>(t.nodes.size());

@@ -1,7 +1,8 @@
 // The contour-tree JSON format every tree hoct writes shares:
 //   {"format": "hoct-contour-tree", "version": 1, "method", "augmented",
+//    "forced": true and "forced_reasons": [...] (only for hoct tree --force on an invalid domain),
 //    "nodes": [{"id", "type", "value", "position": [x,y,z], "cell", "uv": [u,v], "location",
-//               "fallback"}],
+//               "fallback", "merged" (only if > 1: the nodes of a flat region it stands for)}],
 //    "arcs": [[id, id], ...], "pairs": [{"birth", "death", "persistence", "kind"}],
 //    "branches": [{"id", "extremum", "saddle", "persistence", "parent", "depth"}],
 //    "stats": {"nodes_by_type": {...}, "nodes_by_location": {...}, <named statistics>}}

@@ -24,6 +24,7 @@ Mesh build_mesh(const MeshInput &input, const MeshBuildOptions &options) {
   const bool structural_ok = check_input(input, m.problems);
   if (structural_ok) {
     m.topology = Topology::build(input, m.problems);
+    check_duplicate_vertices(input, m.topology, m.problems);
     m.field = Field::build(input, m.topology, m.problems, options.threads);
     m.geometry = Geometry::build(input);
     check_geometry(m.geometry, m.topology, m.problems);
@@ -45,6 +46,7 @@ Mesh build_mesh_from_samples(const MeshInput &input, const std::vector<CellSampl
                        std::to_string(input.num_cells()) + " cells");
   else if (check_input(input, m.problems)) {
     m.topology = Topology::build(input, m.problems);
+    check_duplicate_vertices(input, m.topology, m.problems);
     std::vector<BernsteinTriangle> polys(samples.size());
     bool fitted = true;
     for (std::size_t c = 0; c < samples.size(); ++c) {

@@ -1,5 +1,6 @@
 #include "mesh/mesh_checks.hpp"
 
+#include "mesh/duplicate_points.hpp"
 #include "poly/lattice.hpp"
 
 #include <algorithm>
@@ -11,7 +12,7 @@ namespace {
 
 // Largest magnitude of a coordinate or value: the cell computations multiply a few of them
 // (Jacobians, degree elevation, derivatives), which must stay finite in double precision.
-constexpr double kMaxMagnitude = 1e100;
+constexpr double kMaxMagnitude = kMaxAbsValue;
 
 std::string format_double(double v) {
   std::ostringstream s;
@@ -59,6 +60,20 @@ bool check_input(const MeshInput &in, ProblemLog &problems) {
                        ", beyond 1e100 in magnitude (the Bernstein form and the root isolation "
                        "would overflow double precision; rescale the field)");
   }
+  double lo = INFINITY, hi = -INFINITY;
+  for (double v : in.values)
+    if (std::isfinite(v)) {
+      lo = std::min(lo, v);
+      hi = std::max(hi, v);
+    }
+  if (hi > lo && hi - lo < kMinValueRange) {
+    std::ostringstream m;
+    m << "the values span only " << hi - lo << " (from " << lo << " to " << hi << "), less than "
+      << kMinValueRange
+      << ": products of derivatives would underflow and critical points be lost; rescale the "
+         "field";
+    problems.add("value range too small", Severity::Error, m.str());
+  }
   std::vector<int64_t> seen;
   for (std::size_t c = 0; c < in.cell_degree.size(); ++c) {
     const int d = in.cell_degree[c];
@@ -102,6 +117,24 @@ template <class F> void for_each_sample(int m, F &&f) {
 std::string cell_str(int64_t c) { return "cell " + std::to_string(c); }
 
 } // namespace
+
+void check_duplicate_vertices(const MeshInput &in, const Topology &topo, ProblemLog &problems) {
+  std::vector<int64_t> corners(topo.num_vertices());
+  for (int64_t v = 0; v < topo.num_vertices(); ++v)
+    corners[v] = topo.vertex_point(v);
+  const double tol = 1e-10 * bounding_box_diagonal(in.points);
+  const std::vector<int64_t> rep = coincident_points(in.points, corners, tol);
+  for (std::size_t i = 0; i < corners.size(); ++i)
+    if (rep[i] != corners[i]) {
+      const Vec3 &p = in.points[corners[i]];
+      std::ostringstream m;
+      m << "points " << rep[i] << " and " << corners[i] << " are at the same position (" << p[0]
+        << ", " << p[1] << ", " << p[2]
+        << ") but are different vertices: the cells around them are not connected there (a "
+           "crack, holes or separate pieces). Merge them by position (hoct: --merge-duplicates)";
+      problems.add("duplicate vertices", Severity::Error, m.str());
+    }
+}
 
 void check_geometry(const Geometry &g, const Topology &topo, ProblemLog &problems) {
   const int64_t nc = g.num_cells();

@@ -9,10 +9,24 @@
 
 namespace hoct {
 
+// Largest |value| accepted: Lagrange -> Bernstein conversion, derivatives and the products of
+// the certification multiply values by factors far below 1e150 for every supported degree.
+inline constexpr double kMaxAbsValue = 1e100; // = kMaxMagnitude in mesh_checks.cpp
+// Smallest non-zero value range accepted: below it, products of derivatives (Hessian
+// determinants, the certification's bounds) underflow and critical points are lost (seen from
+// 1e-160 on).
+inline constexpr double kMinValueRange = 1e-140;
+
 // Structure of the input: array sizes, node counts per degree, node indices in range, no node
-// repeated within a cell, finite point coordinates and values. Returns false if the input is too
-// broken to build a topology from (the problems say why).
+// repeated within a cell, finite point coordinates, finite values of at most kMaxAbsValue
+// spanning 0 or at least kMinValueRange. Returns
+// false if the input is too broken to build a topology from (the problems say why).
 bool check_input(const MeshInput &input, ProblemLog &problems);
+
+// Distinct vertices (cell corners) at the same position, within 1e-10 of the bounding-box
+// diagonal: a crack in the mesh (merge_duplicate_points repairs it).
+void check_duplicate_vertices(const MeshInput &input, const Topology &topology,
+                              ProblemLog &problems);
 
 // Degenerate (zero-area) and inverted cells. Planar meshes: the Jacobian determinant of each
 // cell's map, in Bernstein form (certified where its coefficients share a sign, else sampled), must

@@ -1,6 +1,7 @@
 #include "render/field_renderer.hpp"
 
 #include "error.hpp"
+#include "io/atomic_file.hpp"
 #include "poly/lattice.hpp"
 #include "poly/root_isolation.hpp"
 #include "render/colormap.hpp"
@@ -34,6 +35,13 @@ double dot(const Vec3 &a, const Vec3 &b) { return a[0] * b[0] + a[1] * b[1] + a[
 Vec3 normalized(const Vec3 &a) {
   const double n = std::sqrt(dot(a, a));
   return {a[0] / n, a[1] / n, a[2] / n};
+}
+
+// Cairo's output callback: appends to the std::ostream passed as closure.
+cairo_status_t write_to_stream(void *closure, const unsigned char *data, unsigned int length) {
+  auto *out = static_cast<std::ostream *>(closure);
+  out->write(reinterpret_cast<const char *>(data), length);
+  return *out ? CAIRO_STATUS_SUCCESS : CAIRO_STATUS_WRITE_ERROR;
 }
 
 } // namespace
@@ -148,162 +156,155 @@ void render_field(const std::string &path, const Mesh &mesh, const std::vector<T
   const double lo = field.min_value(), hi = field.max_value();
   auto colour = [&](double f) { return viridis(hi > lo ? (f - lo) / (hi - lo) : 0.5); };
 
-  // Draw to a temporary file beside the target, then rename.
-  const fs::path target(path);
-  const std::string tmp =
-      (target.parent_path() / ("." + target.filename().string() + ".tmp-render")).string();
-  cairo_surface_t *surface =
-      ext == ".svg" ? cairo_svg_surface_create(tmp.c_str(), o.width, o.height)
-                    : cairo_image_surface_create(CAIRO_FORMAT_RGB24, o.width, o.height);
-  if (cairo_surface_status(surface) != CAIRO_STATUS_SUCCESS) {
-    cairo_surface_destroy(surface);
-    throw Error(path + ": cannot create the picture (" +
-                std::string(cairo_status_to_string(cairo_surface_status(surface))) + ")");
-  }
-  cairo_t *cr = cairo_create(surface);
-  cairo_set_source_rgb(cr, 1, 1, 1);
-  cairo_paint(cr);
-  // Isolevels.
-  std::vector<double> levels;
-  for (int i = 1; i <= o.isolines; ++i)
-    levels.push_back(lo + (hi - lo) * i / (o.isolines + 1));
-  std::vector<std::array<double, 2>> crossing;
-  // Critical points as glyphs, drawn in depth order with the sub-triangles, so that surfaces in
-  // front of them hide them.
-  auto glyph = [&](const TreeNode &n) {
-    const auto p = px(n.position);
-    const double rad = n.type == NodeType::Saddle ? 3.5 : 4.5;
-    switch (n.type) {
-    case NodeType::Maximum:
-      cairo_set_source_rgb(cr, 0.84, 0.15, 0.16);
-      break;
-    case NodeType::Minimum:
-      cairo_set_source_rgb(cr, 0.12, 0.47, 0.71);
-      break;
-    default:
-      cairo_set_source_rgb(cr, 0.17, 0.63, 0.17);
+  // Drawn straight into the atomic file's stream (io/atomic_file: temporary file, then rename).
+  write_file_atomic(path, [&](std::ostream &out) {
+    cairo_surface_t *surface =
+        ext == ".svg"
+            ? cairo_svg_surface_create_for_stream(write_to_stream, &out, o.width, o.height)
+            : cairo_image_surface_create(CAIRO_FORMAT_RGB24, o.width, o.height);
+    if (cairo_surface_status(surface) != CAIRO_STATUS_SUCCESS) {
+      const std::string why = cairo_status_to_string(cairo_surface_status(surface));
+      cairo_surface_destroy(surface);
+      throw Error(path + ": cannot create the picture (" + why + ")");
     }
-    cairo_arc(cr, p[0], p[1], rad, 0, 2 * M_PI);
-    cairo_fill_preserve(cr);
-    cairo_set_source_rgb(cr, 0, 0, 0);
-    cairo_set_line_width(cr, 0.8);
-    cairo_stroke(cr);
-  };
-  std::vector<std::pair<double, std::size_t>> glyph_order;
-  for (std::size_t i = 0; i < nodes.size(); ++i)
-    glyph_order.push_back({dot(nodes[i].position, w), i});
-  std::sort(glyph_order.begin(), glyph_order.end());
-  std::size_t next_glyph = 0;
-  // A glyph sits on the surface: draw it once the sub-triangles around it are drawn.
-  const double lift = geom.planar() ? INFINITY : 0.01 * geom.extent();
-  for (const auto &t : tris) {
-    while (next_glyph < glyph_order.size() && glyph_order[next_glyph].first + lift < t.depth)
-      glyph(nodes[glyph_order[next_glyph++].second]);
-    // Smooth colour: a mesh-gradient patch with the exact values at the corners.
-    cairo_pattern_t *pat = cairo_pattern_create_mesh();
-    cairo_mesh_pattern_begin_patch(pat);
-    for (int j = 0; j < 3; ++j) {
-      const auto p = px(t.xyz[j]);
-      (j == 0 ? cairo_mesh_pattern_move_to : cairo_mesh_pattern_line_to)(pat, p[0], p[1]);
-    }
-    for (int j = 0; j < 3; ++j) {
-      const auto c = colour(t.f[j]);
-      cairo_mesh_pattern_set_corner_color_rgb(pat, j, c[0], c[1], c[2]);
-    }
-    cairo_mesh_pattern_end_patch(pat);
-    cairo_set_source(cr, pat);
-    cairo_new_path(cr);
-    for (int j = 0; j < 3; ++j) {
-      const auto p = px(t.xyz[j]);
-      (j == 0 ? cairo_move_to : cairo_line_to)(cr, p[0], p[1]);
-    }
-    cairo_close_path(cr);
-    // Without antialiasing, sub-triangles tile the picture exactly: no hairline seams.
-    cairo_set_antialias(cr, CAIRO_ANTIALIAS_NONE);
-    cairo_fill(cr);
-    cairo_set_antialias(cr, CAIRO_ANTIALIAS_DEFAULT);
-    cairo_pattern_destroy(pat);
-    // Isolines right after their sub-triangle (nearer ones drawn later hide them): exact
-    // crossing points on the sub-edges, from the cell's polynomial.
-    if (!t.facing)
-      continue;
-    const double fmin = std::min({t.f[0], t.f[1], t.f[2]}),
-                 fmax = std::max({t.f[0], t.f[1], t.f[2]});
-    BernsteinTriangle g;
-    bool have_g = false;
-    for (double level : levels) {
-      if (level < fmin || level > fmax)
-        continue;
-      if (!have_g) {
-        g = field.cell_polynomial(t.cell);
-        have_g = true;
+    cairo_t *cr = cairo_create(surface);
+    cairo_set_source_rgb(cr, 1, 1, 1);
+    cairo_paint(cr);
+    // Isolevels.
+    std::vector<double> levels;
+    for (int i = 1; i <= o.isolines; ++i)
+      levels.push_back(lo + (hi - lo) * i / (o.isolines + 1));
+    std::vector<std::array<double, 2>> crossing;
+    // Critical points as glyphs, drawn in depth order with the sub-triangles, so that surfaces in
+    // front of them hide them.
+    auto glyph = [&](const TreeNode &n) {
+      const auto p = px(n.position);
+      const double rad = n.type == NodeType::Saddle ? 3.5 : 4.5;
+      switch (n.type) {
+      case NodeType::Maximum:
+        cairo_set_source_rgb(cr, 0.84, 0.15, 0.16);
+        break;
+      case NodeType::Minimum:
+        cairo_set_source_rgb(cr, 0.12, 0.47, 0.71);
+        break;
+      default:
+        cairo_set_source_rgb(cr, 0.17, 0.63, 0.17);
       }
-      crossing.clear();
+      cairo_arc(cr, p[0], p[1], rad, 0, 2 * M_PI);
+      cairo_fill_preserve(cr);
+      cairo_set_source_rgb(cr, 0, 0, 0);
+      cairo_set_line_width(cr, 0.8);
+      cairo_stroke(cr);
+    };
+    std::vector<std::pair<double, std::size_t>> glyph_order;
+    for (std::size_t i = 0; i < nodes.size(); ++i)
+      glyph_order.push_back({dot(nodes[i].position, w), i});
+    std::sort(glyph_order.begin(), glyph_order.end());
+    std::size_t next_glyph = 0;
+    // A glyph sits on the surface: draw it once the sub-triangles around it are drawn.
+    const double lift = geom.planar() ? INFINITY : 0.01 * geom.extent();
+    for (const auto &t : tris) {
+      while (next_glyph < glyph_order.size() && glyph_order[next_glyph].first + lift < t.depth)
+        glyph(nodes[glyph_order[next_glyph++].second]);
+      // Smooth colour: a mesh-gradient patch with the exact values at the corners.
+      cairo_pattern_t *pat = cairo_pattern_create_mesh();
+      cairo_mesh_pattern_begin_patch(pat);
       for (int j = 0; j < 3; ++j) {
-        const int jn = (j + 1) % 3;
-        if ((t.f[j] < level) == (t.f[jn] < level))
-          continue;
-        BernsteinPoly r = g.restrict_to_segment(t.uv[j], t.uv[jn]);
-        for (double &c : r.coefficients())
-          c -= level;
-        const auto roots = find_roots(r);
-        double s = roots.empty() ? (level - t.f[j]) / (t.f[jn] - t.f[j]) : roots.front().t;
-        const Vec2 uv = {t.uv[j][0] + s * (t.uv[jn][0] - t.uv[j][0]),
-                         t.uv[j][1] + s * (t.uv[jn][1] - t.uv[j][1])};
-        crossing.push_back(px(geom.position(t.cell, uv[0], uv[1])));
+        const auto p = px(t.xyz[j]);
+        (j == 0 ? cairo_mesh_pattern_move_to : cairo_mesh_pattern_line_to)(pat, p[0], p[1]);
       }
-      if (crossing.size() == 2) {
-        cairo_set_source_rgba(cr, 1, 1, 1, 0.85);
-        cairo_set_line_width(cr, 1.1);
-        cairo_move_to(cr, crossing[0][0], crossing[0][1]);
-        cairo_line_to(cr, crossing[1][0], crossing[1][1]);
-        cairo_stroke(cr);
+      for (int j = 0; j < 3; ++j) {
+        const auto c = colour(t.f[j]);
+        cairo_mesh_pattern_set_corner_color_rgb(pat, j, c[0], c[1], c[2]);
+      }
+      cairo_mesh_pattern_end_patch(pat);
+      cairo_set_source(cr, pat);
+      cairo_new_path(cr);
+      for (int j = 0; j < 3; ++j) {
+        const auto p = px(t.xyz[j]);
+        (j == 0 ? cairo_move_to : cairo_line_to)(cr, p[0], p[1]);
+      }
+      cairo_close_path(cr);
+      // Without antialiasing, sub-triangles tile the picture exactly: no hairline seams.
+      cairo_set_antialias(cr, CAIRO_ANTIALIAS_NONE);
+      cairo_fill(cr);
+      cairo_set_antialias(cr, CAIRO_ANTIALIAS_DEFAULT);
+      cairo_pattern_destroy(pat);
+      // Isolines right after their sub-triangle (nearer ones drawn later hide them): exact
+      // crossing points on the sub-edges, from the cell's polynomial.
+      if (!t.facing)
+        continue;
+      const double fmin = std::min({t.f[0], t.f[1], t.f[2]}),
+                   fmax = std::max({t.f[0], t.f[1], t.f[2]});
+      BernsteinTriangle g;
+      bool have_g = false;
+      for (double level : levels) {
+        if (level < fmin || level > fmax)
+          continue;
+        if (!have_g) {
+          g = field.cell_polynomial(t.cell);
+          have_g = true;
+        }
+        crossing.clear();
+        for (int j = 0; j < 3; ++j) {
+          const int jn = (j + 1) % 3;
+          if ((t.f[j] < level) == (t.f[jn] < level))
+            continue;
+          BernsteinPoly r = g.restrict_to_segment(t.uv[j], t.uv[jn]);
+          for (double &c : r.coefficients())
+            c -= level;
+          const auto roots = find_roots(r);
+          double s = roots.empty() ? (level - t.f[j]) / (t.f[jn] - t.f[j]) : roots.front().t;
+          const Vec2 uv = {t.uv[j][0] + s * (t.uv[jn][0] - t.uv[j][0]),
+                           t.uv[j][1] + s * (t.uv[jn][1] - t.uv[j][1])};
+          crossing.push_back(px(geom.position(t.cell, uv[0], uv[1])));
+        }
+        if (crossing.size() == 2) {
+          cairo_set_source_rgba(cr, 1, 1, 1, 0.85);
+          cairo_set_line_width(cr, 1.1);
+          cairo_move_to(cr, crossing[0][0], crossing[0][1]);
+          cairo_line_to(cr, crossing[1][0], crossing[1][1]);
+          cairo_stroke(cr);
+        }
       }
     }
-  }
-  while (next_glyph < glyph_order.size())
-    glyph(nodes[glyph_order[next_glyph++].second]);
-  // Colour bar and title.
-  const double bx = o.width - bar + 20, by = margin + title_h, bh = o.height - 2 * margin - title_h;
-  for (int i = 0; i < 256; ++i) {
-    const auto c = viridis(i / 255.0);
-    cairo_set_source_rgb(cr, c[0], c[1], c[2]);
-    cairo_rectangle(cr, bx, by + bh * (1 - (i + 1) / 256.0), 18, bh / 256.0 + 0.5);
-    cairo_fill(cr);
-  }
-  cairo_set_source_rgb(cr, 0, 0, 0);
-  cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
-  cairo_set_font_size(cr, 11);
-  for (int i = 0; i <= 4; ++i) {
-    char label[32];
-    std::snprintf(label, sizeof label, "%.3g", lo + (hi - lo) * i / 4);
-    cairo_move_to(cr, bx + 22, by + bh * (1 - i / 4.0) + 4);
-    cairo_show_text(cr, label);
-  }
-  if (!o.title.empty()) {
-    cairo_set_font_size(cr, 15);
-    cairo_move_to(cr, margin, margin);
-    cairo_show_text(cr, o.title.c_str());
-  }
-  cairo_destroy(cr);
-  cairo_status_t status;
-  if (ext == ".png")
-    status = cairo_surface_write_to_png(surface, tmp.c_str());
-  else {
-    cairo_surface_finish(surface);
-    status = cairo_surface_status(surface);
-  }
-  cairo_surface_destroy(surface);
-  std::error_code ec;
-  if (status != CAIRO_STATUS_SUCCESS) {
-    fs::remove(tmp, ec);
-    throw Error(path + ": writing the picture failed (" + cairo_status_to_string(status) + ")");
-  }
-  fs::rename(tmp, target, ec);
-  if (ec) {
-    fs::remove(tmp, ec);
-    throw Error(path + ": cannot move the picture into place");
-  }
+    while (next_glyph < glyph_order.size())
+      glyph(nodes[glyph_order[next_glyph++].second]);
+    // Colour bar and title.
+    const double bx = o.width - bar + 20, by = margin + title_h,
+                 bh = o.height - 2 * margin - title_h;
+    for (int i = 0; i < 256; ++i) {
+      const auto c = viridis(i / 255.0);
+      cairo_set_source_rgb(cr, c[0], c[1], c[2]);
+      cairo_rectangle(cr, bx, by + bh * (1 - (i + 1) / 256.0), 18, bh / 256.0 + 0.5);
+      cairo_fill(cr);
+    }
+    cairo_set_source_rgb(cr, 0, 0, 0);
+    cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+    cairo_set_font_size(cr, 11);
+    for (int i = 0; i <= 4; ++i) {
+      char label[32];
+      std::snprintf(label, sizeof label, "%.3g", lo + (hi - lo) * i / 4);
+      cairo_move_to(cr, bx + 22, by + bh * (1 - i / 4.0) + 4);
+      cairo_show_text(cr, label);
+    }
+    if (!o.title.empty()) {
+      cairo_set_font_size(cr, 15);
+      cairo_move_to(cr, margin, margin);
+      cairo_show_text(cr, o.title.c_str());
+    }
+    cairo_destroy(cr);
+    cairo_status_t status;
+    if (ext == ".png")
+      status = cairo_surface_write_to_png_stream(surface, write_to_stream, &out);
+    else {
+      cairo_surface_finish(surface);
+      status = cairo_surface_status(surface);
+    }
+    cairo_surface_destroy(surface);
+    if (status != CAIRO_STATUS_SUCCESS)
+      throw Error(path + ": writing the picture failed (" + cairo_status_to_string(status) + ")");
+  });
 }
 
 } // namespace hoct

@@ -15,11 +15,12 @@ FlatContraction contract_flat_arcs(const ContourTree &in, double tolerance) {
       uf.unite(a[0], a[1]);
   // Representative of a flat region: its lowest node (they share the value; the lowest id keeps
   // the total order among the survivors).
-  std::vector<int64_t> rep(n, -1);
+  std::vector<int64_t> rep(n, -1), region_size(n, 0);
   for (int64_t v = 0; v < n; ++v) {
     const int64_t r = uf.find(v);
     if (rep[r] < 0)
       rep[r] = v; // nodes are visited in ascending order
+    ++region_size[r];
   }
   ContourTree contracted;
   std::vector<int64_t> index(n, -1), kept;
@@ -45,6 +46,7 @@ FlatContraction contract_flat_arcs(const ContourTree &in, double tolerance) {
     while (contracted.nodes[j] != reduced.nodes[i])
       ++j;
     out.kept.push_back(kept[j]);
+    out.size.push_back(region_size[uf.find(kept[j])]);
   }
   return out;
 }

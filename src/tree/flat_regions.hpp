@@ -16,6 +16,7 @@ namespace hoct {
 struct FlatContraction {
   ContourTree tree;
   std::vector<int64_t> kept; // for each node of the result, the input node representing it
+  std::vector<int64_t> size; // for each node of the result, the input nodes of its flat region
 };
 
 FlatContraction contract_flat_arcs(const ContourTree &tree, double tolerance = 0);

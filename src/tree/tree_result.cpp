@@ -89,6 +89,8 @@ TreeResult contract_flat(const TreeResult &t) {
     scale = std::max(scale, std::abs(n.value));
   const FlatContraction f = contract_flat_arcs(as_contour_tree(t), 1e-12 * scale);
   TreeResult r = derived_result(t, f.tree, f.kept);
+  for (std::size_t i = 0; i < r.nodes.size(); ++i)
+    r.nodes[i].merged = f.size[i];
   r.add_stat("flat_nodes_merged", static_cast<double>(t.nodes.size() - r.nodes.size()));
   decompose_branches(r);
   return r;

@@ -34,6 +34,9 @@ struct TreeNode {
   // its value is exact, its type is that of the refinement.
   bool fallback = false;
   int64_t graph_node = -1; // the node of TreeResult::graph it stands for (if any)
+  // The number of nodes of a flat region (equal values) contract_flat merged into this one: the
+  // node then stands for all of them, and sits at one of their positions.
+  int64_t merged = 1;
 };
 
 struct TreeResult {
@@ -44,6 +47,9 @@ struct TreeResult {
   std::vector<PersistencePair> pairs;       // birth/death are indices into nodes
   std::vector<Branch> branches;             // branch decomposition (indices into nodes)
   std::vector<std::pair<std::string, double>> stats;
+  // Why the result was computed although the input is not a valid disk or sphere (hoct tree
+  // --force); empty for a regular result.
+  std::vector<std::string> forced;
   // The graph the tree came from, with geometry (optional), and each arc drawn on the surface
   // (compute_arc_paths; empty = straight arcs).
   std::shared_ptr<const GeometricGraph> graph;

@@ -271,7 +271,7 @@ def main():
     far = [(5, 0, 0), (6, 0, 0), (5, 1, 0)]
     check_error("two components", grid_source(tri + far, [(5, [0, 1, 2]), (5, [3, 4, 5])],
                                               [0, 1, 2, 3, 4, 5]),
-                "the domain is not a disk or a sphere (2 component(s)")
+                "the domain is not a disk or a sphere but 2 separate components")
     check_error("quad", grid_source(tri + [(1, 1, 0)], [(9, [0, 1, 3, 2])], [0, 1, 2, 3]),
                 "cell 0 has VTK cell type 9, which is not a triangle")
     check_error("NaN", grid_source(tri, [(5, [0, 1, 2])], [0, float("nan"), 2]),

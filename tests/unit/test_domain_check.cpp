@@ -20,7 +20,9 @@ TEST(DomainCheck, DiskAndSpherePassTwoComponentsDoNot) {
   two.add_cell(1, a);
   two.add_cell(1, b);
   const std::string problem = domain_problem(build_mesh(two).topology);
-  EXPECT_NE(problem.find("not a disk or a sphere (2 component(s)"), std::string::npos) << problem;
+  EXPECT_NE(problem.find("not a disk or a sphere but 2 separate components: 2 component(s)"),
+            std::string::npos)
+      << problem;
 }
 
 } // namespace

@@ -1,0 +1,605 @@
+#include "tree/tree_check.hpp"
+
+#include "tree/union_find.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <sstream>
+
+namespace hoct {
+namespace {
+
+using P2 = std::array<double, 2>;
+
+// The reference triangle's corners.
+constexpr P2 kCorner[3] = {{0, 0}, {1, 0}, {0, 1}};
+
+// Differences below this are not told apart: subnormal numbers have no relative precision left
+// (a field of values around 1e-310 evaluates to 0 in places).
+constexpr double kTiny = 1e-300;
+
+std::string node_str(int64_t i) { return "node " + std::to_string(i); }
+
+// One sample direction around a node: in `cell`, the point base + r * dir.
+struct RingSample {
+  int64_t cell;
+  P2 base, dir;
+};
+
+// Samples around a node in circular order; `closed` when the ring goes all the way round (an
+// interior point of the surface), open when it starts and ends on the mesh boundary.
+struct Ring {
+  std::vector<RingSample> samples;
+  bool closed = true;
+  double max_radius = 0.25; // keeps every sample inside its cell
+  std::string unusable;     // why no ring could be built (non-manifold, ...)
+};
+
+// Lower and upper sectors of a sign pattern (no zeros).
+struct Sectors {
+  int lower = 0, upper = 0;
+};
+
+Sectors count_sectors(const std::vector<int8_t> &sign, bool closed) {
+  Sectors s;
+  const std::size_t n = sign.size();
+  if (n == 0)
+    return s;
+  int changes = 0;
+  for (std::size_t i = 1; i < n; ++i)
+    changes += sign[i] != sign[i - 1];
+  if (closed) {
+    changes += sign[0] != sign[n - 1];
+    if (changes == 0)
+      (sign[0] > 0 ? s.upper : s.lower) = 1;
+    else
+      s.lower = s.upper = changes / 2;
+    return s;
+  }
+  // Open: runs of each sign.
+  for (std::size_t i = 0; i < n; ++i)
+    if (i == 0 || sign[i] != sign[i - 1])
+      ++(sign[i] > 0 ? s.upper : s.lower);
+  return s;
+}
+
+class Checker {
+public:
+  Checker(const TreeResult &t, const Mesh &m, const TreeCheckOptions &o)
+      : tree_(t), mesh_(m), opt_(o), n_(static_cast<int64_t>(t.nodes.size())) {
+    const double lo = m.field.min_value(), hi = m.field.max_value();
+    scale_ = std::max({hi - lo, std::abs(lo), std::abs(hi)});
+    for (const auto &node : t.nodes)
+      if (std::isfinite(node.value))
+        scale_ = std::max(scale_, std::abs(node.value));
+    if (!(scale_ > 0))
+      scale_ = 1;
+    if (m.complete) {
+      const Topology &t = m.topology;
+      sphere_ = t.components() == 1 && t.euler_characteristic() == 2 && t.boundary_loops() == 0;
+    }
+  }
+
+  TreeCheckReport run() {
+    structure();
+    if (!mesh_.complete)
+      return std::move(report_);
+    for (int64_t i = 0; i < n_; ++i)
+      placement(i);
+    if (opt_.check_types && !placement_failed_)
+      for (int64_t i = 0; i < n_; ++i)
+        neighbourhood(i);
+    return std::move(report_);
+  }
+
+private:
+  void fail(const std::string &check, std::vector<int64_t> nodes, std::vector<int64_t> arcs,
+            const std::string &msg) {
+    report_.failures.push_back({check, std::move(nodes), std::move(arcs), msg});
+  }
+
+  // Tree-ness, Euler relation, order, degrees versus types.
+  void structure() {
+    const auto &arcs = tree_.arcs;
+    const int64_t na = static_cast<int64_t>(arcs.size());
+    const int64_t components =
+        mesh_.complete ? std::max<int64_t>(1, mesh_.topology.components()) : 1;
+    deg_.assign(n_, {0, 0});
+    for (int64_t i = 0; i + 1 < n_; ++i)
+      if (tree_.nodes[i + 1].value < tree_.nodes[i].value)
+        fail("order", {i, i + 1}, {},
+             node_str(i) + " (value " + fmt(tree_.nodes[i].value) + ") comes before " +
+                 node_str(i + 1) + " (value " + fmt(tree_.nodes[i + 1].value) +
+                 "): nodes must ascend by value");
+    UnionFind uf(static_cast<std::size_t>(std::max<int64_t>(n_, 1)));
+    int64_t joined = 0;
+    for (int64_t a = 0; a < na; ++a) {
+      const int64_t x = arcs[a][0], y = arcs[a][1];
+      if (x < 0 || y < 0 || x >= n_ || y >= n_) {
+        fail("tree", {}, {a}, "arc " + std::to_string(a) + " refers to a node that does not exist");
+        continue;
+      }
+      if (x == y) {
+        fail("tree", {x}, {a}, "arc " + std::to_string(a) + " is a loop at " + node_str(x));
+        continue;
+      }
+      // Lower node first in the total order (value, index).
+      if (!node_less(tree_.nodes[x].value, x, tree_.nodes[y].value, y))
+        fail("order", {x, y}, {a},
+             "arc " + std::to_string(a) + " runs from " + node_str(x) + " down to " + node_str(y));
+      const int64_t lo = node_less(tree_.nodes[x].value, x, tree_.nodes[y].value, y) ? x : y;
+      const int64_t hi = lo == x ? y : x;
+      ++deg_[lo][0];
+      ++deg_[hi][1];
+      if (uf.find(x) == uf.find(y))
+        fail("tree", {x, y}, {a},
+             "arc " + std::to_string(a) + " closes a cycle (" + node_str(x) + " and " +
+                 node_str(y) + " are already connected)");
+      else {
+        uf.unite(x, y);
+        ++joined;
+      }
+    }
+    const int64_t tree_components = n_ - joined;
+    if (n_ > 0 && tree_components != components)
+      fail("tree", {}, {},
+           "the tree has " + std::to_string(tree_components) +
+               " connected component(s), the mesh " + std::to_string(components));
+    if (n_ > 0 && na != n_ - components)
+      fail("tree", {}, {},
+           std::to_string(na) + " arcs for " + std::to_string(n_) + " nodes and " +
+               std::to_string(components) + " component(s) (a tree has nodes - 1 arcs)");
+    int64_t euler = 0;
+    for (int64_t i = 0; i < n_; ++i)
+      euler += deg_[i][0] + deg_[i][1] - 2;
+    if (n_ > 0 && euler != -2 * components)
+      fail("euler", {}, {},
+           "sum of (degree - 2) over the nodes is " + std::to_string(euler) + ", not " +
+               std::to_string(-2 * components));
+    for (int64_t i = 0; i < n_; ++i)
+      degree_vs_type(i, components);
+  }
+
+  void degree_vs_type(int64_t i, int64_t components) {
+    const TreeNode &nd = tree_.nodes[i];
+    const int up = deg_[i][0], down = deg_[i][1];
+    if (nd.up != up || nd.down != down) {
+      // Readers and builders fill up/down; they must agree with the arcs.
+      if (nd.up != 0 || nd.down != 0)
+        fail("degree", {i}, {},
+             node_str(i) + " records " + std::to_string(nd.up) + " arcs up and " +
+                 std::to_string(nd.down) + " down, but the arcs give " + std::to_string(up) +
+                 " and " + std::to_string(down));
+    }
+    const bool single = up + down == 0 && n_ <= components;
+    std::string want;
+    switch (nd.type) {
+    // A minimum has arcs up only: one, or more where a flat region (one contracted node) is
+    // both a minimum and a split; the samples around the node then tell (a non-flat minimum has
+    // one upper sector, so two arcs up fail there).
+    case NodeType::Minimum:
+      if (!(down == 0 && (up >= 1 || single)))
+        want = "a minimum has arcs up only";
+      break;
+    case NodeType::Maximum:
+      if (!(up == 0 && (down >= 1 || single)))
+        want = "a maximum has arcs down only";
+      break;
+    case NodeType::Saddle:
+      // (ContourTree::types calls the node of a one-node tree, e.g. a constant field, a saddle.)
+      if (!(up >= 1 && down >= 1 && up + down >= 3) && !single)
+        want = "a saddle has at least three arcs, up and down";
+      break;
+    case NodeType::Regular:
+      if (!tree_.augmented)
+        want = "a reduced tree has no regular nodes";
+      else if (!(up == 1 && down == 1))
+        want = "a regular node has one arc up and one down";
+      break;
+    }
+    if (!want.empty())
+      fail("degree", {i}, {},
+           node_str(i) + " is a " + to_string(nd.type) + " with " + std::to_string(up) +
+               " arc(s) up and " + std::to_string(down) + " down: " + want);
+  }
+
+  // Value and position versus the field and the geometry at (cell, u, v).
+  void placement(int64_t i) {
+    const TreeNode &nd = tree_.nodes[i];
+    const int64_t nc = mesh_.topology.num_cells();
+    const double u = nd.uv[0], v = nd.uv[1];
+    constexpr double slack = 1e-9;
+    if (nd.cell < 0 || nd.cell >= nc || !std::isfinite(u) || !std::isfinite(v) || u < -slack ||
+        v < -slack || u + v > 1 + slack) {
+      fail("position", {i}, {},
+           node_str(i) + " is not in the mesh: cell " + std::to_string(nd.cell) + " of " +
+               std::to_string(nc) + ", (u, v) = (" + fmt(u) + ", " + fmt(v) + ")");
+      placement_failed_ = true;
+      return;
+    }
+    const double f = mesh_.field.value(nd.cell, u, v);
+    if (!(std::abs(f - nd.value) <= std::max(opt_.value_tolerance * scale_, kTiny)))
+      fail("value", {i}, {},
+           node_str(i) + " has value " + fmt(nd.value) + " but the field at cell " +
+               std::to_string(nd.cell) + " (" + fmt(u) + ", " + fmt(v) + ") is " + fmt(f));
+    const Vec3 p = mesh_.geometry.position(nd.cell, u, v);
+    const double dist =
+        std::hypot(p[0] - nd.position[0], p[1] - nd.position[1], p[2] - nd.position[2]);
+    if (!(dist <= opt_.position_tolerance * std::max(mesh_.geometry.extent(), 1e-300)))
+      fail("position", {i}, {},
+           node_str(i) + " is at (" + fmt(nd.position[0]) + ", " + fmt(nd.position[1]) + ", " +
+               fmt(nd.position[2]) + ") but cell " + std::to_string(nd.cell) + " (" + fmt(u) +
+               ", " + fmt(v) + ") maps to (" + fmt(p[0]) + ", " + fmt(p[1]) + ", " + fmt(p[2]) +
+               ")");
+  }
+
+  // ---- rings of samples around a node ----
+
+  // The cells around each vertex, (cell, corner), built on first use.
+  void build_vertex_cells() {
+    if (!vertex_offset_.empty())
+      return;
+    const Topology &t = mesh_.topology;
+    vertex_offset_.assign(t.num_vertices() + 1, 0);
+    for (int64_t c = 0; c < t.num_cells(); ++c)
+      for (int k = 0; k < 3; ++k)
+        ++vertex_offset_[t.cell_vertices(c)[k] + 1];
+    for (int64_t v = 0; v < t.num_vertices(); ++v)
+      vertex_offset_[v + 1] += vertex_offset_[v];
+    vertex_cells_.resize(vertex_offset_.back());
+    std::vector<int64_t> fill(vertex_offset_.begin(), vertex_offset_.end() - 1);
+    for (int64_t c = 0; c < t.num_cells(); ++c)
+      for (int k = 0; k < 3; ++k)
+        vertex_cells_[fill[t.cell_vertices(c)[k]]++] = {c, k};
+  }
+
+  int local_edge_of(int64_t c, int64_t e) const {
+    for (int k = 0; k < 3; ++k)
+      if (mesh_.topology.cell_edge(c, k) == e)
+        return k;
+    return -1;
+  }
+
+  // Directions from corner k of the reference triangle towards corner j.
+  static P2 towards(int k, int j) {
+    return {kCorner[j][0] - kCorner[k][0], kCorner[j][1] - kCorner[k][1]};
+  }
+
+  Ring vertex_ring(int64_t c0, int corner0) {
+    Ring ring;
+    ring.max_radius = 0.25;
+    build_vertex_cells();
+    const Topology &t = mesh_.topology;
+    const int64_t vtx = t.cell_vertices(c0)[corner0];
+    const int64_t count = vertex_offset_[vtx + 1] - vertex_offset_[vtx];
+    // The fan: start at a cell with a boundary edge at the vertex, if any.
+    int64_t start = -1;
+    int start_corner = 0;
+    int64_t start_edge = -1;
+    for (int64_t i = vertex_offset_[vtx]; i < vertex_offset_[vtx + 1]; ++i) {
+      const auto [c, k] = vertex_cells_[i];
+      for (int le : {k, (k + 2) % 3}) {
+        const int64_t e = t.cell_edge(c, le);
+        if (t.edge_cell_count(e) > 2) {
+          ring.unusable = "non-manifold edge at the vertex";
+          return ring;
+        }
+        if (t.edge_cell_count(e) == 1 && start < 0) {
+          start = c;
+          start_corner = k;
+          start_edge = e;
+        }
+      }
+    }
+    ring.closed = start < 0;
+    if (start < 0) {
+      start = c0;
+      start_corner = corner0;
+      start_edge = t.cell_edge(c0, corner0);
+    }
+    int64_t c = start, e_in = start_edge;
+    int k = start_corner;
+    const int m = std::max(4, opt_.samples / 2);
+    for (int64_t step = 0; step < count; ++step) {
+      // The corners across the entering edge and across the leaving edge.
+      const int a = (k + 1) % 3, b = (k + 2) % 3;
+      const bool in_is_a = t.cell_edge(c, k) == e_in; // local edge k joins corners k and k+1
+      const int from = in_is_a ? a : b, to = in_is_a ? b : a;
+      const P2 da = towards(k, from), db = towards(k, to);
+      // Both ends on the edges (thin sectors hug the edges: creases of the C0 field).
+      for (int s = 0; s <= m; ++s) {
+        const double w = static_cast<double>(s) / m;
+        ring.samples.push_back(
+            {c, kCorner[k], {(1 - w) * da[0] + w * db[0], (1 - w) * da[1] + w * db[1]}});
+      }
+      const int le_out = in_is_a ? (k + 2) % 3 : k;
+      const int64_t e_out = t.cell_edge(c, le_out);
+      const int64_t next = t.neighbor(c, le_out);
+      if (next < 0)
+        break;
+      if (next == start) {
+        if (step + 1 != count)
+          ring.unusable = "the cells around the vertex form more than one fan";
+        return ring;
+      }
+      int kn = 0;
+      while (kn < 3 && t.cell_vertices(next)[kn] != vtx)
+        ++kn;
+      c = next;
+      k = kn;
+      e_in = e_out;
+      if (step + 1 == count)
+        ring.unusable = "the cells around the vertex do not close up";
+    }
+    if (ring.closed)
+      ring.unusable = "the cells around the vertex do not close up";
+    else if (static_cast<int64_t>(ring.samples.size()) != count * (m + 1))
+      ring.unusable = "the cells around the vertex form more than one fan";
+    return ring;
+  }
+
+  // Unit-ish vectors along local edge k (from corner k to k+1) and into the cell.
+  static void edge_frame(int k, P2 &along, P2 &inward) {
+    const double h = std::numbers::sqrt2 / 2;
+    if (k == 0) {
+      along = {1, 0};
+      inward = {0, 1};
+    } else if (k == 1) {
+      along = {-h, h};
+      inward = {-h, -h};
+    } else {
+      along = {0, -1};
+      inward = {1, 0};
+    }
+  }
+
+  Ring edge_ring(int64_t c, double u, double v) {
+    Ring ring;
+    const Topology &t = mesh_.topology;
+    // Which local edge, and the parameter t from corner k to corner k+1.
+    const double d0 = std::abs(v), d1 = std::abs(1 - u - v), d2 = std::abs(u);
+    int k = 0;
+    double tk = u;
+    if (d1 <= d0 && d1 <= d2) {
+      k = 1;
+      tk = v;
+    } else if (d2 < d0) {
+      k = 2;
+      tk = 1 - v;
+    }
+    tk = std::clamp(tk, 0.0, 1.0);
+    const int64_t e = t.cell_edge(c, k);
+    if (t.edge_cell_count(e) > 2) {
+      ring.unusable = "non-manifold edge";
+      return ring;
+    }
+    ring.max_radius = 0.5 * std::min(tk, 1 - tk);
+    const int m = std::max(4, opt_.samples);
+    // Parameter from the edge's lower vertex.
+    const double s_global = t.edge_reversed(c, k) ? 1 - tk : tk;
+    auto half_disk = [&](int64_t cell, int kk, double tt, bool forward) {
+      P2 along, inward;
+      edge_frame(kk, along, inward);
+      const P2 base = {kCorner[kk][0] + tt * (kCorner[(kk + 1) % 3][0] - kCorner[kk][0]),
+                       kCorner[kk][1] + tt * (kCorner[(kk + 1) % 3][1] - kCorner[kk][1])};
+      // Both ends on the edge itself: along a crease the lower (upper) sectors are thin.
+      for (int s = 0; s <= m; ++s) {
+        const double w = static_cast<double>(s) / m;
+        const double ang = std::numbers::pi * (forward ? w : 1 - w);
+        ring.samples.push_back({cell,
+                                base,
+                                {std::cos(ang) * along[0] + std::sin(ang) * inward[0],
+                                 std::cos(ang) * along[1] + std::sin(ang) * inward[1]}});
+      }
+    };
+    // In c: from towards corner k+1, through the inside, to towards corner k.
+    half_disk(c, k, tk, true);
+    const int64_t n = t.neighbor(c, k);
+    ring.closed = n >= 0;
+    if (n >= 0) {
+      const int kn = local_edge_of(n, e);
+      const double tn = t.edge_reversed(n, kn) ? 1 - s_global : s_global;
+      // Continue from the side of c's corner k: in n that corner is corner kn (then go from
+      // "towards kn" to "towards kn+1") when both cells run the edge the same way.
+      const bool same_way = t.cell_vertices(n)[kn] == t.cell_vertices(c)[k];
+      half_disk(n, kn, tn, !same_way);
+      ring.max_radius = std::min(ring.max_radius, 0.5 * std::min(tn, 1 - tn));
+    }
+    return ring;
+  }
+
+  Ring interior_ring(int64_t c, double u, double v) {
+    Ring ring;
+    ring.closed = true;
+    ring.max_radius = 0.5 * std::min({u, v, (1 - u - v) / std::numbers::sqrt2});
+    const int m = std::max(8, 2 * opt_.samples);
+    for (int s = 0; s < m; ++s) {
+      const double ang = 2 * std::numbers::pi * s / m;
+      ring.samples.push_back({c, {u, v}, {std::cos(ang), std::sin(ang)}});
+    }
+    return ring;
+  }
+
+  // Type versus samples of the field around the node.
+  void neighbourhood(int64_t i) {
+    const TreeNode &nd = tree_.nodes[i];
+    if (nd.fallback) {
+      skip(i, node_str(i) + " lies in a degenerate cell's PL fallback: its type is the "
+                            "refinement's (skipped)");
+      return;
+    }
+    if (nd.merged > 1) {
+      skip(i, node_str(i) + " stands for a flat region of " + std::to_string(nd.merged) +
+                  " nodes of one value (skipped)");
+      return;
+    }
+    const double u = nd.uv[0], v = nd.uv[1];
+    Ring ring;
+    switch (classify_location(u, v)) {
+    case NodeLocation::Vertex: {
+      int corner = 0;
+      if (u >= 0.5)
+        corner = 1;
+      else if (v >= 0.5)
+        corner = 2;
+      ring = vertex_ring(nd.cell, corner);
+      break;
+    }
+    case NodeLocation::Edge:
+      ring = edge_ring(nd.cell, u, v);
+      break;
+    default:
+      ring = interior_ring(nd.cell, u, v);
+    }
+    if (!ring.unusable.empty()) {
+      skip(i, node_str(i) + ": " + ring.unusable + " (skipped)");
+      return;
+    }
+    const int up = deg_[i][0], down = deg_[i][1];
+    bool conclusive = false;
+    std::string seen;
+    std::vector<int8_t> sign(ring.samples.size());
+    std::vector<BernsteinTriangle> polys;
+    std::vector<int64_t> poly_cell;
+    auto poly = [&](int64_t c) -> const BernsteinTriangle & {
+      for (std::size_t j = 0; j < poly_cell.size(); ++j)
+        if (poly_cell[j] == c)
+          return polys[j];
+      poly_cell.push_back(c);
+      polys.push_back(mesh_.field.cell_polynomial(c));
+      return polys.back();
+    };
+    // Rounding of the polynomials' evaluation: a few hundred ulps of their coefficients.
+    double eps = 0;
+    for (const auto &s : ring.samples)
+      for (double b : poly(s.cell).coefficients())
+        eps = std::max(eps, std::abs(b));
+    eps = std::max(eps * 256 * std::numeric_limits<double>::epsilon(), kTiny);
+    // The smallest radius at which every sample differs from the node's value by more than
+    // rounding decides: small enough to see only this node, large enough to be above rounding.
+    for (double r : {1e-5, 3e-5, 1e-4, 3e-4, 1e-3, 3e-3, 1e-2}) {
+      if (r > ring.max_radius)
+        break;
+      bool flat = false;
+      for (std::size_t j = 0; j < ring.samples.size() && !flat; ++j) {
+        const auto &s = ring.samples[j];
+        const double x = s.base[0] + r * s.dir[0], y = s.base[1] + r * s.dir[1];
+        const double d = poly(s.cell)(std::max(0.0, x), std::max(0.0, y)) - nd.value;
+        if (!(std::abs(d) > eps))
+          flat = true;
+        sign[j] = d > 0 ? 1 : -1;
+      }
+      if (flat)
+        continue;
+      conclusive = true;
+      const Sectors sec = count_sectors(sign, ring.closed);
+      if (type_matches(nd.type, sec, ring.closed) && down <= sec.lower && up <= sec.upper &&
+          (!ring.closed || !sphere_ || nd.type != NodeType::Saddle || up + down == sec.lower + 1)) {
+        ++report_.nodes_checked;
+        return;
+      }
+      seen = std::to_string(sec.lower) + " lower and " + std::to_string(sec.upper) +
+             " upper sector(s) at radius " + fmt(r);
+      const int64_t near = other_node_within(i, r);
+      if (near >= 0) {
+        skip(i, node_str(i) + ": " + node_str(near) +
+                    " is too close to tell their neighbourhoods apart (skipped; " + seen + ")");
+        return;
+      }
+      break;
+    }
+    if (ring.max_radius < 1e-5) {
+      skip(i, node_str(i) + ": too close to a cell corner or side to sample around it (skipped)");
+      return;
+    }
+    if (!conclusive) {
+      skip(i, node_str(i) + ": the field is flat around it to rounding (a contracted plateau or "
+                            "a degenerate critical point; skipped)");
+      return;
+    }
+    fail("type", {i}, {},
+         node_str(i) + " (" + to_string(nd.location) + " of cell " + std::to_string(nd.cell) +
+             ") is a " + to_string(nd.type) + " with " + std::to_string(down) +
+             " arc(s) down and " + std::to_string(up) + " up, but the field around it has " + seen);
+  }
+
+  // On a closed ring (inside the surface) a regular node has one lower and one upper sector. On
+  // the boundary (open ring) two lower sectors already joined below are regular too.
+  // Another node whose position is within about the sampling radius r (parameter units, scaled
+  // by the cell's Jacobian) of node i, or -1.
+  int64_t other_node_within(int64_t i, double r) const {
+    const TreeNode &nd = tree_.nodes[i];
+    const auto j = mesh_.geometry.jacobian(nd.cell, nd.uv[0], nd.uv[1]);
+    const double scale =
+        std::max(std::hypot(j[0][0], j[0][1], j[0][2]), std::hypot(j[1][0], j[1][1], j[1][2]));
+    const double reach = 4 * r * scale;
+    for (int64_t k = 0; k < n_; ++k) {
+      const Vec3 &p = tree_.nodes[k].position;
+      if (k != i &&
+          std::hypot(p[0] - nd.position[0], p[1] - nd.position[1], p[2] - nd.position[2]) <= reach)
+        return k;
+    }
+    return -1;
+  }
+
+  static bool type_matches(NodeType type, const Sectors &s, bool closed) {
+    switch (type) {
+    case NodeType::Minimum:
+      return s.lower == 0;
+    case NodeType::Maximum:
+      return s.upper == 0;
+    case NodeType::Regular:
+      return closed ? s.lower == 1 && s.upper == 1 : s.lower >= 1 && s.upper >= 1;
+    case NodeType::Saddle:
+      return s.lower >= 2 || s.upper >= 2;
+    }
+    return false;
+  }
+
+  void skip(int64_t i, const std::string &msg) {
+    report_.skipped.push_back({"type", {i}, {}, msg});
+  }
+
+  static std::string fmt(double x) {
+    std::ostringstream s;
+    s.precision(17);
+    s << x;
+    return s.str();
+  }
+
+  const TreeResult &tree_;
+  const Mesh &mesh_;
+  const TreeCheckOptions &opt_;
+  const int64_t n_;
+  double scale_ = 1;
+  bool placement_failed_ = false;
+  // On a sphere an inner saddle with k lower and k upper sectors has exactly k + 1 arcs (each
+  // lower sector joined below cuts the sphere); on a disk the boundary allows up to 2k.
+  bool sphere_ = false;
+  std::vector<std::array<int, 2>> deg_; // up, down
+  std::vector<int64_t> vertex_offset_;
+  std::vector<std::pair<int64_t, int>> vertex_cells_;
+  TreeCheckReport report_;
+};
+
+} // namespace
+
+std::string TreeCheckReport::summary(std::size_t max_lines) const {
+  std::ostringstream s;
+  for (std::size_t i = 0; i < failures.size() && i < max_lines; ++i)
+    s << "FAIL [" << failures[i].check << "] " << failures[i].message << "\n";
+  if (failures.size() > max_lines)
+    s << "... and " << failures.size() - max_lines << " more failure(s)\n";
+  s << failures.size() << " failure(s), " << nodes_checked
+    << " node type(s) confirmed by samples of the field, " << skipped.size() << " skipped\n";
+  return s.str();
+}
+
+TreeCheckReport check_tree(const TreeResult &tree, const Mesh &mesh,
+                           const TreeCheckOptions &options) {
+  return Checker(tree, mesh, options).run();
+}
+
+} // namespace hoct
