@@ -4,6 +4,7 @@
 #include "error.hpp"
 #include "io/read_mesh.hpp"
 #include "io/tree_json.hpp"
+#include "mesh/domain_check.hpp"
 #include "mesh/mesh.hpp"
 #include "pl/pl_contour_tree.hpp"
 #include "pl/refinement.hpp"
@@ -82,7 +83,13 @@ PyMesh from_arrays(py::array_t<double, py::array::c_style | py::array::forcecast
 }
 
 PyTree compute_tree(const PyMesh &m, const std::string &method, int levels, int threads,
-                    bool keep_flat) {
+                    bool keep_flat, bool force) {
+  // The same domain rule as `hoct tree`: a contour tree needs one disk or one sphere.
+  const std::string problem = domain_problem(m.mesh->topology);
+  if (!problem.empty() && !force)
+    throw Error((m.mesh->source.empty() ? std::string("mesh") : m.mesh->source) + ": " + problem +
+                ". Pass force=True to compute the join/split merge anyway (one tree per "
+                "component; not the Reeb graph).");
   PyTree t;
   if (method == "exact") {
     ExactTreeOptions o;

@@ -74,11 +74,15 @@ def _threshold(spec, tree):
     return float(spec)
 
 
-def contour_tree(mesh, simplify=None, threads=None, method="exact", refine=4, keep_flat=False):
+def contour_tree(mesh, simplify=None, threads=None, method="exact", refine=4, keep_flat=False,
+                 force=False):
     """The contour tree of `mesh`: method "exact" (default), "linear" (PL of the Lagrange nodes)
     or "refine" (PL of the exact k x k refinement, k = `refine`). `simplify` removes leaf
-    branches below a persistence threshold (a number, or a percentage like "0.5%")."""
-    tree = _hoct.contour_tree(mesh, method, int(refine), int(threads or 0), bool(keep_flat))
+    branches below a persistence threshold (a number, or a percentage like "0.5%"). A domain
+    that is not one disk or one sphere raises HoctError unless force=True (as `hoct tree
+    --force`)."""
+    tree = _hoct.contour_tree(mesh, method, int(refine), int(threads or 0), bool(keep_flat),
+                              bool(force))
     if simplify is not None:
         tree = tree.simplify(_threshold(simplify, tree))
     return tree

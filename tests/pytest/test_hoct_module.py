@@ -123,3 +123,14 @@ def test_computation_releases_the_gil():
     stop.set()
     th.join()
     assert during > 5  # the other thread kept running while the tree was computed
+
+
+def test_non_simply_connected_domain_is_refused_unless_forced():
+    # Two separate triangles: not one disk, so no contour tree (the CLI refuses it too).
+    points = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0], [3, 0, 0], [4, 0, 0], [3, 1, 0]], float)
+    cells = np.array([[0, 1, 2], [3, 4, 5]])
+    mesh = hoct.from_arrays(points, cells, np.array([0.0, 1.0, 2.0, 3.0, 4.0, 5.0]))
+    with pytest.raises(hoct.HoctError, match="not a disk or a sphere but 2 separate components"):
+        hoct.contour_tree(mesh)
+    forced = hoct.contour_tree(mesh, force=True)
+    assert sorted(forced.values.tolist()) == [0.0, 2.0, 3.0, 5.0]  # one min and max per triangle
