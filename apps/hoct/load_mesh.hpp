@@ -18,8 +18,9 @@ struct LoadedMesh {
 // Reads `path` (any supported format) and builds the mesh. With strict = true, any error-level
 // problem throws hoct::Error listing them. With merge_tolerance >= 0, points closer than that
 // (relative to the bounding-box diagonal) are merged first (mesh/duplicate_points.hpp).
+// `threads` (0: all cores) converts the cells to Bernstein form in parallel.
 LoadedMesh load_mesh(const std::string &path, const std::string &scalar, bool strict,
-                     double merge_tolerance = -1);
+                     double merge_tolerance = -1, int threads = 1);
 
 // --merge-duplicates[=TOL] of a command.
 struct MergeOption {
