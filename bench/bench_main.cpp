@@ -131,25 +131,29 @@ void datasets_section(const Settings &s) {
   std::printf("\n(The PL tree has no parallel phase: it runs on one thread in both columns.)\n\n");
 }
 
+// The `random` dataset of about `size` cells of `degree` written to `vtu`; returns its cells.
+long long write_random(const std::string &vtu, double size, int degree) {
+  DatasetOptions o;
+  o.cells = static_cast<long long>(size);
+  o.degree = degree;
+  const MeshInput in = generate_dataset("random", o);
+  write_vtu(vtu, in);
+  return static_cast<long long>(in.num_cells());
+}
+
 void scaling_section(const Settings &s) {
   std::printf("## Scaling on `random` fields: `hoct tree FILE.vtu --json J` phase by phase "
               "(seconds; medians of %d runs up to 1e5 cells, %d above)\n\n",
               s.runs, std::min(s.runs, 3));
-  std::printf(
-      "| degree | cells | graph nodes | tree nodes | read | mesh + Bernstein | critical "
-      "points | connections | sweeps | merge | write | total | us/cell (tree) | cells/s "
-      "(total) | tree, 2 threads | cell phase 1 -> 2 threads "
-      "|\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+  std::printf("| degree | cells | graph nodes | tree nodes | read | mesh + Bernstein | critical "
+              "points | connections | sweeps | merge | write | total | us/cell (tree) | cells/s "
+              "(total) | tree, 2 threads | cell phase 1 -> 2 threads "
+              "|\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   for (int degree : s.degrees)
     for (double size : s.sizes) {
       ScratchDir scratch;
       const std::string vtu = scratch.file("random.vtu");
-      {
-        DatasetOptions o;
-        o.cells = static_cast<long long>(size);
-        o.degree = degree;
-        write_vtu(vtu, generate_dataset("random", o));
-      }
+      write_random(vtu, size, degree);
       const int runs = size > 1.5e5 ? std::min(s.runs, 3) : s.runs;
       PipelineResult m1, m2;
       for (int threads : s.threads) {
@@ -161,8 +165,7 @@ void scaling_section(const Settings &s) {
                   "%.3f | %.2f | %.0f | %.3f | %.2fx |\n",
                   degree, static_cast<long long>(m1.cells), static_cast<long long>(m1.graph_nodes),
                   m1.nodes, m1.read, m1.mesh, m1.critical, m1.connections, m1.sweeps, m1.merge,
-                  m1.write, m1.total, 1e6 * m1.tree / cells, cells / m1.total,
-                  m2.tree,
+                  m1.write, m1.total, 1e6 * m1.tree / cells, cells / m1.total, m2.tree,
                   m2.cell_phase() > 0 ? m1.cell_phase() / m2.cell_phase() : 0.0);
       std::fflush(stdout);
     }
@@ -178,15 +181,7 @@ void memory_section(const Settings &s) {
     for (double size : s.sizes) {
       ScratchDir scratch;
       const std::string vtu = scratch.file("random.vtu");
-      long long cells = 0;
-      {
-        DatasetOptions o;
-        o.cells = static_cast<long long>(size);
-        o.degree = degree;
-        const MeshInput in = generate_dataset("random", o);
-        cells = static_cast<long long>(in.num_cells());
-        write_vtu(vtu, in);
-      }
+      const long long cells = write_random(vtu, size, degree);
       const ProcessPeak peak = run_process({executable_dir() + "/hoct", "tree", vtu, "--json",
                                             scratch.file("cli.json"), "--threads", "1", "-q"});
       std::printf("| %d | %lld | %.0f | %.0f | %.2f |\n", degree, cells, peak.max_rss_kib / 1024.0,
