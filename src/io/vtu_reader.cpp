@@ -74,9 +74,17 @@ void VtuFile::read_file() {
   std::ifstream in(path_, std::ios::binary);
   if (!in)
     fail("cannot open (" + std::string(std::strerror(errno)) + ")");
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  bytes_ = ss.str();
+  // One read into one buffer (a 2 GB file is not copied through a stream and a string).
+  in.seekg(0, std::ios::end);
+  const std::streamoff size = in.tellg();
+  in.seekg(0, std::ios::beg);
+  if (size < 0 || !in)
+    fail("cannot read (" + std::string(std::strerror(errno)) + ")");
+  bytes_.resize(static_cast<std::size_t>(size));
+  in.read(bytes_.data(), size);
+  if (in.gcount() != size)
+    fail("cannot read: got " + std::to_string(in.gcount()) + " of " + std::to_string(size) +
+         " bytes");
 }
 
 void VtuFile::load() {
@@ -84,7 +92,7 @@ void VtuFile::load() {
     fail("the file is empty");
   // Cut the appended payload out before XML parsing: raw bytes may contain anything.
   const std::size_t tag = bytes_.find("<AppendedData");
-  xml_ = bytes_;
+  std::string_view xml = bytes_; // the whole file, unless the payload is cut out below
   if (tag != std::string::npos) {
     const std::size_t close = bytes_.find('>', tag);
     const std::size_t underscore = close == std::string::npos ? close : bytes_.find('_', close);
@@ -99,8 +107,9 @@ void VtuFile::load() {
       fail("<AppendedData> has an unknown encoding (expected raw or base64)");
     appended_ = std::string_view(bytes_).substr(underscore + 1, end - underscore - 1);
     xml_ = bytes_.substr(0, close + 1) + bytes_.substr(end);
+    xml = xml_;
   }
-  const pugi::xml_parse_result r = doc_.load_buffer(xml_.data(), xml_.size());
+  const pugi::xml_parse_result r = doc_.load_buffer(xml.data(), xml.size());
   if (!r)
     fail(std::string("not valid XML: ") + r.description() + " at byte " + std::to_string(r.offset));
   const pugi::xml_node root = doc_.child("VTKFile");
