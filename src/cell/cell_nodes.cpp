@@ -20,4 +20,15 @@ Vec2 inward_normal(int k) {
   }
 }
 
+Vec2 edge_tangent(int k) {
+  switch (k) {
+  case 0:
+    return {1, 0};
+  case 1:
+    return {-1, 1};
+  default:
+    return {0, -1};
+  }
+}
+
 } // namespace hoct

@@ -30,5 +30,7 @@ struct CellNodes {
 Vec2 point_on_edge(int k, double s);
 // Inward normal direction of local edge k in the reference triangle (not normalised).
 Vec2 inward_normal(int k);
+// Direction of local edge k from corner k to corner k+1 (not normalised).
+Vec2 edge_tangent(int k);
 
 } // namespace hoct

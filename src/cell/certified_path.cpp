@@ -123,10 +123,8 @@ int connect_lower(const PathField &f, const CellNodes &cn, const std::vector<dou
       break;
     }
   }
-  if (!started) {
-    ++counters.failed;
+  if (!started)
     return -1;
-  }
   // Candidate targets: nodes below the threshold, nearest first.
   thread_local std::vector<int> order; // reused: no allocation per call
   order.clear();
@@ -222,7 +220,6 @@ int connect_lower(const PathField &f, const CellNodes &cn, const std::vector<dou
       return m;
     }
   }
-  ++counters.failed;
   return -1;
 }
 

@@ -17,7 +17,7 @@ namespace hoct {
 struct PathCounters {
   int64_t direct = 0; // straight segment from the sector's start point
   int64_t traced = 0; // needed descent steps
-  int64_t failed = 0; // no certified path: the cell falls back
+  int64_t failed = 0; // sectors with no certified path: the cell falls back
   int64_t steps = 0;  // descent steps taken in all
 };
 

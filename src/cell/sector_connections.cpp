@@ -1,6 +1,8 @@
 #include "cell/sector_connections.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace hoct {
 namespace {
@@ -36,10 +38,14 @@ SectorResult connect_sectors(const BernsteinTriangle &g, const CellNodes &cn,
   }
   std::vector<Vec2> path;
   std::vector<Vec2> *want = with_paths ? &path : nullptr;
-  auto lower = [&](int node, const Vec2 &dir, int skip) {
-    const int m =
-        connect_lower(down, cn, vals, cn.nodes[node].uv, vals[node], dir, skip, counters, want);
+  // Each sector is tried along up to two directions (the second only if the first fails); the
+  // cell fails when neither gives a certified path.
+  auto lower = [&](int node, const Vec2 &dir, int skip, const Vec2 *alt = nullptr) {
+    int m = connect_lower(down, cn, vals, cn.nodes[node].uv, vals[node], dir, skip, counters, want);
+    if (m < 0 && alt)
+      m = connect_lower(down, cn, vals, cn.nodes[node].uv, vals[node], *alt, skip, counters, want);
     if (m < 0) {
+      ++counters.failed;
       out.failed = true;
       return;
     }
@@ -47,10 +53,14 @@ SectorResult connect_sectors(const BernsteinTriangle &g, const CellNodes &cn,
     if (with_paths)
       out.join_paths.push_back(path);
   };
-  auto upper = [&](int node, const Vec2 &dir, int skip) {
-    const int m = connect_lower(up, cn, neg_vals, cn.nodes[node].uv, neg_vals[node], dir, skip,
-                                counters, want);
+  auto upper = [&](int node, const Vec2 &dir, int skip, const Vec2 *alt = nullptr) {
+    int m = connect_lower(up, cn, neg_vals, cn.nodes[node].uv, neg_vals[node], dir, skip, counters,
+                          want);
+    if (m < 0 && alt)
+      m = connect_lower(up, cn, neg_vals, cn.nodes[node].uv, neg_vals[node], *alt, skip, counters,
+                        want);
     if (m < 0) {
+      ++counters.failed;
       out.failed = true;
       return;
     }
@@ -59,19 +69,24 @@ SectorResult connect_sectors(const BernsteinTriangle &g, const CellNodes &cn,
       out.split_paths.push_back(path);
   };
 
-  // Second derivatives once per cell (only where there are interior nodes).
+  // Second derivatives once per cell, when a node needs them.
   BernsteinTriangle guu, guv, gvv;
-  if (!interior.empty()) {
-    guu = down.gu.du();
-    guv = down.gu.dv();
-    gvv = down.gv.dv();
-  }
+  bool have_second = false;
+  auto hessian = [&](const Vec2 &p) {
+    if (!have_second) {
+      guu = down.gu.du();
+      guv = down.gu.dv();
+      gvv = down.gv.dv();
+      have_second = true;
+    }
+    const double huv = guv(p[0], p[1]);
+    return Mat2{{{guu(p[0], p[1]), huv}, {huv, gvv(p[0], p[1])}}};
+  };
   for (int node : interior) {
     const Vec2 &p = cn.nodes[node].uv;
     double lambda[2];
     Vec2 vec[2];
-    const double huv = guv(p[0], p[1]);
-    eigen2({{{guu(p[0], p[1]), huv}, {huv, gvv(p[0], p[1])}}}, lambda, vec);
+    eigen2(hessian(p), lambda, vec);
     const Vec2 neg0 = {-vec[0][0], -vec[0][1]}, neg1 = {-vec[1][0], -vec[1][1]};
     if (lambda[0] < 0 && lambda[1] > 0) { // saddle: two lower, two upper sectors
       lower(node, vec[0], 2);
@@ -86,7 +101,16 @@ SectorResult connect_sectors(const BernsteinTriangle &g, const CellNodes &cn,
       out.degenerate = true;
     }
   }
-  const double gscale = std::abs(down.margin) * 1e4; // 1e-8 of the value scale
+  // The normal derivative's sign decides whether an edge node has an interior sector. It is
+  // trusted above 1e3 times the rounding level of the gradient's coefficients (64 eps of their
+  // scale, as in find_gradient_zeros); below, the node is treated as a critical point of the
+  // field lying on the edge (degenerate: fall back). The level is relative to the gradient, not
+  // the values: in a thin cell the reference normal derivative is small with the cell's width.
+  double grad_scale = 0;
+  for (const BernsteinTriangle *d : {&down.gu, &down.gv})
+    for (double c : d->coefficients())
+      grad_scale = std::max(grad_scale, std::abs(c));
+  const double gscale = 1e3 * 64 * std::numeric_limits<double>::epsilon() * grad_scale;
   for (const CellEdgeNode &e : edge) {
     const Vec2 &p = cn.nodes[e.node].uv;
     const Vec2 n = inward_normal(e.local_edge);
@@ -95,10 +119,27 @@ SectorResult connect_sectors(const BernsteinTriangle &g, const CellNodes &cn,
       out.degenerate = true;
       continue;
     }
-    if (sn < 0 && e.second > 0)
-      lower(e.node, n, 1); // the edge ascends both ways, the interior descends
-    else if (sn > 0 && e.second < 0)
-      upper(e.node, n, 1);
+    const bool descends = sn < 0 && e.second > 0; // the edge ascends both ways, the interior
+    const bool ascends = sn > 0 && e.second < 0;  // descends (or the reverse)
+    if (!descends && !ascends)
+      continue;
+    // The sector's axis: the direction conjugate to the edge under the Hessian (the tangential
+    // slope of the quadratic model vanishes along it), where the sublevel set of the node's
+    // value has its depth; in thin cells the reference normal is nearly tangent in the physical
+    // plane and the dip along it can be below certification margins. The normal is the fallback.
+    const Vec2 t = edge_tangent(e.local_edge);
+    const Mat2 h = hessian(p);
+    const double htt =
+        t[0] * (h[0][0] * t[0] + h[0][1] * t[1]) + t[1] * (h[1][0] * t[0] + h[1][1] * t[1]);
+    const double htn =
+        t[0] * (h[0][0] * n[0] + h[0][1] * n[1]) + t[1] * (h[1][0] * n[0] + h[1][1] * n[1]);
+    const double k = htn / htt;
+    const Vec2 conj = {n[0] - k * t[0], n[1] - k * t[1]};
+    const bool use_conj = std::isfinite(k) && std::abs(k) < 1e6 && (descends ? htt > 0 : htt < 0);
+    if (descends)
+      use_conj ? lower(e.node, conj, 1, &n) : lower(e.node, n, 1);
+    else
+      use_conj ? upper(e.node, conj, 1, &n) : upper(e.node, n, 1);
   }
   return out;
 }

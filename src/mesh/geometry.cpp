@@ -148,4 +148,16 @@ std::array<Vec3, 2> Geometry::jacobian(int64_t c, double u, double v) const {
   return {casteljau3(wu, d - 1, u, v), casteljau3(wv, d - 1, u, v)};
 }
 
+Mat2 Geometry::frame(int64_t c) const {
+  const auto [a, b] = jacobian(c, 1.0 / 3, 1.0 / 3);
+  const double aa = a[0] * a[0] + a[1] * a[1] + a[2] * a[2];
+  const double ab = a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+  const double bb = b[0] * b[0] + b[1] * b[1] + b[2] * b[2];
+  const double na = std::sqrt(aa);
+  if (!(na > 0))
+    return {{{0, 0}, {0, 0}}};
+  const double r01 = ab / na;
+  return {{{na, r01}, {0, std::sqrt(std::max(bb - r01 * r01, 0.0))}}};
+}
+
 } // namespace hoct

@@ -26,6 +26,10 @@ public:
   Vec3 position(int64_t c, double u, double v) const;
   // d phi / du and d phi / dv.
   std::array<Vec3, 2> jacobian(int64_t c, double u, double v) const;
+  // The cell's shape as a 2x2 upper-triangular T with |T (du, dv)| = |J (du, dv)|, J the
+  // Jacobian at the centroid (T is the R factor of J = Q R): reference steps measured as lengths
+  // in the cell.
+  Mat2 frame(int64_t c) const;
 
   // All points lie in the plane z = const (to 1e-12 of the extent).
   bool planar() const { return planar_; }

@@ -24,7 +24,7 @@ Iv operator*(Iv a, Iv b) {
 // A box of the subdivision; its coefficients (g_u then g_v, tensor Bernstein form on the box)
 // sit at `offset` in the arena, which is used as a stack like the boxes themselves.
 struct Box {
-  double u0, v0, w;
+  double u0, v0, w, wy; // corner, widths along u and v (equal unless the search is framed)
   std::size_t offset;
 };
 
@@ -79,6 +79,35 @@ private:
 };
 
 Monomial monomial_of(const BernsteinTriangle &p) { return {to_monomial(p), p.degree()}; }
+
+// Upper bound of |p| on the box |u - x| <= rx, |v - y| <= ry.
+double abs_bound(const Monomial &p, double x, double y, double rx, double ry) {
+  const double bu = std::abs(x) + rx, bv = std::abs(y) + ry;
+  double r = 0;
+  for (int i = p.d; i >= 0; --i) {
+    const double *row = &p.a[static_cast<std::size_t>(i) * (p.d + 1)];
+    double s = 0;
+    for (int j = p.d - i; j >= 0; --j)
+      s = s * bv + std::abs(row[j]);
+    r = r * bu + s;
+  }
+  return r;
+}
+
+// Enclosure of s p + t q over the box (p, q of the same degree), the rounding of forming the
+// combination's coefficients included.
+Iv hessian_row_range(double s, const Monomial &p, double t, const Monomial &q, double x, double y,
+                     double rx, double ry) {
+  thread_local std::vector<double> combined;
+  combined.resize(p.a.size());
+  for (std::size_t i = 0; i < combined.size(); ++i)
+    combined[i] = s * p.a[i] + t * q.a[i];
+  const auto [lo, hi] = monomial_range(combined, p.d, x, y, rx, ry);
+  const double round =
+      4 * std::numeric_limits<double>::epsilon() *
+      (std::abs(s) * abs_bound(p, x, y, rx, ry) + std::abs(t) * abs_bound(q, x, y, rx, ry));
+  return {lo - round, hi + round};
+}
 
 // True if every coefficient exceeds `margin` in absolute value with one common sign: the
 // polynomial has no zero on the box.
@@ -149,13 +178,69 @@ GradientZeros find_gradient_zeros(const BernsteinTriangle &g, const GradientZero
   const BernsteinTriangle gu = g.du(), gv = g.dv();
   // Evaluation in monomial form (Horner) with rigorous rounding bounds; the subdivision itself
   // works on tensor Bernstein coefficients.
-  const Monomial mu = monomial_of(gu), mv = monomial_of(gv);
-  const Monomial muu = mu.du(), muv = mu.dv(), mvv = mv.dv();
+  Monomial mu = monomial_of(gu), mv = monomial_of(gv);
   const double eps = std::numeric_limits<double>::epsilon();
   // The coefficients themselves carry the rounding of their computation from the data (e.g. the
   // Lagrange -> Bernstein conversion), relative to the gradient's scale: a gradient component
   // below this level is noise, not a certified sign.
   const double f_err = 64 * eps * scale;
+  // Noise levels of the two components searched (f_err unless the search is framed).
+  double err_u = f_err, err_v = f_err;
+  // The search domain: the unit square of box coordinates x, mapped to the reference triangle
+  // by (u, v) = B x + c (the identity unless framed).
+  Mat2 B{{{1, 0}, {0, 1}}};
+  Vec2 c0{0, 0};
+  bool framed = false;
+  double root_w = 1, root_h = 1; // the search rectangle [0, root_w] x [0, root_h]
+  if (opt.frame) {
+    const Mat2 T = opt.frame();
+    const double det = T[0][0] * T[1][1] - T[0][1] * T[1][0];
+    const double fro =
+        T[0][0] * T[0][0] + T[0][1] * T[0][1] + T[1][0] * T[1][0] + T[1][1] * T[1][1];
+    // Condition number from the Frobenius norm and the determinant (sigma1 sigma2 = |det|).
+    const double ratio = std::abs(det) > 0 ? fro / std::abs(det) : INFINITY; // s1/s2 + s2/s1
+    if (std::isfinite(ratio) && ratio > opt.frame_anisotropy + 1 / opt.frame_anisotropy) {
+      framed = true;
+      // The cell in frame coordinates: corners 0, T e1, T e2; its bounding square becomes the
+      // unit square of box coordinates.
+      const double xs[3] = {0, T[0][0], T[0][1]}, ys[3] = {0, T[1][0], T[1][1]};
+      const double xlo = *std::min_element(xs, xs + 3), ylo = *std::min_element(ys, ys + 3);
+      const double lx = *std::max_element(xs, xs + 3) - xlo,
+                   ly = *std::max_element(ys, ys + 3) - ylo, side = std::max(lx, ly);
+      root_w = lx / side;
+      root_h = ly / side;
+      const Mat2 Ti{{{T[1][1] / det, -T[0][1] / det}, {-T[1][0] / det, T[0][0] / det}}};
+      B = {{{side * Ti[0][0], side * Ti[0][1]}, {side * Ti[1][0], side * Ti[1][1]}}};
+      c0 = {Ti[0][0] * xlo + Ti[0][1] * ylo, Ti[1][0] * xlo + Ti[1][1] * ylo};
+      // The gradient in box coordinates: B^T (g_u, g_v) at B x + c.
+      const int m = d - 1;
+      thread_local std::vector<double> pu, pv, au, av;
+      for (auto *v : {&pu, &pv, &au, &av})
+        v->resize(mu.a.size());
+      compose_affine(mu.a.data(), m, B, c0, pu.data(), au.data());
+      compose_affine(mv.a.data(), m, B, c0, pv.data(), av.data());
+      // Bounds of |x^i y^j| where the search evaluates (the rectangle, boxes inflated by 1.25).
+      double su = 0, sv = 0;
+      for (int i = 0; i <= m; ++i)
+        for (int j = 0; i + j <= m; ++j) {
+          const std::size_t k = static_cast<std::size_t>(i) * (m + 1) + j;
+          const double reach = std::pow(1.5 * root_w, i) * std::pow(1.5 * root_h, j);
+          mu.a[k] = B[0][0] * pu[k] + B[1][0] * pv[k];
+          mv.a[k] = B[0][1] * pu[k] + B[1][1] * pv[k];
+          su += (std::abs(B[0][0]) * au[k] + std::abs(B[1][0]) * av[k]) * reach;
+          sv += (std::abs(B[0][1]) * au[k] + std::abs(B[1][1]) * av[k]) * reach;
+        }
+      // The data's noise carried through B^T, and the rounding of the composition (every term
+      // bounded by the composition of absolute values, at most (m + 2)^2 terms per coefficient).
+      const double round = 4 * (m + 2) * (m + 2) * eps;
+      err_u = (std::abs(B[0][0]) + std::abs(B[1][0])) * f_err + round * su;
+      err_v = (std::abs(B[0][1]) + std::abs(B[1][1])) * f_err + round * sv;
+    }
+  }
+  auto to_reference = [&](double x, double y) {
+    return Vec2{B[0][0] * x + B[0][1] * y + c0[0], B[1][0] * x + B[1][1] * y + c0[1]};
+  };
+  const Monomial muu = mu.du(), muv = mu.dv(), mvv = mv.dv();
 
   // Newton's method from (u, v); gives up when the iterate leaves the square of half-width
   // `reach` around (cu, cv) (it is then heading for another zero or diverging).
@@ -187,17 +272,15 @@ GradientZeros find_gradient_zeros(const BernsteinTriangle &g, const GradientZero
     if (!(std::abs(det) > 0) || !std::isfinite(det))
       return 0;
     const double y00 = c / det, y01 = -b / det, y10 = -b / det, y11 = a / det;
-    const auto [uu_lo, uu_hi] = monomial_range(muu.a, muu.d, cx, cy, rx, ry);
-    const auto [uv_lo, uv_hi] = monomial_range(muv.a, muv.d, cx, cy, rx, ry);
-    const auto [vv_lo, vv_hi] = monomial_range(mvv.a, mvv.d, cx, cy, rx, ry);
-    const Iv J00{uu_lo, uu_hi}, J01{uv_lo, uv_hi}, J10{uv_lo, uv_hi}, J11{vv_lo, vv_hi};
-    // M = I - Y J(X)
-    const Iv M00 = Iv{1, 1} + (-1.0) * (y00 * J00 + y01 * J10);
-    const Iv M01 = (-1.0) * (y00 * J01 + y01 * J11);
-    const Iv M10 = (-1.0) * (y10 * J00 + y11 * J10);
-    const Iv M11 = Iv{1, 1} + (-1.0) * (y10 * J01 + y11 * J11);
+    // M = I - Y J(X), each entry enclosed as one polynomial (the combination of the Hessian's
+    // entries formed first): entry-wise intervals of J(X) lose the cancellation in Y J(X), which
+    // for an ill-conditioned Hessian (thin cells) leaves M far from contracting on any box.
+    const Iv M00 = Iv{1, 1} + (-1.0) * hessian_row_range(y00, muu, y01, muv, cx, cy, rx, ry);
+    const Iv M01 = (-1.0) * hessian_row_range(y00, muv, y01, mvv, cx, cy, rx, ry);
+    const Iv M10 = (-1.0) * hessian_row_range(y10, muu, y11, muv, cx, cy, rx, ry);
+    const Iv M11 = Iv{1, 1} + (-1.0) * hessian_row_range(y10, muv, y11, mvv, cx, cy, rx, ry);
     const double fu = mu(x, y), fv = mv(x, y);
-    const double eu = f_err + mu.error_bound(x, y), ev = f_err + mv.error_bound(x, y);
+    const double eu = err_u + mu.error_bound(x, y), ev = err_v + mv.error_bound(x, y);
     const Iv F0{fu - eu, fu + eu}, F1{fv - ev, fv + ev};
     const Iv D0{cx - rx - x, cx + rx - x}, D1{cy - ry - y, cy + ry - y};
     const Iv K0 = Iv{x, x} + (-1.0) * (y00 * F0 + y01 * F1) + M00 * D0 + M01 * D1;
@@ -235,9 +318,23 @@ GradientZeros find_gradient_zeros(const BernsteinTriangle &g, const GradientZero
   stack.clear();
   arena.assign(2 * sz, 0.0);
   current.resize(2 * sz);
-  TensorBernstein::from_monomial(mu.a.data(), m, arena.data());
-  TensorBernstein::from_monomial(mv.a.data(), m, arena.data() + sz);
-  stack.push_back({0.0, 0.0, 1.0, 0});
+  if (framed) {
+    // Tensor coefficients on the cell's bounding rectangle: the monomials in its local
+    // parameters p = x / root_w, q = y / root_h.
+    thread_local std::vector<double> scaled;
+    for (const Monomial *c : {&mu, &mv}) {
+      scaled = c->a;
+      for (int i = 0; i <= m; ++i)
+        for (int j = 0; i + j <= m; ++j)
+          scaled[static_cast<std::size_t>(i) * (m + 1) + j] *=
+              std::pow(root_w, i) * std::pow(root_h, j);
+      TensorBernstein::from_monomial(scaled.data(), m, arena.data() + (c == &mv ? sz : 0));
+    }
+  } else {
+    TensorBernstein::from_monomial(mu.a.data(), m, arena.data());
+    TensorBernstein::from_monomial(mv.a.data(), m, arena.data() + sz);
+  }
+  stack.push_back({0.0, 0.0, root_w, root_h, 0});
   // Bounds on the rounding of the subdivided coefficients (conversion and de Casteljau steps),
   // so that a sign test never excludes a box on rounding noise.
   double mp = 0, mq = 0;
@@ -245,10 +342,30 @@ GradientZeros find_gradient_zeros(const BernsteinTriangle &g, const GradientZero
     mp = std::max(mp, std::abs(arena[i]));
     mq = std::max(mq, std::abs(arena[sz + i]));
   }
-  // One level for both components: a component whose coefficients are all at the noise level of
-  // the gradient gives no certified sign.
-  mp = mq = 64 * (m + 1) * (m + 1) * eps * std::max(mp, mq);
+  if (framed) {
+    // Each component with its own noise level (they differ by the cell's aspect ratio).
+    mp = err_u + 64 * (m + 1) * (m + 1) * eps * mp;
+    mq = err_v + 64 * (m + 1) * (m + 1) * eps * mq;
+  } else {
+    // One level for both components: a component whose coefficients are all at the noise level
+    // of the gradient gives no certified sign.
+    mp = mq = 64 * (m + 1) * (m + 1) * eps * std::max(mp, mq);
+  }
   const double tol = opt.boundary_tolerance;
+  // A box entirely outside the triangle (beyond the tolerance): all four corners beyond one of
+  // its sides u = 0, v = 0, u + v = 1.
+  auto outside = [&](const Box &b) {
+    if (!framed)
+      return b.u0 + b.v0 > 1 + tol;
+    bool out_u = true, out_v = true, out_w = true;
+    for (int k = 0; k < 4; ++k) {
+      const Vec2 p = to_reference(b.u0 + (k & 1) * b.w, b.v0 + (k >> 1) * b.wy);
+      out_u = out_u && p[0] < -tol;
+      out_v = out_v && p[1] < -tol;
+      out_w = out_w && p[0] + p[1] > 1 + tol;
+    }
+    return out_u || out_v || out_w;
+  };
   int64_t deep = 0;
   while (!stack.empty()) {
     const Box b = stack.back();
@@ -260,32 +377,44 @@ GradientZeros find_gradient_zeros(const BernsteinTriangle &g, const GradientZero
       out.budget_exhausted = true;
       break;
     }
-    if (b.u0 + b.v0 > 1 + tol)
-      continue; // entirely outside the triangle
+    if (outside(b))
+      continue;
     if (excludes_zero(current.data(), sz, mp) || excludes_zero(current.data() + sz, sz, mq))
       continue;
-    const double h = 0.5 * b.w;
-    const double cx = b.u0 + h, cy = b.v0 + h;
+    const double hx = 0.5 * b.w, hy = 0.5 * b.wy, wmax = std::max(b.w, b.wy);
+    const double cx = b.u0 + hx, cy = b.v0 + hy;
     if (combination_excludes_zero(current.data(), current.data() + sz, sz, mu(cx, cy), mv(cx, cy),
                                   mp, mq))
       continue;
+    // Preconditioned by the inverse Hessian at the centre: near a zero the rows of H^-1 grad
+    // behave like u - u* and v - v*, so one of them keeps a sign on a box that misses the zero
+    // even where the components' zero curves are nearly parallel (thin cells in the reference
+    // triangle, ill-conditioned Hessians).
+    {
+      const double a = muu(cx, cy), bb = muv(cx, cy), c = mvv(cx, cy);
+      const double det = a * c - bb * bb;
+      if (std::isfinite(det) && std::abs(det) > 0 &&
+          (combination_excludes_zero(current.data(), current.data() + sz, sz, c, -bb, mp, mq) ||
+           combination_excludes_zero(current.data(), current.data() + sz, sz, -bb, a, mp, mq)))
+        continue;
+    }
     // Inside a box where Krawczyk already proved a unique zero (found and recorded): nothing
     // else to find here.
     bool covered = false;
     for (const Found &f : found)
       covered = covered || (f.certified && b.u0 >= f.cx - f.rx && b.u0 + b.w <= f.cx + f.rx &&
-                            b.v0 >= f.cy - f.ry && b.v0 + b.w <= f.cy + f.ry);
+                            b.v0 >= f.cy - f.ry && b.v0 + b.wy <= f.cy + f.ry);
     if (covered)
       continue;
-    if (b.w <= 0.25) {
+    if (wmax <= 0.25) {
       // Certify on the box inflated by a quarter, so zeros on box edges are interior.
-      const double r = 1.25 * h;
+      const double rx = 1.25 * hx, ry = 1.25 * hy, r = std::max(rx, ry);
       double x = cx, y = cy;
-      if (!newton(x, y, cx, cy, 2 * r, 3) || std::abs(x - cx) > r || std::abs(y - cy) > r) {
+      if (!newton(x, y, cx, cy, 2 * r, 3) || std::abs(x - cx) > rx || std::abs(y - cy) > ry) {
         x = cx;
         y = cy;
       }
-      const int k = krawczyk(cx, cy, r, r, x, y);
+      const int k = krawczyk(cx, cy, rx, ry, x, y);
       if (k == -1)
         continue;
       if (k == 1) {
@@ -294,7 +423,7 @@ GradientZeros find_gradient_zeros(const BernsteinTriangle &g, const GradientZero
           // Grow the certified box around the zero while Krawczyk still proves uniqueness: the
           // larger it is, the fewer boxes around the zero need subdividing. A box centred at the
           // zero with radius 2r contains the box just certified.
-          Found f{x, y, cx, cy, r, r, true};
+          Found f{x, y, cx, cy, rx, ry, true};
           for (double R = 2 * r; R <= 0.5 && krawczyk(x, y, R, R, x, y) == 1; R *= 2)
             f = {x, y, x, y, R, R, true};
           found.push_back(f);
@@ -302,12 +431,29 @@ GradientZeros find_gradient_zeros(const BernsteinTriangle &g, const GradientZero
         continue;
       }
     }
-    if (b.w <= opt.deep_width && ++deep > opt.deep_limit) {
+    if (wmax <= opt.deep_width && ++deep > opt.deep_limit) {
       out.budget_exhausted = true;
       break;
     }
-    if (b.w <= opt.resolution) {
-      found.push_back({cx, cy, cx, cy, h, h, false});
+    if (wmax <= opt.resolution) {
+      found.push_back({cx, cy, cx, cy, hx, hy, false});
+      continue;
+    }
+    // A framed search starts on a rectangle: boxes more than twice as long as wide are halved
+    // across their length until they are nearly square.
+    if (b.w > 2 * b.wy || b.wy > 2 * b.w) {
+      const bool along_u = b.w > b.wy;
+      const std::size_t base = arena.size();
+      arena.resize(base + 4 * sz);
+      for (int part = 0; part < 2; ++part) {
+        double *h[2] = {arena.data() + base + 2 * sz + part * sz, arena.data() + base + part * sz};
+        TensorBernstein::split_halves(current.data() + part * sz, m, m, along_u, h);
+      }
+      // The upper half at base, the lower at base + 2 sz (examined next).
+      stack.push_back(along_u ? Box{b.u0 + hx, b.v0, hx, b.wy, base}
+                              : Box{b.u0, b.v0 + hy, b.w, hy, base});
+      stack.push_back(along_u ? Box{b.u0, b.v0, hx, b.wy, base + 2 * sz}
+                              : Box{b.u0, b.v0, b.w, hy, base + 2 * sz});
       continue;
     }
     // Children k = 3..0 on top of the stacks (k = 0 is examined next).
@@ -320,11 +466,21 @@ GradientZeros find_gradient_zeros(const BernsteinTriangle &g, const GradientZero
       TensorBernstein::split_quarters(current.data() + part * sz, m, m, q);
     }
     for (int k = 3; k >= 0; --k)
-      stack.push_back({b.u0 + (k & 1) * h, b.v0 + (k >> 1) * h, h,
+      stack.push_back({b.u0 + (k & 1) * hx, b.v0 + (k >> 1) * hy, hx, hy,
                        base + static_cast<std::size_t>(3 - k) * 2 * sz});
   }
 
   // Keep zeros in the closed triangle (within tolerance); merge unresolved neighbours.
+  // Box coordinates -> reference triangle; a box's half-width becomes at most |B| times it.
+  const double bnorm =
+      std::max(std::abs(B[0][0]) + std::abs(B[0][1]), std::abs(B[1][0]) + std::abs(B[1][1]));
+  for (Found &f : found) {
+    const Vec2 r = to_reference(f.u, f.v);
+    f.u = r[0];
+    f.v = r[1];
+    f.rx *= bnorm;
+    f.ry *= bnorm;
+  }
   std::sort(found.begin(), found.end(),
             [](const Found &a, const Found &b) { return a.u < b.u || (a.u == b.u && a.v < b.v); });
   for (const Found &f : found) {

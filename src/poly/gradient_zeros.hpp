@@ -10,6 +10,7 @@
 #include "poly/bernstein_triangle.hpp"
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 namespace hoct {
@@ -30,6 +31,14 @@ struct GradientZeroOptions {
   double boundary_tolerance = 1e-9;  // "on or near the boundary"
   int64_t max_boxes = 50000;         // budget: exhausted means a curve of critical points
   double constant_tolerance = 1e-12; // |gradient coefficients| <= this * |values|: constant
+  // The cell's shape, asked for only when the cell needs a search: a 2x2 matrix T with
+  // |T (du, dv)| the length of a reference step (du, dv) in the cell (e.g. the R factor of the
+  // geometry's Jacobian). When T's condition number exceeds frame_anisotropy (a sliver), the
+  // search runs in the coordinates T (u, v), where the cell has its own shape: in the reference
+  // triangle the gradient components of a sliver are nearly parallel and its Hessian nearly
+  // singular, so that squares around a critical point never certify.
+  std::function<Mat2()> frame;
+  double frame_anisotropy = 16;
 };
 
 struct GradientZeros {

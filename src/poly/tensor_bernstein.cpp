@@ -159,6 +159,17 @@ void TensorBernstein::split_quarters(const double *b, int m, int n, double *cons
       split_row(&q[half][i * w], n, 1, &q[half][i * w], &q[2 + half][i * w], 1);
 }
 
+void TensorBernstein::split_halves(const double *b, int m, int n, bool along_s,
+                                   double *const h[2]) {
+  const int w = n + 1;
+  if (along_s)
+    for (int j = 0; j <= n; ++j)
+      split_row(&b[j], m, w, &h[0][j], &h[1][j], w);
+  else
+    for (int i = 0; i <= m; ++i)
+      split_row(&b[i * w], n, 1, &h[0][i * w], &h[1][i * w], 1);
+}
+
 std::array<TensorBernstein, 4> TensorBernstein::quarters() const {
   const std::size_t sz = b_.size();
   std::array<std::vector<double>, 4> c;

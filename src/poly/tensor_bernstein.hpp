@@ -39,6 +39,9 @@ public:
   // The same on raw coefficient arrays of bidegree (m, n) (no allocation): q[k] receives the
   // (m+1)(n+1) coefficients of quarter k; the four outputs must not overlap b.
   static void split_quarters(const double *b, int m, int n, double *const q[4]);
+  // The two halves along s (along_s) or t: h[0] the lower, h[1] the upper half; the outputs
+  // must not overlap b.
+  static void split_halves(const double *b, int m, int n, bool along_s, double *const h[2]);
   std::pair<double, double> bounds() const;
   // True if every coefficient is > 0, or every one is < 0: no zero in the box.
   bool excludes_zero() const;

@@ -67,9 +67,14 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
   const int threads = threads_for(nc, thread_count(opt.threads), opt.cells_per_thread);
   std::vector<int64_t> unresolved_per_thread(threads, 0);
   parallel_for(nc, threads, [&](int64_t begin, int64_t end, int worker) {
+    // Slivers are searched in their own shape (asked for only when a cell needs a search).
+    int64_t cell = begin;
+    GradientZeroOptions zero_options;
+    zero_options.frame = [&] { return mesh.geometry.frame(cell); };
     for (int64_t c = begin; c < end; ++c) {
       const BernsteinTriangle g = field.cell_polynomial(c);
-      const GradientZeros z = find_gradient_zeros(g);
+      cell = c;
+      const GradientZeros z = find_gradient_zeros(g, zero_options);
       uint8_t why = 0;
       if (z.constant)
         why |= kConstantCell;
