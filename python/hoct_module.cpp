@@ -277,8 +277,8 @@ PYBIND11_MODULE(_hoct, m) {
   // The computations release the GIL: other Python threads run meanwhile.
   m.def(
       "read",
-      [](const std::string &path, const std::string &scalar) {
-        return make_mesh(read_mesh(path, scalar));
+      [](const std::string &path, const std::string &scalar, const std::string &max_memory) {
+        return make_mesh(read_mesh(path, scalar, read_limits_for(max_memory)));
       },
       py::call_guard<py::gil_scoped_release>());
   m.def("from_arrays", &from_arrays);

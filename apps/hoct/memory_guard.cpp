@@ -24,11 +24,6 @@ void add_max_memory_option(CLI::App &app) {
   }
 }
 
-ReadLimits read_limits() {
-  const uint64_t physical = physical_memory_bytes();
-  if (!max_memory_text().empty())
-    return {.max_memory_bytes = parse_memory_size(max_memory_text(), physical)};
-  return {.max_memory_bytes = physical / 100 * kDefaultMemoryPercent};
-}
+ReadLimits read_limits() { return read_limits_for(max_memory_text()); }
 
 } // namespace hoct::cli

@@ -8,9 +8,6 @@
 
 namespace hoct::cli {
 
-// Default budget: this share of the physical memory.
-constexpr int kDefaultMemoryPercent = 80;
-
 // Adds --max-memory to every subcommand of `app` that reads a mesh (all but generate, compare).
 void add_max_memory_option(CLI::App &app);
 

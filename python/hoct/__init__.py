@@ -15,9 +15,24 @@ __all__ = ["read", "from_arrays", "from_meshio", "generate", "contour_tree", "Me
            "HoctError"]
 
 
-def read(path, scalar=None):
-    """Read a .vtu or .msh file; `scalar` names the point-data array (default: the first)."""
-    return _hoct.read(str(path), scalar or "")
+def read(path, scalar=None, max_memory=None):
+    """Read a .vtu or .msh file; `scalar` names the point-data array (default: the first).
+
+    `max_memory` is the memory budget the readers check against the file's header counts
+    before allocating, as for `hoct --max-memory`: bytes (int) or text such as "8G", "512M" or
+    "50%" of the physical memory; default 80% of the physical memory. A file whose counts need
+    more is refused with HoctError ("needs ~X GiB, limit Y GiB") before anything is allocated."""
+    if max_memory is None:
+        budget = ""
+    elif isinstance(max_memory, bool):
+        raise HoctError("read: max_memory must be a number of bytes or a size such as '8G'")
+    elif isinstance(max_memory, int):
+        if max_memory <= 0:
+            raise HoctError("read: max_memory must be positive, got %d" % max_memory)
+        budget = str(max_memory)
+    else:
+        budget = str(max_memory)
+    return _hoct.read(str(path), scalar or "", budget)
 
 
 _TRIANGLE_TYPES = {5: 1, 22: 2}  # VTK_TRIANGLE, VTK_QUADRATIC_TRIANGLE; 69 = any degree

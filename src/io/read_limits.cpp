@@ -101,4 +101,11 @@ uint64_t physical_memory_bytes() {
   return static_cast<uint64_t>(pages) * static_cast<uint64_t>(size);
 }
 
+ReadLimits read_limits_for(const std::string &max_memory) {
+  const uint64_t physical = physical_memory_bytes();
+  if (!max_memory.empty())
+    return {.max_memory_bytes = parse_memory_size(max_memory, physical)};
+  return {.max_memory_bytes = physical / 100 * kDefaultMemoryPercent};
+}
+
 } // namespace hoct

@@ -33,4 +33,10 @@ uint64_t parse_memory_size(const std::string &text, uint64_t physical_bytes);
 // Physical memory of the machine in bytes (0 if unknown).
 uint64_t physical_memory_bytes();
 
+// Default budget of the command line and the Python module: this share of the physical memory.
+constexpr int kDefaultMemoryPercent = 80;
+
+// The limits for a budget given as text (parse_memory_size; empty = the default share).
+ReadLimits read_limits_for(const std::string &max_memory);
+
 } // namespace hoct

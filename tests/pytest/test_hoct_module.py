@@ -134,3 +134,18 @@ def test_non_simply_connected_domain_is_refused_unless_forced():
         hoct.contour_tree(mesh)
     forced = hoct.contour_tree(mesh, force=True)
     assert sorted(forced.values.tolist()) == [0.0, 2.0, 3.0, 5.0]  # one min and max per triangle
+
+
+def test_read_checks_the_memory_budget_before_allocating(tmp):
+    # The same guard as `hoct --max-memory`: the header counts against the budget, before reading.
+    path = os.path.join(tmp, "gauss.vtu")
+    subprocess.run([HOCT, "generate", "gauss", "--cells", "2000", "--degree", "3", "-o", path],
+                   check=True, capture_output=True)
+    for budget in ("1M", 1 << 20):
+        with pytest.raises(hoct.HoctError, match=r"gauss\.vtu: piece 0: .*need ~.*limit 1 MiB"):
+            hoct.read(path, max_memory=budget)
+    for bad in ("lots", "150%", "-5G", 0, -3, True):
+        with pytest.raises(hoct.HoctError, match="memory size|max_memory"):
+            hoct.read(path, max_memory=bad)
+    for ok in (None, "4G", "50%", 8 << 30):
+        assert hoct.read(path, max_memory=ok).num_cells == hoct.read(path).num_cells

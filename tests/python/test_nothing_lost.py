@@ -1,5 +1,5 @@
-"""Nothing lost (issue 8, item 5): an interrupted `hoct tree` (SIGINT while computing, SIGTERM
-while writing) leaves no partial or temporary file and an existing output file intact, and exits
+"""Nothing lost (issue 8, item 5): an interrupted `hoct tree` or `hoct render` (SIGINT while
+computing, SIGTERM while writing) leaves no partial or temporary file and an existing output file intact, and exits
 with 128 + signal; the same input gives byte-identical JSON and VTP across runs and thread
 counts."""
 import os
@@ -71,6 +71,41 @@ with tempdir() as tmp:
     proc = start()
     R.check(proc.wait(120) == 0 and not intact("out.json") and leftovers(tmp) == [],
             "uninterrupted run writes its outputs")
+
+    # `hoct render` interrupted: SIGINT while drawing, SIGTERM while writing the picture.
+    def start_render(out, *extra):
+        with open(p(out), "w") as f:
+            f.write(old)
+        return subprocess.Popen([HOCT, "render", p("big.vtu"), "-o", p(out), *extra],
+                                stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+
+    proc = start_render("pic.png", "--isolines", "40")
+    time.sleep(0.5)
+    proc.send_signal(signal.SIGINT)
+    rc = proc.wait(60)
+    R.check(rc == 130, f"render, SIGINT while drawing: exit {rc} (expected 130)")
+    R.check(leftovers(tmp) == [], f"render SIGINT: temporary files left: {leftovers(tmp)}")
+    R.check(intact("pic.png"), "render SIGINT: the existing picture is intact")
+    caught = False
+    for attempt in range(5):
+        proc = start_render("pic.svg", "--isolines", "60", "--no-critical-points")
+        seen = False
+        while proc.poll() is None:
+            if leftovers(tmp):
+                proc.send_signal(signal.SIGTERM)
+                seen = True
+                break
+            time.sleep(0.0005)
+        rc = proc.wait(60)
+        if not seen:
+            continue
+        caught = True
+        R.check(rc == 143, f"render, SIGTERM while writing: exit {rc} (expected 143)")
+        R.check(leftovers(tmp) == [], f"render SIGTERM: temporary files left: {leftovers(tmp)}")
+        svg = open(p("pic.svg")).read()
+        R.check(svg == old or svg.rstrip().endswith("</svg>"), "render SIGTERM: old or complete")
+        break
+    R.check(caught, "render: never saw the temporary file while writing")
 
     # Determinism: byte-identical JSON (without timings) and VTP across runs and thread counts.
     run("generate", "random", "--cells", "3000", "-o", p("r.vtu"))
