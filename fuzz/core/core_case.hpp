@@ -12,6 +12,7 @@
 #include "tree/exact_contour_tree.hpp"
 #include "tree/tree_check.hpp"
 
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <limits>
@@ -65,8 +66,8 @@ inline double decode_value(ByteReader &in, double previous) {
   }
 }
 
-// Builds the mesh described by the bytes (throws hoct::Error for an invalid one).
-inline Mesh decode_mesh(ByteReader &in) {
+// The mesh input described by the bytes.
+inline MeshInput decode_input(ByteReader &in) {
   const int ncells = 1 + in.byte() % 16;
   // Vertices of a 3 x 3 grid of squares on [0, 3]^2, each jittered by up to 0.45 per axis.
   std::vector<Vec3> verts;
@@ -106,11 +107,23 @@ inline Mesh decode_mesh(ByteReader &in) {
     d = 1 + in.byte() % 5;
   std::mt19937_64 rng(in.byte());
   double previous = 0;
-  MeshInput input = testing::lagrange_mesh(
+  return testing::lagrange_mesh(
       used, tris, [&](int64_t c) { return degree[c]; }, {},
       [&](const Vec3 &) { return previous = decode_value(in, previous); }, rng);
-  return build_mesh(input);
 }
+
+// Options byte bits 2-4: squash the mesh along y by 10^-(1 + bits 3-4) (slivers of aspect ratio
+// up to ~10^4, searched in their own shape by find_gradient_zeros).
+inline void apply_squash(MeshInput &input, uint8_t options) {
+  if (!(options & 4))
+    return;
+  const double factor = std::pow(10.0, -(1 + ((options >> 3) & 3)));
+  for (Vec3 &p : input.points)
+    p[1] *= factor;
+}
+
+// Builds the mesh described by the bytes (throws hoct::Error for an invalid one).
+inline Mesh decode_mesh(ByteReader &in) { return build_mesh(decode_input(in)); }
 
 inline Mesh decode_mesh(const uint8_t *data, std::size_t size) {
   ByteReader in(data, size);
@@ -132,13 +145,15 @@ inline bool same_tree(const TreeResult &a, const TreeResult &b) {
 
 // Runs the case. Returns an empty string if the tree passed the checker or the input was
 // refused with hoct::Error; else the findings. A byte after the mesh (absent: 0) asks for the
-// augmented tree (bit 0) and for a second computation on 3 threads that must be identical
-// (bit 1).
+// augmented tree (bit 0), for a second computation on 3 threads that must be identical (bit 1)
+// and squashes the mesh into slivers (bits 2-4, apply_squash).
 inline std::string run_core_case(const uint8_t *data, std::size_t size) {
   try {
     ByteReader in(data, size);
-    const Mesh mesh = decode_mesh(in);
+    MeshInput input = decode_input(in);
     const uint8_t options = in.byte();
+    apply_squash(input, options);
+    const Mesh mesh = build_mesh(input);
     ExactTreeOptions o;
     o.threads = 1;
     o.augmented = options & 1;

@@ -22,6 +22,25 @@ double bounding_box_diagonal(const std::vector<Vec3> &points) {
   return std::hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]);
 }
 
+namespace {
+
+using Key = std::array<int64_t, 3>;
+
+// Grid cell of p for cells of size h from the corner lo (saturating far away).
+Key grid_key(const Vec3 &p, const Vec3 &lo, double h) {
+  Key k;
+  for (int i = 0; i < 3; ++i) {
+    const double q = std::floor((p[i] - lo[i]) / h);
+    k[i] = q < 4e18 ? static_cast<int64_t>(q) : int64_t{4000000000000000000};
+  }
+  return k;
+}
+
+// Points in at most this many per coarse cell are compared pairwise.
+constexpr std::size_t kPairwiseLimit = 64;
+
+} // namespace
+
 std::vector<int64_t> coincident_points(const std::vector<Vec3> &points,
                                        const std::vector<int64_t> &candidates, double tolerance) {
   const std::size_t n = candidates.size();
@@ -32,41 +51,97 @@ std::vector<int64_t> coincident_points(const std::vector<Vec3> &points,
   for (int64_t c : candidates)
     for (int i = 0; i < 3; ++i)
       lo[i] = std::min(lo[i], points[c][i]);
-  // Grid cells of size h = tolerance: close points lie in the same or adjacent cells.
-  using Key = std::array<int64_t, 3>;
-  auto key_of = [&](const Vec3 &p) {
-    Key k;
-    for (int i = 0; i < 3; ++i) {
-      const double q = std::floor((p[i] - lo[i]) / tolerance);
-      k[i] = q < 4e18 ? static_cast<int64_t>(q) : int64_t{4000000000000000000};
-    }
-    return k;
-  };
-  std::vector<std::pair<Key, std::size_t>> sorted(n);
-  for (std::size_t i = 0; i < n; ++i)
-    sorted[i] = {key_of(points[candidates[i]]), i};
-  std::sort(sorted.begin(), sorted.end());
   UnionFind uf(n);
   const double tol2 = tolerance * tolerance;
-  for (std::size_t s = 0; s < n; ++s) {
-    const auto &[key, i] = sorted[s];
-    const Vec3 &p = points[candidates[i]];
+  auto close = [&](std::size_t i, std::size_t j) {
+    const Vec3 &p = points[candidates[i]], &q = points[candidates[j]];
+    const double d2 = (p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) +
+                      (p[2] - q[2]) * (p[2] - q[2]);
+    return d2 <= tol2;
+  };
+  // Coarse cells of 1024 tolerances: points closer than the tolerance share a coarse cell unless
+  // one of them lies within the tolerance of a cell face (a few in a thousand), and meshes rarely
+  // put two vertices in one coarse cell. Pairs within a cell are compared directly; points near
+  // a face also against the neighbouring cells; crowded cells (many vertices within 1e-7 of the
+  // diagonal) by a fine grid of cells of one tolerance and its 27 neighbours.
+  const double h = 1024 * tolerance;
+  std::vector<std::pair<Key, std::size_t>> sorted(n);
+  for (std::size_t i = 0; i < n; ++i)
+    sorted[i] = {grid_key(points[candidates[i]], lo, h), i};
+  std::sort(sorted.begin(), sorted.end());
+
+  // Crowded cells keep their fine-grid order for the lookups from neighbouring cells.
+  std::vector<std::vector<std::pair<Key, std::size_t>>> crowded;
+  std::vector<std::pair<std::size_t, std::size_t>> crowded_at; // (run start, index in crowded)
+  auto search_fine = [&](const std::vector<std::pair<Key, std::size_t>> &fine, std::size_t i) {
+    const Key key = grid_key(points[candidates[i]], lo, tolerance);
     for (int dx = -1; dx <= 1; ++dx)
       for (int dy = -1; dy <= 1; ++dy)
         for (int dz = -1; dz <= 1; ++dz) {
           const Key k = {key[0] + dx, key[1] + dy, key[2] + dz};
-          auto it =
+          for (auto it =
+                   std::lower_bound(fine.begin(), fine.end(), std::make_pair(k, std::size_t{0}));
+               it != fine.end() && it->first == k; ++it)
+            if (it->second != i && close(i, it->second))
+              uf.unite(static_cast<int64_t>(i), static_cast<int64_t>(it->second));
+        }
+  };
+  for (std::size_t a = 0; a < n;) {
+    std::size_t b = a + 1;
+    while (b < n && sorted[b].first == sorted[a].first)
+      ++b;
+    if (b - a <= kPairwiseLimit) {
+      for (std::size_t s = a; s < b; ++s)
+        for (std::size_t t = s + 1; t < b; ++t)
+          if (close(sorted[s].second, sorted[t].second))
+            uf.unite(static_cast<int64_t>(sorted[s].second),
+                     static_cast<int64_t>(sorted[t].second));
+    } else {
+      auto &fine = crowded.emplace_back();
+      for (std::size_t s = a; s < b; ++s)
+        fine.push_back(
+            {grid_key(points[candidates[sorted[s].second]], lo, tolerance), sorted[s].second});
+      std::sort(fine.begin(), fine.end());
+      crowded_at.emplace_back(a, crowded.size() - 1);
+      for (const auto &entry : fine)
+        search_fine(fine, entry.second);
+    }
+    a = b;
+  }
+  // Points within the tolerance of a face of their coarse cell: against the neighbouring cells.
+  for (const auto &[key, i] : sorted) {
+    const Vec3 &p = points[candidates[i]];
+    int lo_side[3], hi_side[3];
+    bool near = false;
+    for (int ax = 0; ax < 3; ++ax) {
+      const double x = p[ax] - lo[ax];
+      // Within two tolerances (a margin for the rounding of the keys).
+      lo_side[ax] = x - 2 * tolerance < static_cast<double>(key[ax]) * h ? -1 : 0;
+      hi_side[ax] = x + 2 * tolerance >= static_cast<double>(key[ax] + 1) * h ? 1 : 0;
+      near = near || lo_side[ax] || hi_side[ax];
+    }
+    if (!near)
+      continue;
+    for (int dx = lo_side[0]; dx <= hi_side[0]; ++dx)
+      for (int dy = lo_side[1]; dy <= hi_side[1]; ++dy)
+        for (int dz = lo_side[2]; dz <= hi_side[2]; ++dz) {
+          if (dx == 0 && dy == 0 && dz == 0)
+            continue;
+          const Key k = {key[0] + dx, key[1] + dy, key[2] + dz};
+          const auto b =
               std::lower_bound(sorted.begin(), sorted.end(), std::make_pair(k, std::size_t{0}));
-          for (; it != sorted.end() && it->first == k; ++it) {
-            const std::size_t j = it->second;
-            if (j == i)
-              continue;
-            const Vec3 &q = points[candidates[j]];
-            const double d2 = (p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) +
-                              (p[2] - q[2]) * (p[2] - q[2]);
-            if (d2 <= tol2)
-              uf.unite(static_cast<int64_t>(i), static_cast<int64_t>(j));
+          if (b == sorted.end() || b->first != k)
+            continue;
+          const std::size_t start = static_cast<std::size_t>(b - sorted.begin());
+          const auto c = std::lower_bound(crowded_at.begin(), crowded_at.end(),
+                                          std::make_pair(start, std::size_t{0}));
+          if (c != crowded_at.end() && c->first == start) {
+            search_fine(crowded[c->second], i);
+            continue;
           }
+          for (auto it = b; it != sorted.end() && it->first == k; ++it)
+            if (close(i, it->second))
+              uf.unite(static_cast<int64_t>(i), static_cast<int64_t>(it->second));
         }
   }
   std::vector<int64_t> smallest(n, -1);

@@ -54,36 +54,46 @@ Geometry Geometry::build(const MeshInput &in) {
   g.degree_.resize(nc);
   g.offset_.assign(nc + 1, 0);
   std::vector<Vec3> ctrl;
-  std::vector<double> comp;
+  std::vector<const Vec3 *> node_ptr;
   for (int64_t c = 0; c < nc; ++c) {
     const int d = in.cell_degree[c];
     const int n = lattice_size(d);
     const int64_t *nodes = &in.cell_nodes[in.cell_offsets[c]];
-    ctrl.assign(n, Vec3{0, 0, 0});
-    const auto &m = lagrange_to_bernstein_triangle(d);
-    for (int i = 0; i < n; ++i)
-      for (int j = 0; j < n; ++j) {
-        const double w = m[static_cast<std::size_t>(i) * n + j];
-        const Vec3 &p = in.points[nodes[j]];
-        for (int a = 0; a < 3; ++a)
-          ctrl[i][a] += w * p[a];
-      }
-    // Linear if every control point is the affine image of its lattice point.
-    bool linear = true;
     const Vec3 &p0 = in.points[nodes[corner_index(d, 0)]];
     const Vec3 &p1 = in.points[nodes[corner_index(d, 1)]];
     const Vec3 &p2 = in.points[nodes[corner_index(d, 2)]];
-    for (int i = 0; i < n && linear; ++i) {
-      const auto q = lattice_point(d, i);
-      const double u = static_cast<double>(q[0]) / d, v = static_cast<double>(q[1]) / d;
-      for (int a = 0; a < 3; ++a) {
-        const double lin = (1 - u - v) * p0[a] + u * p1[a] + v * p2[a];
-        if (std::abs(ctrl[i][a] - lin) > tol)
-          linear = false;
+    // Linear if every point of the lattice (nodes, or control points) is the affine image of its
+    // lattice position. The nodes are tested first: a straight cell needs no conversion.
+    auto affine = [&](const Vec3 *const *pts) {
+      for (int i = 0; i < n; ++i) {
+        const auto q = lattice_point(d, i);
+        const double u = static_cast<double>(q[0]) / d, v = static_cast<double>(q[1]) / d;
+        for (int a = 0; a < 3; ++a)
+          if (std::abs((*pts[i])[a] - ((1 - u - v) * p0[a] + u * p1[a] + v * p2[a])) > tol)
+            return false;
       }
+      return true;
+    };
+    node_ptr.resize(n);
+    for (int j = 0; j < n; ++j)
+      node_ptr[j] = &in.points[nodes[j]];
+    bool linear = d == 1 || affine(node_ptr.data());
+    if (!linear) {
+      ctrl.assign(n, Vec3{0, 0, 0});
+      const auto &m = lagrange_to_bernstein_triangle(d);
+      for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j) {
+          const double w = m[static_cast<std::size_t>(i) * n + j];
+          const Vec3 &p = in.points[nodes[j]];
+          for (int a = 0; a < 3; ++a)
+            ctrl[i][a] += w * p[a];
+        }
+      for (int i = 0; i < n; ++i)
+        node_ptr[i] = &ctrl[i];
+      linear = affine(node_ptr.data());
     }
     if (linear) {
-      ctrl = {p0, p1, p2};
+      ctrl.assign({p0, p1, p2});
       g.degree_[c] = 1;
     } else {
       g.degree_[c] = static_cast<uint8_t>(d);

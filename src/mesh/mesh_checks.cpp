@@ -145,6 +145,19 @@ void check_geometry(const Geometry &g, const Topology &topo, ProblemLog &problem
     std::vector<int8_t> sign(nc, 0);
     int64_t positive = 0, negative = 0;
     for (int64_t c = 0; c < nc; ++c) {
+      if (g.is_linear(c)) {
+        // Constant Jacobian: its determinant decides.
+        const auto j = g.jacobian(c, 0, 0);
+        const double det = j[0][0] * j[1][1] - j[0][1] * j[1][0];
+        const int s = det > area_tol ? 1 : det < -area_tol ? -1 : 0;
+        if (s == 0)
+          problems.add("degenerate cell (zero area)", Severity::Error,
+                       cell_str(c) + " has zero area");
+        sign[c] = static_cast<int8_t>(s * (topo.orientable() ? topo.cell_parity(c) : 1));
+        positive += sign[c] > 0;
+        negative += sign[c] < 0;
+        continue;
+      }
       const BernsteinTriangle x = g.component(c, 0), y = g.component(c, 1);
       const BernsteinTriangle a = x.du() * y.dv(), b = x.dv() * y.du();
       std::vector<double> dc(a.coefficients().size());

@@ -17,7 +17,9 @@ struct EdgeRecord {
       return lo < o.lo;
     if (hi != o.hi)
       return hi < o.hi;
-    return cell < o.cell;
+    if (cell != o.cell)
+      return cell < o.cell;
+    return local < o.local;
   }
 };
 
@@ -70,15 +72,26 @@ Topology Topology::build(const MeshInput &in, ProblemLog &problems) {
       t.vertex_corner_[t.cell_vertices_[c][k]] = static_cast<int8_t>(k);
     }
 
-  // Edges: sort (lo, hi, cell, local) records once.
-  std::vector<EdgeRecord> rec;
-  rec.reserve(static_cast<std::size_t>(3 * nc));
+  // Edges: (lo, hi, cell, local) records in that order, bucketed by lo (a counting sort) and
+  // each bucket (a vertex's few edges) sorted.
+  const int64_t nv = static_cast<int64_t>(t.vertex_point_.size());
+  std::vector<int64_t> bucket(nv + 1, 0);
   for (int64_t c = 0; c < nc; ++c)
-    for (int k = 0; k < 3; ++k) {
-      const int64_t a = t.cell_vertices_[c][k], b = t.cell_vertices_[c][(k + 1) % 3];
-      rec.push_back({std::min(a, b), std::max(a, b), c, k});
-    }
-  std::sort(rec.begin(), rec.end());
+    for (int k = 0; k < 3; ++k)
+      ++bucket[std::min(t.cell_vertices_[c][k], t.cell_vertices_[c][(k + 1) % 3]) + 1];
+  for (int64_t v = 0; v < nv; ++v)
+    bucket[v + 1] += bucket[v];
+  std::vector<EdgeRecord> rec(static_cast<std::size_t>(3 * nc));
+  {
+    std::vector<int64_t> fill(bucket.begin(), bucket.end() - 1);
+    for (int64_t c = 0; c < nc; ++c)
+      for (int k = 0; k < 3; ++k) {
+        const int64_t a = t.cell_vertices_[c][k], b = t.cell_vertices_[c][(k + 1) % 3];
+        rec[fill[std::min(a, b)]++] = {std::min(a, b), std::max(a, b), c, k};
+      }
+  }
+  for (int64_t v = 0; v < nv; ++v)
+    std::sort(rec.begin() + bucket[v], rec.begin() + bucket[v + 1]);
   t.cell_edges_.assign(nc, {-1, -1, -1});
   t.cell_edge_reversed_.assign(nc, 0);
   t.edge_cell_offset_.push_back(0);

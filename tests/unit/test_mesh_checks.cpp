@@ -1,11 +1,15 @@
 // Topology invariants and the problems the mesh checks must find.
 #include "error.hpp"
+#include "mesh/duplicate_points.hpp"
 #include "mesh/mesh.hpp"
 #include "test_meshes.hpp"
 
 #include <gtest/gtest.h>
 
+#include <functional>
 #include <limits>
+#include <numeric>
+#include <random>
 
 namespace hoct {
 namespace {
@@ -153,6 +157,76 @@ TEST(MeshChecks, CurvedCellFoldedInside) {
   Mesh r = build_mesh(m, {false});
   EXPECT_EQ(r.problems.count("inverted cell (folded curved cell)"), 1) << r.problems.summary();
   EXPECT_EQ(r.geometry.curved_cells(), 1);
+}
+
+} // namespace
+} // namespace hoct
+
+namespace hoct {
+namespace {
+
+// coincident_points against the O(n^2) definition: random points, some in clusters closer than
+// the tolerance (crowded cells of more than 64 points among them), some straddling the grid's
+// cell faces at distances just below and above the tolerance, in 2D and 3D.
+TEST(DuplicatePoints, CoincidentPointsMatchBruteForce) {
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> U(-1, 1);
+  for (int trial = 0; trial < 12; ++trial) {
+    const double tol = trial % 2 ? 1e-3 : 1e-6;
+    const bool flat = trial % 3 == 0;
+    std::vector<Vec3> pts;
+    auto add = [&](const Vec3 &p) { pts.push_back({p[0], p[1], flat ? 0.0 : p[2]}); };
+    for (int i = 0; i < 300; ++i)
+      add({U(rng), U(rng), U(rng)});
+    // A crowded cluster (all within 1000 tolerances) with chains below the tolerance.
+    const Vec3 c{U(rng), U(rng), U(rng)};
+    for (int i = 0; i < 150; ++i)
+      add({c[0] + 400 * tol * U(rng), c[1] + 400 * tol * U(rng), c[2] + 400 * tol * U(rng)});
+    // A tight one (chains of points closer than the tolerance).
+    const Vec3 t{U(rng), U(rng), U(rng)};
+    for (int i = 0; i < 120; ++i)
+      add({t[0] + 2 * tol * U(rng), t[1] + 2 * tol * U(rng), t[2] + 2 * tol * U(rng)});
+    // Pairs at 0.9 and 1.1 tolerances in random directions around random points.
+    for (int i = 0; i < 100; ++i) {
+      const Vec3 p{U(rng), U(rng), U(rng)};
+      Vec3 d{U(rng), U(rng), flat ? 0.0 : U(rng)};
+      const double len = std::hypot(d[0], d[1], d[2]);
+      const double r = (i % 2 ? 0.9 : 1.1) * tol / len;
+      add(p);
+      add({p[0] + r * d[0], p[1] + r * d[1], p[2] + r * d[2]});
+    }
+    std::vector<int64_t> cand(pts.size());
+    std::iota(cand.begin(), cand.end(), 0);
+    std::shuffle(cand.begin(), cand.end(), rng);
+    const std::vector<int64_t> got = coincident_points(pts, cand, tol);
+    // Brute force: components of the "closer than tol" graph, represented by their smallest id.
+    const std::size_t n = cand.size();
+    std::vector<int64_t> comp(n);
+    std::iota(comp.begin(), comp.end(), 0);
+    std::function<int64_t(int64_t)> find = [&](int64_t x) {
+      return comp[x] == x ? x : comp[x] = find(comp[x]);
+    };
+    for (std::size_t i = 0; i < n; ++i)
+      for (std::size_t j = i + 1; j < n; ++j) {
+        const Vec3 &p = pts[cand[i]], &q = pts[cand[j]];
+        if ((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) +
+                (p[2] - q[2]) * (p[2] - q[2]) <=
+            tol * tol)
+          comp[find(static_cast<int64_t>(i))] = find(static_cast<int64_t>(j));
+      }
+    std::vector<int64_t> smallest(n, -1);
+    for (std::size_t i = 0; i < n; ++i) {
+      int64_t &m = smallest[find(static_cast<int64_t>(i))];
+      if (m < 0 || cand[i] < m)
+        m = cand[i];
+    }
+    int64_t merged = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      ASSERT_EQ(got[i], smallest[find(static_cast<int64_t>(i))]) << "trial " << trial << " i " << i;
+      merged += got[i] != cand[i];
+    }
+    EXPECT_GT(merged, 150) << trial; // the tight cluster and the 0.9-tolerance pairs
+  }
 }
 
 } // namespace
