@@ -137,6 +137,9 @@ bool combination_excludes_zero(const double *p, const double *q, std::size_t n, 
   return positive || negative;
 }
 
+GradientZeros search_zeros(const BernsteinTriangle &g, const GradientZeroOptions &opt, double scale,
+                           bool use_frame);
+
 } // namespace
 
 GradientZeros find_gradient_zeros(const BernsteinTriangle &g, const GradientZeroOptions &opt) {
@@ -175,6 +178,31 @@ GradientZeros find_gradient_zeros(const BernsteinTriangle &g, const GradientZero
   // triangle (its Bernstein coefficients share a sign), so there is no critical point at all.
   if (ulo > 0 || uhi < 0 || vlo > 0 || vhi < 0)
     return out;
+  // The search in the reference triangle; where it cannot resolve every zero and the cell is a
+  // sliver, once more in the cell's own shape, whose result is kept if it resolves them all.
+  // (Neither is preferred a priori: a field that is smooth in the plane is well-conditioned in
+  // the shape of a sliver, a field that varies across the sliver as fast as along it, as in
+  // boundary layers and in arbitrary node data, in the reference triangle.)
+  out = search_zeros(g, opt, scale, false);
+  if ((out.budget_exhausted || out.unresolved > 0) && opt.frame) {
+    GradientZeros framed = search_zeros(g, opt, scale, true);
+    if (framed.framed && !framed.budget_exhausted && framed.unresolved == 0) {
+      framed.boxes += out.boxes;
+      return framed;
+    }
+  }
+  return out;
+}
+
+namespace {
+
+GradientZeros search_zeros(const BernsteinTriangle &g, const GradientZeroOptions &opt, double scale,
+                           bool use_frame) {
+  GradientZeros out;
+  const int d = g.degree();
+  // The retry in the cell's shape gets a tenth of the budget: it is for slivers whose field is
+  // smooth in the plane, where it needs a few boxes per cell, not for degenerate cells.
+  const int64_t budget = use_frame ? std::max<int64_t>(opt.max_boxes / 10, 1) : opt.max_boxes;
   const BernsteinTriangle gu = g.du(), gv = g.dv();
   // Evaluation in monomial form (Horner) with rigorous rounding bounds; the subdivision itself
   // works on tensor Bernstein coefficients.
@@ -192,7 +220,7 @@ GradientZeros find_gradient_zeros(const BernsteinTriangle &g, const GradientZero
   Vec2 c0{0, 0};
   bool framed = false;
   double root_w = 1, root_h = 1; // the search rectangle [0, root_w] x [0, root_h]
-  if (opt.frame) {
+  if (use_frame) {
     const Mat2 T = opt.frame();
     const double det = T[0][0] * T[1][1] - T[0][1] * T[1][0];
     const double fro =
@@ -201,6 +229,7 @@ GradientZeros find_gradient_zeros(const BernsteinTriangle &g, const GradientZero
     const double ratio = std::abs(det) > 0 ? fro / std::abs(det) : INFINITY; // s1/s2 + s2/s1
     if (std::isfinite(ratio) && ratio > opt.frame_anisotropy + 1 / opt.frame_anisotropy) {
       framed = true;
+      out.framed = true;
       // The cell in frame coordinates: corners 0, T e1, T e2; its bounding square becomes the
       // unit square of box coordinates.
       const double xs[3] = {0, T[0][0], T[0][1]}, ys[3] = {0, T[1][0], T[1][1]};
@@ -373,7 +402,7 @@ GradientZeros find_gradient_zeros(const BernsteinTriangle &g, const GradientZero
     std::copy(arena.begin() + static_cast<std::ptrdiff_t>(b.offset),
               arena.begin() + static_cast<std::ptrdiff_t>(b.offset + 2 * sz), current.begin());
     arena.resize(b.offset);
-    if (++out.boxes > opt.max_boxes) {
+    if (++out.boxes > budget) {
       out.budget_exhausted = true;
       break;
     }
@@ -508,5 +537,7 @@ GradientZeros find_gradient_zeros(const BernsteinTriangle &g, const GradientZero
   }
   return out;
 }
+
+} // namespace
 
 } // namespace hoct

@@ -31,12 +31,13 @@ struct GradientZeroOptions {
   double boundary_tolerance = 1e-9;  // "on or near the boundary"
   int64_t max_boxes = 50000;         // budget: exhausted means a curve of critical points
   double constant_tolerance = 1e-12; // |gradient coefficients| <= this * |values|: constant
-  // The cell's shape, asked for only when the cell needs a search: a 2x2 matrix T with
-  // |T (du, dv)| the length of a reference step (du, dv) in the cell (e.g. the R factor of the
-  // geometry's Jacobian). When T's condition number exceeds frame_anisotropy (a sliver), the
-  // search runs in the coordinates T (u, v), where the cell has its own shape: in the reference
-  // triangle the gradient components of a sliver are nearly parallel and its Hessian nearly
-  // singular, so that squares around a critical point never certify.
+  // The cell's shape, asked for only when the search in the reference triangle leaves zeros
+  // unresolved: a 2x2 matrix T with |T (du, dv)| the length of a reference step (du, dv) in the
+  // cell (e.g. the R factor of the geometry's Jacobian). When T's condition number exceeds
+  // frame_anisotropy (a sliver), the search runs again in the coordinates T (u, v), where the
+  // cell has its own shape, and its result is kept if it resolves every zero: for a field that
+  // is smooth in the plane, the gradient components of a sliver are nearly parallel in the
+  // reference triangle and its Hessian nearly singular, so that squares never certify.
   std::function<Mat2()> frame;
   double frame_anisotropy = 16;
 };
@@ -47,6 +48,7 @@ struct GradientZeros {
   bool budget_exhausted = false; // likely a curve of critical points (degenerate cell)
   int64_t boxes = 0;             // boxes examined
   int64_t unresolved = 0;        // zeros reported uncertified
+  bool framed = false;           // found by the search in the cell's own shape
 };
 
 GradientZeros find_gradient_zeros(const BernsteinTriangle &g,
