@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 namespace hoct {
 namespace {
@@ -27,8 +28,15 @@ SectorResult connect_sectors(const BernsteinTriangle &g, const CellNodes &cn,
                              const std::vector<CellEdgeNode> &edge, PathCounters &counters,
                              bool with_paths) {
   SectorResult out;
+  if (interior.empty() && edge.empty())
+    return out; // only corners: every sector lies along an edge
   const PathField down(g);
-  const PathField up = down.negated();
+  std::optional<PathField> up_field; // -g, built when an upper sector needs it
+  auto up = [&]() -> const PathField & {
+    if (!up_field)
+      up_field = down.negated();
+    return *up_field;
+  };
   thread_local std::vector<double> vals, neg_vals; // reused across cells of a thread
   vals.resize(cn.nodes.size());
   neg_vals.resize(cn.nodes.size());
@@ -54,10 +62,10 @@ SectorResult connect_sectors(const BernsteinTriangle &g, const CellNodes &cn,
       out.join_paths.push_back(path);
   };
   auto upper = [&](int node, const Vec2 &dir, int skip, const Vec2 *alt = nullptr) {
-    int m = connect_lower(up, cn, neg_vals, cn.nodes[node].uv, neg_vals[node], dir, skip, counters,
-                          want);
+    int m = connect_lower(up(), cn, neg_vals, cn.nodes[node].uv, neg_vals[node], dir, skip,
+                          counters, want);
     if (m < 0 && alt)
-      m = connect_lower(up, cn, neg_vals, cn.nodes[node].uv, neg_vals[node], *alt, skip, counters,
+      m = connect_lower(up(), cn, neg_vals, cn.nodes[node].uv, neg_vals[node], *alt, skip, counters,
                         want);
     if (m < 0) {
       ++counters.failed;
