@@ -44,6 +44,25 @@ uint8_t edge_nodes_of(const BernsteinPoly &p, double value_scale, const EdgeNode
   return deg;
 }
 
+// Most edges of a smooth field: the derivative's Bernstein coefficients n (c[i+1] - c[i]) share
+// a strict sign and are not all at rounding level (what edge_nodes_of calls a constant edge), so
+// the edge is strictly monotone: no node, decided without building the polynomials.
+bool monotone(std::span<const double> c) {
+  if (c.size() < 2)
+    return false;
+  double lo = INFINITY, hi = -INFINITY, dscale = 0, pscale = 0;
+  const double n = static_cast<double>(c.size() - 1);
+  for (std::size_t i = 0; i + 1 < c.size(); ++i) {
+    const double d = n * (c[i + 1] - c[i]);
+    lo = std::min(lo, d);
+    hi = std::max(hi, d);
+    dscale = std::max(dscale, std::abs(d));
+  }
+  for (double x : c)
+    pscale = std::max(pscale, std::abs(x));
+  return !(dscale <= 1e-12 * pscale) && (lo > 0 || hi < 0);
+}
+
 } // namespace
 
 EdgeNodes find_edge_nodes(const Topology &topo, const Field &field, const EdgeNodeOptions &opt) {
@@ -61,6 +80,8 @@ EdgeNodes find_edge_nodes(const Topology &topo, const Field &field, const EdgeNo
     for (int64_t b = b0; b < b1; ++b)
       for (int64_t e = ne * b / blocks; e < ne * (b + 1) / blocks; ++e) {
         const std::size_t before = block_nodes[b].size();
+        if (monotone(field.edge_coefficients(e)))
+          continue; // no node, not degenerate (count[e] stays 0)
         out.degeneracy[e] =
             edge_nodes_of(field.edge_polynomial(e), value_scale, opt, block_nodes[b]);
         count[e] = static_cast<int64_t>(block_nodes[b].size() - before);

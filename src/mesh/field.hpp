@@ -48,6 +48,10 @@ public:
   int edge_degree(int64_t e) const { return edge_degree_[e]; }
   // The edge's polynomial, parameterised from its lower to its higher vertex.
   BernsteinPoly edge_polynomial(int64_t e) const;
+  std::span<const double> edge_coefficients(int64_t e) const {
+    return {edge_coef_.data() + edge_offset_[e],
+            static_cast<std::size_t>(edge_offset_[e + 1] - edge_offset_[e])};
+  }
 
   // The field at mesh vertex v: the one value every edge and cell uses there (the edge
   // polynomials' end coefficients are set to it exactly).

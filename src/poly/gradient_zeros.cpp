@@ -1,5 +1,6 @@
 #include "poly/gradient_zeros.hpp"
 
+#include "poly/lattice.hpp"
 #include "poly/monomial.hpp"
 #include "poly/tensor_bernstein.hpp"
 
@@ -142,42 +143,57 @@ GradientZeros search_zeros(const BernsteinTriangle &g, const GradientZeroOptions
 
 } // namespace
 
-GradientZeros find_gradient_zeros(const BernsteinTriangle &g, const GradientZeroOptions &opt) {
-  GradientZeros out;
-  const int d = g.degree();
-  if (d <= 0 || g.is_constant()) {
-    out.constant = true;
-    return out;
+GradientScreen screen_gradient(std::span<const double> coefficients, int d,
+                               double constant_tolerance) {
+  GradientScreen r;
+  if (d <= 0 || std::all_of(coefficients.begin(), coefficients.end(),
+                            [&](double x) { return x == coefficients[0]; })) {
+    r.verdict = GradientScreen::kConstant;
+    return r;
   }
-  if (d == 1)
-    return out; // a non-constant linear field has no critical point
+  if (d == 1) {
+    r.verdict = GradientScreen::kNoZero; // a non-constant linear field has no critical point
+    return r;
+  }
   // The gradient's Bernstein coefficients d (c[a+1,b] - c[a,b]) and d (c[a,b+1] - c[a,b]),
   // scanned without building them first.
-  double scale = 0, ulo = INFINITY, uhi = -INFINITY, vlo = INFINITY, vhi = -INFINITY;
+  auto coef = [&](int a, int b) { return coefficients[lattice_index(d, a, b)]; };
+  double ulo = INFINITY, uhi = -INFINITY, vlo = INFINITY, vhi = -INFINITY;
   for (int b = 0; b < d; ++b)
     for (int a = 0; a + b < d; ++a) {
-      const double c = g.coefficient(a, b);
-      const double gu_ab = d * (g.coefficient(a + 1, b) - c),
-                   gv_ab = d * (g.coefficient(a, b + 1) - c);
+      const double c = coef(a, b);
+      const double gu_ab = d * (coef(a + 1, b) - c), gv_ab = d * (coef(a, b + 1) - c);
       ulo = std::min(ulo, gu_ab);
       uhi = std::max(uhi, gu_ab);
       vlo = std::min(vlo, gv_ab);
       vhi = std::max(vhi, gv_ab);
     }
-  scale = std::max({-ulo, uhi, -vlo, vhi});
+  r.scale = std::max({-ulo, uhi, -vlo, vhi});
   // Constant up to rounding: the gradient is round-off of the values (e.g. a constant field
   // converted from Lagrange to Bernstein form).
   double value_scale = 0;
-  for (double x : g.coefficients())
+  for (double x : coefficients)
     value_scale = std::max(value_scale, std::abs(x));
-  if (scale <= opt.constant_tolerance * value_scale) {
+  if (r.scale <= constant_tolerance * value_scale)
+    r.verdict = GradientScreen::kConstant;
+  // Most cells of a smooth field: one gradient component keeps its sign on the whole closed
+  // triangle (its Bernstein coefficients share a sign), so there is no critical point at all.
+  else if (ulo > 0 || uhi < 0 || vlo > 0 || vhi < 0)
+    r.verdict = GradientScreen::kNoZero;
+  return r;
+}
+
+GradientZeros find_gradient_zeros(const BernsteinTriangle &g, const GradientZeroOptions &opt) {
+  GradientZeros out;
+  const int d = g.degree();
+  const GradientScreen screen = screen_gradient(g.coefficients(), d, opt.constant_tolerance);
+  if (screen.verdict == GradientScreen::kConstant) {
     out.constant = true;
     return out;
   }
-  // Most cells of a smooth field: one gradient component keeps its sign on the whole closed
-  // triangle (its Bernstein coefficients share a sign), so there is no critical point at all.
-  if (ulo > 0 || uhi < 0 || vlo > 0 || vhi < 0)
+  if (screen.verdict == GradientScreen::kNoZero)
     return out;
+  const double scale = screen.scale;
   // The search in the reference triangle; where it cannot resolve every zero and the cell is a
   // sliver, once more in the cell's own shape, whose result is kept if it resolves them all.
   // (Neither is preferred a priori: a field that is smooth in the plane is well-conditioned in

@@ -11,6 +11,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <span>
 #include <vector>
 
 namespace hoct {
@@ -50,6 +51,17 @@ struct GradientZeros {
   int64_t unresolved = 0;        // zeros reported uncertified
   bool framed = false;           // found by the search in the cell's own shape
 };
+
+// The cheap first look of find_gradient_zeros at a polynomial's coefficients (canonical lattice
+// order): constant (up to rounding), certainly without a gradient zero (a gradient component's
+// Bernstein coefficients share a sign, or the field is linear), or to be searched. Lets callers
+// skip building the polynomial for most cells of a smooth field.
+struct GradientScreen {
+  enum Verdict { kSearch, kNoZero, kConstant } verdict = kSearch;
+  double scale = 0; // largest |gradient coefficient|
+};
+GradientScreen screen_gradient(std::span<const double> coefficients, int degree,
+                               double constant_tolerance);
 
 GradientZeros find_gradient_zeros(const BernsteinTriangle &g,
                                   const GradientZeroOptions &options = {});

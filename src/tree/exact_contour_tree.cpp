@@ -72,10 +72,19 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
     GradientZeroOptions zero_options;
     zero_options.frame = [&] { return mesh.geometry.frame(cell); };
     for (int64_t c = begin; c < end; ++c) {
+      uint8_t why = 0;
+      for (int k = 0; k < 3; ++k)
+        if (en.degeneracy[topo.cell_edge(c, k)] != kEdgeOk)
+          why |= kDegenerateEdge;
+      // Most cells: no gradient zero, decided on the stored coefficients.
+      if (screen_gradient(field.coefficients(c), field.degree(c), zero_options.constant_tolerance)
+              .verdict == GradientScreen::kNoZero) {
+        fallback[c] = why;
+        continue;
+      }
       const BernsteinTriangle g = field.cell_polynomial(c);
       cell = c;
       const GradientZeros z = find_gradient_zeros(g, zero_options);
-      uint8_t why = 0;
       if (z.constant)
         why |= kConstantCell;
       if (z.budget_exhausted)
@@ -90,9 +99,6 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
           interior[c].push_back({{p.u, p.v}, g(p.u, p.v)});
         }
       }
-      for (int k = 0; k < 3; ++k)
-        if (en.degeneracy[topo.cell_edge(c, k)] != kEdgeOk)
-          why |= kDegenerateEdge;
       fallback[c] = why;
     }
   });
@@ -111,6 +117,10 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
   }
   auto connect_cell = [&](int64_t c, CellNodes &cn, std::vector<int> &interior_idx,
                           std::vector<CellEdgeNode> &cell_edge_nodes, PathCounters &counters) {
+    // Only corners: every sector lies along an edge, nothing to connect inside the cell.
+    if (interior[c].empty() && en.count(topo.cell_edge(c, 0)) == 0 &&
+        en.count(topo.cell_edge(c, 1)) == 0 && en.count(topo.cell_edge(c, 2)) == 0)
+      return;
     const BernsteinTriangle g = field.cell_polynomial(c);
     cn.nodes.clear();
     interior_idx.clear();
