@@ -42,30 +42,34 @@ with tempdir() as tmp:
     R.check(intact("out.json") and intact("out.vtp"), "SIGINT: existing outputs intact")
 
     # SIGTERM while writing: wait until the JSON's temporary file exists, then kill.
-    caught = False
-    for attempt in range(5):
-        proc = start()
-        seen = False
-        while proc.poll() is None:
-            if leftovers(tmp):
-                proc.send_signal(signal.SIGTERM)
-                seen = True
-                break
-            time.sleep(0.0005)
-        rc = proc.wait(60)
-        if not seen:
-            continue  # finished writing between two looks: try again
-        caught = True
-        R.check(rc == 143, f"SIGTERM while writing: exit {rc} (expected 143)")
-        R.check(leftovers(tmp) == [], f"SIGTERM: temporary files left: {leftovers(tmp)}")
+    def sigterm_while_writing(start_run, what):
+        """Starts runs until one is caught with its temporary file present, sends SIGTERM, checks
+        the exit status and that no temporary file is left; returns True if one was caught."""
+        for attempt in range(5):
+            proc = start_run()
+            seen = False
+            while proc.poll() is None:
+                if leftovers(tmp):
+                    proc.send_signal(signal.SIGTERM)
+                    seen = True
+                    break
+                time.sleep(0.0005)
+            rc = proc.wait(60)
+            if not seen:
+                continue  # finished writing between two looks: try again
+            R.check(rc == 143, f"{what}, SIGTERM while writing: exit {rc} (expected 143)")
+            R.check(leftovers(tmp) == [], f"{what} SIGTERM: temporary files left: {leftovers(tmp)}")
+            return True
+        R.check(False, f"{what}: never saw the temporary file while writing")
+        return False
+
+    if sigterm_while_writing(start, "tree"):
         # The JSON is written first; the VTP after it. Whatever was complete was renamed into
         # place whole; nothing is half written.
         js = open(p("out.json")).read()
         R.check(js == old or js.rstrip().endswith("}"), "SIGTERM: out.json old or complete")
         R.check(intact("out.vtp") or open(p("out.vtp")).read().rstrip().endswith("</VTKFile>"),
                 "SIGTERM: out.vtp old or complete")
-        break
-    R.check(caught, "never saw the temporary file while writing")
 
     # Uninterrupted, the same command writes both files completely.
     proc = start()
@@ -86,26 +90,10 @@ with tempdir() as tmp:
     R.check(rc == 130, f"render, SIGINT while drawing: exit {rc} (expected 130)")
     R.check(leftovers(tmp) == [], f"render SIGINT: temporary files left: {leftovers(tmp)}")
     R.check(intact("pic.png"), "render SIGINT: the existing picture is intact")
-    caught = False
-    for attempt in range(5):
-        proc = start_render("pic.svg", "--isolines", "60", "--no-critical-points")
-        seen = False
-        while proc.poll() is None:
-            if leftovers(tmp):
-                proc.send_signal(signal.SIGTERM)
-                seen = True
-                break
-            time.sleep(0.0005)
-        rc = proc.wait(60)
-        if not seen:
-            continue
-        caught = True
-        R.check(rc == 143, f"render, SIGTERM while writing: exit {rc} (expected 143)")
-        R.check(leftovers(tmp) == [], f"render SIGTERM: temporary files left: {leftovers(tmp)}")
+    if sigterm_while_writing(
+            lambda: start_render("pic.svg", "--isolines", "60", "--no-critical-points"), "render"):
         svg = open(p("pic.svg")).read()
         R.check(svg == old or svg.rstrip().endswith("</svg>"), "render SIGTERM: old or complete")
-        break
-    R.check(caught, "render: never saw the temporary file while writing")
 
     # Determinism: byte-identical JSON (without timings) and VTP across runs and thread counts.
     run("generate", "random", "--cells", "3000", "-o", p("r.vtu"))
