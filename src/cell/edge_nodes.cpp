@@ -44,23 +44,23 @@ uint8_t edge_nodes_of(const BernsteinPoly &p, double value_scale, const EdgeNode
   return deg;
 }
 
-// Most edges of a smooth field: the derivative's Bernstein coefficients n (c[i+1] - c[i]) share
-// a strict sign and are not all at rounding level (what edge_nodes_of calls a constant edge), so
-// the edge is strictly monotone: no node, decided without building the polynomials.
+// Most edges of a smooth field are strictly monotone: edge_nodes_of would find a derivative that
+// is neither constant (at rounding level) nor has a root (certainly_rootless, the test
+// find_roots starts with). Decided here without building the polynomials.
 bool monotone(std::span<const double> c) {
   if (c.size() < 2)
     return false;
-  double lo = INFINITY, hi = -INFINITY, dscale = 0, pscale = 0;
-  const double n = static_cast<double>(c.size() - 1);
-  for (std::size_t i = 0; i + 1 < c.size(); ++i) {
-    const double d = n * (c[i + 1] - c[i]);
-    lo = std::min(lo, d);
-    hi = std::max(hi, d);
-    dscale = std::max(dscale, std::abs(d));
+  thread_local std::vector<double> d;
+  d.resize(c.size() - 1);
+  const int n = static_cast<int>(c.size()) - 1;
+  double dscale = 0, pscale = 0;
+  for (int i = 0; i < n; ++i) {
+    d[i] = n * (c[i + 1] - c[i]); // as BernsteinPoly::derivative
+    dscale = std::max(dscale, std::abs(d[i]));
   }
   for (double x : c)
     pscale = std::max(pscale, std::abs(x));
-  return !(dscale <= 1e-12 * pscale) && (lo > 0 || hi < 0);
+  return !(dscale <= 1e-12 * pscale) && certainly_rootless(d);
 }
 
 } // namespace

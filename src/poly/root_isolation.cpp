@@ -100,8 +100,27 @@ double refine_simple(const BernsteinPoly &p, double lo, double hi, int slo) {
 std::vector<Root> find_sign_change_roots(const BernsteinPoly &p, const RootOptions &opt,
                                          bool *identically_zero);
 
+bool certainly_rootless(std::span<const double> c, const RootOptions &opt) {
+  if (c.empty())
+    return false;
+  double scale = 0, lo = c[0], hi = c[0];
+  for (double x : c) {
+    scale = std::max(scale, std::abs(x));
+    lo = std::min(lo, x);
+    hi = std::max(hi, x);
+  }
+  const double level = std::max(opt.near_zero, 0.0) * scale;
+  return scale > 0 && (lo > level || hi < -level);
+}
+
 std::vector<Root> find_roots(const BernsteinPoly &p, const RootOptions &opt,
                              bool *identically_zero) {
+  // No sign change and no tangency possible (the threshold test below, done first).
+  if (certainly_rootless(p.coefficients(), opt)) {
+    if (identically_zero)
+      *identically_zero = false;
+    return {};
+  }
   std::vector<Root> roots = find_sign_change_roots(p, opt, identically_zero);
   if (opt.near_zero <= 0 || p.degree() < 2 || (identically_zero && *identically_zero))
     return roots;

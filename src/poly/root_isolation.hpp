@@ -10,6 +10,7 @@
 
 #include "poly/bernstein_univariate.hpp"
 
+#include <span>
 #include <vector>
 
 namespace hoct {
@@ -37,5 +38,10 @@ struct RootOptions {
 // it returns none and sets *identically_zero (if given).
 std::vector<Root> find_roots(const BernsteinPoly &p, const RootOptions &options = {},
                              bool *identically_zero = nullptr);
+
+// True if the Bernstein coefficients c (degree >= 0) keep |p| above the tangency threshold on
+// [0, 1]: all above near_zero * max|c|, or all below its negative. find_roots then returns no
+// root; callers use it to skip building a polynomial.
+bool certainly_rootless(std::span<const double> c, const RootOptions &options = {});
 
 } // namespace hoct

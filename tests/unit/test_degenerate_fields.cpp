@@ -174,3 +174,32 @@ TEST(DegenerateFields, LargeAndTinyScalesGiveTheSameTree) {
 
 } // namespace
 } // namespace hoct
+
+namespace hoct {
+namespace {
+
+// An edge whose derivative vanishes at a vertex within rounding: along v = 0,
+// f = x^3 / 3 + 1e-14 x + 2 y has f' = x^2 + 1e-14, whose Bernstein coefficients are all
+// positive but whose value at x = 0 is 1e-14 of its scale: root isolation reports a tangency at
+// the vertex, and the edge is degenerate (its cell falls back, counted). The screen that skips
+// monotone edges before building their polynomials must agree (it did not at first: it only
+// asked for coefficients of one sign).
+TEST(DegenerateFields, NearTangentEdgeDerivativeIsDegenerate) {
+  std::mt19937_64 rng(3);
+  const MeshInput in = testing::lagrange_mesh(
+      {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {{0, 1, 2}}, [](int64_t) { return 3; }, nullptr,
+      [](const Vec3 &p) {
+        const double x = p[0];
+        return x * x * x / 3 + 1e-14 * x + 2 * p[1];
+      },
+      rng, false);
+  const TreeResult t = exact_contour_tree(build_mesh(in));
+  double degenerate_edges = -1;
+  for (const auto &[k, v] : t.stats)
+    if (k == "fallback_degenerate_edge")
+      degenerate_edges = v;
+  EXPECT_EQ(degenerate_edges, 1);
+}
+
+} // namespace
+} // namespace hoct
