@@ -67,7 +67,8 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
   const int threads = threads_for(nc, thread_count(opt.threads), opt.cells_per_thread);
   std::vector<int64_t> unresolved_per_thread(threads, 0);
   parallel_for(nc, threads, [&](int64_t begin, int64_t end, int worker) {
-    // Slivers are searched in their own shape (asked for only when a cell needs a search).
+    // The cell shape, asked for only when a sliver's reference-triangle search leaves zeros
+    // unresolved (find_gradient_zeros then retries in that shape).
     int64_t cell = begin;
     GradientZeroOptions zero_options;
     zero_options.frame = [&] { return mesh.geometry.frame(cell); };
