@@ -30,8 +30,9 @@ PipelineResult run_pipeline(const std::string &vtu, int threads, bool with_vtp,
   auto t = clock_type::now();
   TreeResult tree = exact_contour_tree(mesh, eo);
   r.tree = seconds_since(t);
-  r.critical = stat(tree, "time_edge_nodes_s") + stat(tree, "time_interior_critical_points_s");
-  r.connections = stat(tree, "time_connections_s") + stat(tree, "time_fallback_and_chains_s");
+  r.edges = stat(tree, "time_edge_nodes_s");
+  r.cell_work = stat(tree, "time_cells_s");
+  r.assembly = stat(tree, "time_graph_assembly_s");
   r.sweeps = stat(tree, "time_sweeps_s");
   r.merge = stat(tree, "time_merge_s") + stat(tree, "time_output_s");
   r.graph_nodes = static_cast<int64_t>(stat(tree, "graph_nodes"));
@@ -59,9 +60,10 @@ PipelineResult median_of(const std::vector<PipelineResult> &runs) {
       v.push_back(r.*field);
     m.*field = median(std::move(v));
   };
-  for (auto f : {&PipelineResult::read, &PipelineResult::mesh, &PipelineResult::critical,
-                 &PipelineResult::connections, &PipelineResult::sweeps, &PipelineResult::merge,
-                 &PipelineResult::tree, &PipelineResult::write, &PipelineResult::total})
+  for (auto f : {&PipelineResult::read, &PipelineResult::mesh, &PipelineResult::edges,
+                 &PipelineResult::cell_work, &PipelineResult::assembly, &PipelineResult::sweeps,
+                 &PipelineResult::merge, &PipelineResult::tree, &PipelineResult::write,
+                 &PipelineResult::total})
     med(f);
   return m;
 }

@@ -12,16 +12,18 @@
 namespace hoct::bench {
 
 struct PipelineResult {
-  double read = 0, mesh = 0;                                   // input
-  double critical = 0, connections = 0, sweeps = 0, merge = 0; // exact_contour_tree's phases
-  double tree = 0;                                             // exact_contour_tree as a whole
-  double write = 0;                                            // contraction, branches, files
-  double total = 0;                                            // read .. write
+  double read = 0, mesh = 0; // input
+  // exact_contour_tree's phases: edge nodes, the cells (interior critical points and certified
+  // connections, one pass), graph assembly (gathering, fallback cells, edge chains), sweeps, merge.
+  double edges = 0, cell_work = 0, assembly = 0, sweeps = 0, merge = 0;
+  double tree = 0;  // exact_contour_tree as a whole
+  double write = 0; // contraction, branches, files
+  double total = 0; // read .. write
   int64_t cells = 0, graph_nodes = 0;
   std::size_t nodes = 0; // tree nodes after the flat-region contraction
   double fallback_cells = 0;
 
-  double cell_phase() const { return critical + connections; }
+  double cell_phase() const { return edges + cell_work + assembly; }
 };
 
 PipelineResult run_pipeline(const std::string &vtu, int threads, bool with_vtp,

@@ -113,12 +113,12 @@ PyTree compute_tree(const PyMesh &m, const std::string &method, int levels, int 
 
 py::dict merge_tree_dict(const PyTree &t, bool join) {
   // The join (split) tree of the contour tree's nodes: parent of each node (-1 at the root).
-  std::vector<std::pair<int64_t, int64_t>> edges;
+  std::vector<GraphEdge> edges;
   std::vector<double> values;
   for (const auto &n : t.tree.nodes)
     values.push_back(n.value);
   for (const auto &a : t.tree.arcs)
-    edges.emplace_back(a[0], a[1]);
+    edges.push_back({a[0], a[1]});
   const ScalarGraph g(values, edges);
   const MergeTree mt = join ? join_tree(g) : split_tree(g);
   py::dict d;

@@ -70,7 +70,7 @@ void run_tree(const TreeOptions &o) {
     t2 = clock::now();
     tree = pl_contour_tree(pl, o.augmented,
                            o.linear ? "linear" : "refine k=" + std::to_string(o.refine),
-                           /*with_graph=*/!o.vtp.empty());
+                           /*with_graph=*/!o.vtp.empty(), o.threads);
   } else {
     ExactTreeOptions eo;
     eo.augmented = o.augmented;

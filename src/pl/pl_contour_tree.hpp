@@ -10,7 +10,9 @@
 namespace hoct {
 
 // With `with_graph`, the mesh's 1-skeleton is kept as the result's geometric graph (to draw arcs).
+// `threads` (0: all cores) >= 2 runs the join and the split sweep at once on large meshes (the
+// result does not depend on it).
 TreeResult pl_contour_tree(const PlMesh &mesh, bool augmented, const std::string &method,
-                           bool with_graph = false);
+                           bool with_graph = false, int threads = 1);
 
 } // namespace hoct

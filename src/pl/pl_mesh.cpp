@@ -5,12 +5,12 @@
 namespace hoct {
 
 ScalarGraph PlMesh::graph() const {
-  std::vector<std::pair<int64_t, int64_t>> edges;
+  std::vector<GraphEdge> edges;
   edges.reserve(triangles.size() * 3);
   for (const auto &t : triangles)
     for (int k = 0; k < 3; ++k) {
       const int64_t a = t[k], b = t[(k + 1) % 3];
-      edges.emplace_back(std::min(a, b), std::max(a, b));
+      edges.push_back({std::min(a, b), std::max(a, b)});
     }
   return ScalarGraph(values, edges);
 }

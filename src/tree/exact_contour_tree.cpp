@@ -5,8 +5,9 @@
 #include "pl/cell_refinement.hpp"
 #include "poly/gradient_zeros.hpp"
 #include "tree/contour_tree.hpp"
-#include "tree/merge_tree.hpp"
+#include "tree/sweep_contour_tree.hpp"
 #include "util/parallel_for.hpp"
+#include "util/uninitialized_vector.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -32,13 +33,119 @@ enum FallbackReason : uint8_t {
   kCertificationFailed = 64,
 };
 
-// Where a global node comes from, for positions and reports.
+// Where a global node comes from, for positions and reports (trivial: see UninitializedVector).
 struct NodeSource {
   int64_t cell;
   Vec2 uv;
   NodeLocation location;
-  bool fallback = false; // in or on a degenerate cell's PL fallback
+  bool fallback; // in or on a degenerate cell's PL fallback
 };
+
+// A graph edge with its geometry (interior polyline points).
+struct GeoEdge {
+  int64_t a, b;
+  std::vector<Vec3> inner;
+};
+
+// What the cells of one chunk contribute to the graph.
+struct CellChunk {
+  struct Node {
+    int64_t cell;
+    Vec2 uv;
+    double value;
+  };
+  std::vector<Node> nodes; // interior critical points of the chunk's regular cells, in cell order
+  // Connections; node refs >= 0 are global ids, -1 - i is the chunk's i-th interior node.
+  std::vector<GraphEdge> join, split;
+  std::vector<GeoEdge> geo; // with arc geometry: each connection's path (per cell join, split)
+  int64_t unresolved = 0;   // uncertified interior zeros
+  PathCounters counters;
+};
+
+// Per-thread buffers of the cell phase, reused from cell to cell.
+struct CellScratch {
+  std::vector<InteriorCritical> critical; // the cell's certified interior critical points
+  CellNodes cn;
+  std::vector<int> interior_idx;
+  std::vector<CellEdgeNode> edge_nodes;
+};
+
+// The certified connections of regular cell c (interior critical points in scratch.critical),
+// appended with its interior nodes to `out`; or, when a sector cannot be connected, the reason
+// for falling back (nothing appended).
+uint8_t connect_cell(const Mesh &mesh, const EdgeNodes &en, int64_t c,
+                     std::optional<BernsteinTriangle> &g, bool arc_geometry, CellScratch &scratch,
+                     CellChunk &out) {
+  const Topology &topo = mesh.topology;
+  const Field &field = mesh.field;
+  const int64_t edge_base = topo.num_vertices();
+  // Only corners: every sector lies along an edge, nothing to connect inside the cell.
+  if (scratch.critical.empty() && en.count(topo.cell_edge(c, 0)) == 0 &&
+      en.count(topo.cell_edge(c, 1)) == 0 && en.count(topo.cell_edge(c, 2)) == 0)
+    return 0;
+  if (!g)
+    g.emplace(field.cell_polynomial(c));
+  CellNodes &cn = scratch.cn;
+  cn.nodes.clear();
+  scratch.interior_idx.clear();
+  scratch.edge_nodes.clear();
+  static constexpr double kCorner[3][2] = {{0, 0}, {1, 0}, {0, 1}};
+  for (int k = 0; k < 3; ++k) {
+    const int64_t v = topo.cell_vertices(c)[k];
+    cn.nodes.push_back({{kCorner[k][0], kCorner[k][1]}, field.vertex_value(v), v});
+  }
+  for (int k = 0; k < 3; ++k) {
+    const int64_t e = topo.cell_edge(c, k);
+    const bool rev = topo.edge_reversed(c, k);
+    auto &chain = cn.chain[k];
+    auto &cs = cn.chain_s[k];
+    chain.assign(1, k);
+    cs.assign(1, 0.0);
+    const int64_t n = en.count(e);
+    for (int64_t i = 0; i < n; ++i) {
+      const int64_t gi = rev ? en.offset[e] + n - 1 - i : en.offset[e] + i;
+      const EdgeNode &node = en.nodes[gi];
+      const double s = rev ? 1 - node.t : node.t;
+      const int idx = static_cast<int>(cn.nodes.size());
+      cn.nodes.push_back({point_on_edge(k, s), node.value, edge_base + gi});
+      chain.push_back(idx);
+      cs.push_back(s);
+      scratch.edge_nodes.push_back({k, s, node.second, idx});
+    }
+    chain.push_back((k + 1) % 3);
+    cs.push_back(1.0);
+  }
+  for (std::size_t i = 0; i < scratch.critical.size(); ++i) {
+    scratch.interior_idx.push_back(static_cast<int>(cn.nodes.size()));
+    cn.nodes.push_back(
+        {scratch.critical[i].uv, scratch.critical[i].value, -1 - static_cast<int64_t>(i)});
+  }
+  const SectorResult r =
+      connect_sectors(*g, cn, scratch.interior_idx, scratch.edge_nodes, out.counters, arc_geometry);
+  if (r.failed || r.degenerate)
+    return r.failed ? kCertificationFailed : kDegenerateEdgeNode;
+  // The cell's interior node i becomes the chunk's node first + i.
+  const int64_t first = static_cast<int64_t>(out.nodes.size());
+  for (const InteriorCritical &p : scratch.critical)
+    out.nodes.push_back({c, p.uv, p.value});
+  auto ref = [&](int64_t r) { return r >= 0 ? r : -1 - (first + (-1 - r)); };
+  for (auto [a, b] : r.join)
+    out.join.push_back({ref(a), ref(b)});
+  for (auto [a, b] : r.split)
+    out.split.push_back({ref(a), ref(b)});
+  if (arc_geometry)
+    for (int side = 0; side < 2; ++side) {
+      const auto &edges = side == 0 ? r.join : r.split;
+      const auto &paths = side == 0 ? r.join_paths : r.split_paths;
+      for (std::size_t i = 0; i < edges.size(); ++i) {
+        std::vector<Vec3> inner;
+        for (std::size_t k = 1; k + 1 < paths[i].size(); ++k)
+          inner.push_back(mesh.geometry.position(c, paths[i][k][0], paths[i][k][1]));
+        out.geo.push_back({ref(edges[i].first), ref(edges[i].second), std::move(inner)});
+      }
+    }
+  return 0;
+}
 
 } // namespace
 
@@ -60,231 +167,142 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
   const auto t1 = clock_type::now();
   report("edge critical points", t0, t1);
 
-  // Pass 1: interior critical points of every cell; degeneracy decisions.
-  std::vector<std::vector<InteriorCritical>> interior(nc);
+  // The cell phase, one pass per cell: interior critical points, degeneracy decisions, and the
+  // certified connections of every regular cell. Cells go in fixed contiguous chunks, each
+  // collecting its interior nodes and connections in flat buffers; combined in chunk (= cell)
+  // order, the result does not depend on the thread count.
   std::vector<uint8_t> fallback(nc, 0);
-  int64_t unresolved_zeros = 0;
   const int threads = threads_for(nc, thread_count(opt.threads), opt.cells_per_thread);
-  std::vector<int64_t> unresolved_per_thread(threads, 0);
-  parallel_for(nc, threads, [&](int64_t begin, int64_t end, int worker) {
+  const int64_t chunks = threads > 1 ? std::min<int64_t>(nc, int64_t{threads} * 16) : 1;
+  std::vector<CellChunk> chunk_out(static_cast<std::size_t>(chunks));
+  parallel_chunks(nc, chunks, threads, [&](int64_t k, int64_t begin, int64_t end, int) {
+    CellChunk &out = chunk_out[k];
     // The cell shape, asked for only when a sliver's reference-triangle search leaves zeros
     // unresolved (find_gradient_zeros then retries in that shape).
     int64_t cell = begin;
     GradientZeroOptions zero_options;
     zero_options.frame = [&] { return mesh.geometry.frame(cell); };
+    CellScratch scratch;
     for (int64_t c = begin; c < end; ++c) {
       uint8_t why = 0;
-      for (int k = 0; k < 3; ++k)
-        if (en.degeneracy[topo.cell_edge(c, k)] != kEdgeOk)
+      for (int j = 0; j < 3; ++j)
+        if (en.degeneracy[topo.cell_edge(c, j)] != kEdgeOk)
           why |= kDegenerateEdge;
+      scratch.critical.clear();
+      std::optional<BernsteinTriangle> g;
       // Most cells: no gradient zero, decided on the stored coefficients.
       if (screen_gradient(field.coefficients(c), field.degree(c), zero_options.constant_tolerance)
-              .verdict == GradientScreen::kNoZero) {
-        fallback[c] = why;
-        continue;
-      }
-      const BernsteinTriangle g = field.cell_polynomial(c);
-      cell = c;
-      const GradientZeros z = find_gradient_zeros(g, zero_options);
-      if (z.constant)
-        why |= kConstantCell;
-      if (z.budget_exhausted)
-        why |= kCriticalCurve;
-      for (const GradientZero &p : z.zeros) {
-        if (!p.certified) {
-          why |= kUncertifiedZero;
-          ++unresolved_per_thread[worker];
-        } else if (p.near_boundary) {
-          why |= kZeroNearBoundary;
-        } else {
-          interior[c].push_back({{p.u, p.v}, g(p.u, p.v)});
+              .verdict != GradientScreen::kNoZero) {
+        g.emplace(field.cell_polynomial(c));
+        cell = c;
+        const GradientZeros z = find_gradient_zeros(*g, zero_options);
+        if (z.constant)
+          why |= kConstantCell;
+        if (z.budget_exhausted)
+          why |= kCriticalCurve;
+        for (const GradientZero &p : z.zeros) {
+          if (!p.certified) {
+            why |= kUncertifiedZero;
+            ++out.unresolved;
+          } else if (p.near_boundary) {
+            why |= kZeroNearBoundary;
+          } else {
+            scratch.critical.push_back({{p.u, p.v}, (*g)(p.u, p.v)});
+          }
         }
       }
-      fallback[c] = why;
+      fallback[c] = why ? why : connect_cell(mesh, en, c, g, opt.arc_geometry, scratch, out);
     }
   });
-  for (int64_t u : unresolved_per_thread)
-    unresolved_zeros += u;
-  const auto t2 = clock_type::now();
-  report("interior critical points", t1, t2);
-
-  // Pass 2: local connections of every non-degenerate cell, in node references.
-  std::vector<std::pair<int64_t, int64_t>> join_edges, split_edges;
-  std::vector<std::vector<std::pair<int64_t, int64_t>>> cell_join(nc), cell_split(nc);
-  std::vector<std::vector<std::vector<Vec2>>> cell_join_paths, cell_split_paths;
-  if (opt.arc_geometry) {
-    cell_join_paths.resize(nc);
-    cell_split_paths.resize(nc);
-  }
-  auto connect_cell = [&](int64_t c, CellNodes &cn, std::vector<int> &interior_idx,
-                          std::vector<CellEdgeNode> &cell_edge_nodes, PathCounters &counters) {
-    // Only corners: every sector lies along an edge, nothing to connect inside the cell.
-    if (interior[c].empty() && en.count(topo.cell_edge(c, 0)) == 0 &&
-        en.count(topo.cell_edge(c, 1)) == 0 && en.count(topo.cell_edge(c, 2)) == 0)
-      return;
-    const BernsteinTriangle g = field.cell_polynomial(c);
-    cn.nodes.clear();
-    interior_idx.clear();
-    cell_edge_nodes.clear();
-    static constexpr double kCorner[3][2] = {{0, 0}, {1, 0}, {0, 1}};
-    for (int k = 0; k < 3; ++k) {
-      const int64_t v = topo.cell_vertices(c)[k];
-      cn.nodes.push_back({{kCorner[k][0], kCorner[k][1]}, field.vertex_value(v), v});
-    }
-    for (int k = 0; k < 3; ++k) {
-      const int64_t e = topo.cell_edge(c, k);
-      const bool rev = topo.edge_reversed(c, k);
-      auto &chain = cn.chain[k];
-      auto &cs = cn.chain_s[k];
-      chain.assign(1, k);
-      cs.assign(1, 0.0);
-      const int64_t n = en.count(e);
-      for (int64_t i = 0; i < n; ++i) {
-        const int64_t gi = rev ? en.offset[e] + n - 1 - i : en.offset[e] + i;
-        const EdgeNode &node = en.nodes[gi];
-        const double s = rev ? 1 - node.t : node.t;
-        const int idx = static_cast<int>(cn.nodes.size());
-        cn.nodes.push_back({point_on_edge(k, s), node.value, edge_base + gi});
-        chain.push_back(idx);
-        cs.push_back(s);
-        cell_edge_nodes.push_back({k, s, node.second, idx});
-      }
-      chain.push_back((k + 1) % 3);
-      cs.push_back(1.0);
-    }
-    for (std::size_t i = 0; i < interior[c].size(); ++i) {
-      interior_idx.push_back(static_cast<int>(cn.nodes.size()));
-      cn.nodes.push_back({interior[c][i].uv, interior[c][i].value, -1 - static_cast<int64_t>(i)});
-    }
-    const SectorResult r =
-        connect_sectors(g, cn, interior_idx, cell_edge_nodes, counters, opt.arc_geometry);
-    if (r.failed || r.degenerate) {
-      fallback[c] = r.failed ? kCertificationFailed : kDegenerateEdgeNode;
-      return;
-    }
-    cell_join[c] = r.join;
-    if (opt.arc_geometry) {
-      cell_join_paths[c] = r.join_paths;
-      cell_split_paths[c] = r.split_paths;
-    }
-    cell_split[c] = r.split;
-  };
-  std::vector<PathCounters> thread_counters(threads);
-  parallel_for(nc, threads, [&](int64_t begin, int64_t end, int worker) {
-    PathCounters &counters = thread_counters[worker];
-    CellNodes cn;
-    std::vector<int> interior_idx;
-    std::vector<CellEdgeNode> cell_edge_nodes;
-    for (int64_t c = begin; c < end; ++c) {
-      if (fallback[c])
-        continue;
-      connect_cell(c, cn, interior_idx, cell_edge_nodes, counters);
-    }
-  });
-  PathCounters counters;
-  for (const auto &t : thread_counters) {
-    counters.direct += t.direct;
-    counters.traced += t.traced;
-    counters.failed += t.failed;
-    counters.steps += t.steps;
-  }
   const auto t3 = clock_type::now();
-  report("certified connections", t2, t3);
+  report("cells: interior critical points and certified connections", t1, t3);
 
-  // Graph edges with their geometry (interior polyline points), when asked for.
-  struct GeoEdge {
-    int64_t a, b;
-    std::vector<Vec3> inner;
-  };
-  std::vector<GeoEdge> geo_edges;
-
-  // Global ids: vertices, edge nodes, then the interior nodes of regular cells, then extra
-  // lattice nodes on edges of fallback cells, then fallback cells' interior sub-vertices.
+  // Global ids: vertices, edge nodes, then the interior nodes of regular cells (in cell order),
+  // then extra lattice nodes on edges of fallback cells, then fallback cells' sub-vertices.
+  std::vector<int64_t> node_base(chunks), join_base(chunks), split_base(chunks);
   int64_t next = edge_base + static_cast<int64_t>(en.nodes.size());
-  std::vector<int64_t> interior_base(nc, -1);
-  for (int64_t c = 0; c < nc; ++c)
-    if (!fallback[c]) {
-      interior_base[c] = next;
-      next += static_cast<int64_t>(interior[c].size());
-    }
+  std::size_t cell_join = 0, cell_split = 0;
+  PathCounters counters;
+  int64_t unresolved_zeros = 0;
+  for (int64_t k = 0; k < chunks; ++k) {
+    const CellChunk &ch = chunk_out[k];
+    node_base[k] = next;
+    next += static_cast<int64_t>(ch.nodes.size());
+    join_base[k] = static_cast<int64_t>(cell_join);
+    cell_join += ch.join.size();
+    split_base[k] = static_cast<int64_t>(cell_split);
+    cell_split += ch.split.size();
+    counters.direct += ch.counters.direct;
+    counters.traced += ch.counters.traced;
+    counters.failed += ch.counters.failed;
+    counters.steps += ch.counters.steps;
+    unresolved_zeros += ch.unresolved;
+  }
+  const int64_t interior_nodes = next - edge_base - static_cast<int64_t>(en.nodes.size());
+  // Large arrays, filled in parallel without being zeroed first; room for the edge chains.
+  const std::size_t chain_edges = static_cast<std::size_t>(ne + en.offset[ne]);
+  UninitializedVector<GraphEdge> join_edges, split_edges;
+  join_edges.reserve(cell_join + chain_edges);
+  split_edges.reserve(cell_split + chain_edges);
+  join_edges.resize(cell_join);
+  split_edges.resize(cell_split);
   std::vector<double> values(next);
-  std::vector<NodeSource> source(next);
+  UninitializedVector<NodeSource> source;
+  source.resize(static_cast<std::size_t>(next));
   // Sources and values of vertices and edge nodes.
-  {
-    parallel_for(nv, threads, [&](int64_t begin, int64_t end, int) {
-      for (int64_t v = begin; v < end; ++v) {
-        values[v] = field.vertex_value(v);
-        source[v] = {topo.vertex_cell(v), point_on_edge(topo.vertex_corner(v), 0.0),
-                     NodeLocation::Vertex};
-      }
-    });
-    parallel_for(ne, threads, [&](int64_t begin, int64_t end, int) {
-      for (int64_t e = begin; e < end; ++e) {
-        if (en.offset[e] == en.offset[e + 1])
-          continue;
-        const int64_t c = topo.edge_cells_begin(e)[0];
-        int k = 0;
-        while (topo.cell_edge(c, k) != e)
-          ++k;
-        for (int64_t i = en.offset[e]; i < en.offset[e + 1]; ++i) {
-          const double s = topo.edge_reversed(c, k) ? 1 - en.nodes[i].t : en.nodes[i].t;
-          values[edge_base + i] = en.nodes[i].value;
-          source[edge_base + i] = {c, point_on_edge(k, s), NodeLocation::Edge};
-        }
-      }
-    });
-  }
-  // Interior nodes and the cells' connections in global ids: each cell writes its own slots
-  // (offsets by prefix sums), so this runs in parallel with the same result.
-  {
-    std::vector<int64_t> join_off(nc + 1, 0), split_off(nc + 1, 0);
-    for (int64_t c = 0; c < nc; ++c) {
-      join_off[c + 1] = join_off[c] + (fallback[c] ? 0 : static_cast<int64_t>(cell_join[c].size()));
-      split_off[c + 1] =
-          split_off[c] + (fallback[c] ? 0 : static_cast<int64_t>(cell_split[c].size()));
+  parallel_for(nv, threads, [&](int64_t begin, int64_t end, int) {
+    for (int64_t v = begin; v < end; ++v) {
+      values[v] = field.vertex_value(v);
+      source[v] = {topo.vertex_cell(v), point_on_edge(topo.vertex_corner(v), 0.0),
+                   NodeLocation::Vertex, false};
     }
-    join_edges.resize(static_cast<std::size_t>(join_off[nc]));
-    split_edges.resize(static_cast<std::size_t>(split_off[nc]));
-    parallel_for(nc, threads, [&](int64_t begin, int64_t end, int) {
-      for (int64_t c = begin; c < end; ++c) {
-        if (fallback[c])
-          continue;
-        for (std::size_t i = 0; i < interior[c].size(); ++i) {
-          values[interior_base[c] + i] = interior[c][i].value;
-          source[interior_base[c] + i] = {c, interior[c][i].uv, NodeLocation::Interior};
-        }
-        auto resolve = [&](int64_t ref) { return ref >= 0 ? ref : interior_base[c] + (-1 - ref); };
-        int64_t j = join_off[c];
-        for (auto [a, b] : cell_join[c])
-          join_edges[j++] = {resolve(a), resolve(b)};
-        j = split_off[c];
-        for (auto [a, b] : cell_split[c])
-          split_edges[j++] = {resolve(a), resolve(b)};
-      }
-    });
-  }
-  if (opt.arc_geometry)
-    for (int64_t c = 0; c < nc; ++c) {
-      if (fallback[c])
+  });
+  parallel_for(ne, threads, [&](int64_t begin, int64_t end, int) {
+    for (int64_t e = begin; e < end; ++e) {
+      if (en.offset[e] == en.offset[e + 1])
         continue;
-      auto resolve = [&](int64_t ref) { return ref >= 0 ? ref : interior_base[c] + (-1 - ref); };
-      for (int side = 0; side < 2; ++side) {
-        const auto &edges = side == 0 ? cell_join[c] : cell_split[c];
-        const auto &paths = side == 0 ? cell_join_paths[c] : cell_split_paths[c];
-        for (std::size_t i = 0; i < edges.size(); ++i) {
-          std::vector<Vec3> inner;
-          for (std::size_t k = 1; k + 1 < paths[i].size(); ++k)
-            inner.push_back(mesh.geometry.position(c, paths[i][k][0], paths[i][k][1]));
-          geo_edges.push_back({resolve(edges[i].first), resolve(edges[i].second), inner});
-        }
+      const int64_t c = topo.edge_cells_begin(e)[0];
+      int k = 0;
+      while (topo.cell_edge(c, k) != e)
+        ++k;
+      for (int64_t i = en.offset[e]; i < en.offset[e + 1]; ++i) {
+        const double s = topo.edge_reversed(c, k) ? 1 - en.nodes[i].t : en.nodes[i].t;
+        values[edge_base + i] = en.nodes[i].value;
+        source[edge_base + i] = {c, point_on_edge(k, s), NodeLocation::Edge, false};
       }
     }
+  });
+  // Interior nodes and the cells' connections in global ids, each chunk into its own slots.
+  parallel_for(chunks, threads, [&](int64_t begin, int64_t end, int) {
+    for (int64_t k = begin; k < end; ++k) {
+      const CellChunk &ch = chunk_out[k];
+      const int64_t base = node_base[k];
+      for (std::size_t i = 0; i < ch.nodes.size(); ++i) {
+        values[base + i] = ch.nodes[i].value;
+        source[base + i] = {ch.nodes[i].cell, ch.nodes[i].uv, NodeLocation::Interior, false};
+      }
+      auto resolve = [&](const GraphEdge &e) {
+        return GraphEdge{e.a >= 0 ? e.a : base + (-1 - e.a), e.b >= 0 ? e.b : base + (-1 - e.b)};
+      };
+      for (std::size_t i = 0; i < ch.join.size(); ++i)
+        join_edges[join_base[k] + i] = resolve(ch.join[i]);
+      for (std::size_t i = 0; i < ch.split.size(); ++i)
+        split_edges[split_base[k] + i] = resolve(ch.split[i]);
+    }
+  });
+  // Graph edges with their geometry (interior polyline points), when asked for.
+  std::vector<GeoEdge> geo_edges;
+  for (int64_t k = 0; k < chunks; ++k)
+    for (GeoEdge &e : chunk_out[k].geo) {
+      const int64_t base = node_base[k];
+      geo_edges.push_back({e.a >= 0 ? e.a : base + (-1 - e.a), e.b >= 0 ? e.b : base + (-1 - e.b),
+                           std::move(e.inner)});
+    }
+  chunk_out = {};
 
   // Fallback cells: k x k refinement through the edge nodes, PL rule (all sub-edges in both
   // graphs). Lattice points on an edge are shared by both cells of the edge.
-  int max_degree = 1;
-  for (int64_t c = 0; c < nc; ++c)
-    max_degree = std::max(max_degree, field.degree(c));
+  const int max_degree = std::max(1, field.max_degree());
   const int K = opt.fallback_refinement > 0 ? opt.fallback_refinement : std::max(4, 2 * max_degree);
   std::map<std::pair<int64_t, int>, int64_t> lattice_node; // (edge, step from lo) -> id
   auto add_node = [&](double value, int64_t cell, const Vec2 &uv, NodeLocation loc) {
@@ -359,10 +377,10 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
       source[id].fallback = true;
     for (const auto &t : cr.triangles)
       for (int j = 0; j < 3; ++j) {
-        join_edges.emplace_back(ids[t[j]], ids[t[(j + 1) % 3]]);
+        join_edges.push_back({ids[t[j]], ids[t[(j + 1) % 3]]});
         if (opt.arc_geometry)
           geo_edges.push_back({ids[t[j]], ids[t[(j + 1) % 3]], {}});
-        split_edges.emplace_back(ids[t[j]], ids[t[(j + 1) % 3]]);
+        split_edges.push_back({ids[t[j]], ids[t[(j + 1) % 3]]});
       }
   }
 
@@ -371,7 +389,6 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
   // offset: written in parallel.
   if (lattice_node.empty() && !opt.arc_geometry) {
     const std::size_t base_join = join_edges.size(), base_split = split_edges.size();
-    const std::size_t chain_edges = static_cast<std::size_t>(ne + en.offset[ne]);
     join_edges.resize(base_join + chain_edges);
     split_edges.resize(base_split + chain_edges);
     parallel_for(ne, threads, [&](int64_t begin, int64_t end, int) {
@@ -388,7 +405,6 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
       }
     });
   } else {
-    const std::size_t chain_edges = static_cast<std::size_t>(ne + en.offset[ne]);
     join_edges.reserve(join_edges.size() + chain_edges);
     split_edges.reserve(split_edges.size() + chain_edges);
     std::vector<std::pair<double, int64_t>> chain;
@@ -423,34 +439,25 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
           }
           geo_edges.push_back({chain[i].second, chain[i + 1].second, std::move(inner)});
         }
-        join_edges.emplace_back(chain[i].second, chain[i + 1].second);
-        split_edges.emplace_back(chain[i].second, chain[i + 1].second);
+        join_edges.push_back({chain[i].second, chain[i + 1].second});
+        split_edges.push_back({chain[i].second, chain[i + 1].second});
       }
     }
   }
   const auto t4 = clock_type::now();
-  report("degenerate-cell fallback and edge chains", t3, t4);
+  report("graph assembly: fallback cells and edge chains", t3, t4);
 
-  // Global sweeps and merge.
-  // The join and the split sweep are independent: one thread each when there are two.
-  std::optional<ScalarGraph> jg, sg;
-  MergeTree jt, st;
+  // Global sweeps and merge (in rank space; the join and the split sweep on a thread each when
+  // there are two).
   const int sweep_threads = threads_for(static_cast<int64_t>(values.size()),
                                         thread_count(opt.threads), 8 * opt.cells_per_thread);
-  parallel_for(2, std::min(sweep_threads, 2), [&](int64_t begin, int64_t end, int) {
-    for (int64_t k = begin; k < end; ++k)
-      if (k == 0) {
-        jg.emplace(values, join_edges);
-        jt = join_tree(*jg);
-      } else {
-        sg.emplace(values, split_edges);
-        st = split_tree(*sg);
-      }
-  });
-  const auto t5 = clock_type::now();
-  report("join and split sweeps", t4, t5);
-  const ContourTree aug = merge_trees(*jg, jt, st);
-  const ContourTree ct = opt.augmented ? aug : reduce(aug);
+  SweepTimings sweep_time;
+  const ContourTree ct = sweep_contour_tree(values, join_edges, split_edges, opt.augmented,
+                                            sweep_threads, &sweep_time);
+  if (opt.progress) {
+    opt.progress("join and split sweeps", sweep_time.order + sweep_time.sweeps);
+    opt.progress("merge", sweep_time.merge);
+  }
   const auto t6 = clock_type::now();
 
   TreeResult r;
@@ -487,10 +494,6 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
   }
   const auto t7 = clock_type::now();
 
-  int64_t interior_nodes = 0;
-  for (int64_t c = 0; c < nc; ++c)
-    if (!fallback[c])
-      interior_nodes += static_cast<int64_t>(interior[c].size());
   r.add_stat("cells", static_cast<double>(nc));
   r.add_stat("graph_nodes", static_cast<double>(values.size()));
   r.add_stat("edge_critical_points", static_cast<double>(en.nodes.size()));
@@ -508,11 +511,11 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
     r.add_stat(reason_names[b], static_cast<double>(reason_count[b]));
   r.add_stat("unresolved_interior_zeros", static_cast<double>(unresolved_zeros));
   r.add_stat("time_edge_nodes_s", seconds(t0, t1));
-  r.add_stat("time_interior_critical_points_s", seconds(t1, t2));
-  r.add_stat("time_connections_s", seconds(t2, t3));
-  r.add_stat("time_fallback_and_chains_s", seconds(t3, t4));
-  r.add_stat("time_sweeps_s", seconds(t4, t5));
-  r.add_stat("time_merge_s", seconds(t5, t6));
+  // Interior critical points and certified connections run in one pass per cell.
+  r.add_stat("time_cells_s", seconds(t1, t3));
+  r.add_stat("time_graph_assembly_s", seconds(t3, t4));
+  r.add_stat("time_sweeps_s", sweep_time.order + sweep_time.sweeps);
+  r.add_stat("time_merge_s", sweep_time.merge);
   r.add_stat("time_output_s", seconds(t6, t7));
   return r;
 }

@@ -6,8 +6,7 @@
 
 namespace hoct {
 
-ScalarGraph::ScalarGraph(std::vector<double> values,
-                         const std::vector<std::pair<int64_t, int64_t>> &edges)
+ScalarGraph::ScalarGraph(std::vector<double> values, std::span<const GraphEdge> edges)
     : values_(std::move(values)) {
   const int64_t n = static_cast<int64_t>(values_.size());
   // Bucket the edges by their lower endpoint (counting sort, linear), then sort and deduplicate

@@ -6,7 +6,6 @@
 
 #include <cstdint>
 #include <span>
-#include <utility>
 #include <vector>
 
 namespace hoct {
@@ -16,11 +15,17 @@ inline bool node_less(double va, int64_t a, double vb, int64_t b) {
   return va < vb || (va == vb && a < b);
 }
 
+// An undirected edge between nodes a and b (trivial, so that large edge arrays can be filled in
+// parallel without being zeroed first).
+struct GraphEdge {
+  int64_t a, b;
+};
+
 class ScalarGraph {
 public:
   // Builds the adjacency (CSR) of n nodes from undirected edges; self-loops and duplicate edges
-  // are dropped.
-  ScalarGraph(std::vector<double> values, const std::vector<std::pair<int64_t, int64_t>> &edges);
+  // are dropped. The result does not depend on the order of the edges.
+  ScalarGraph(std::vector<double> values, std::span<const GraphEdge> edges);
 
   int64_t size() const { return static_cast<int64_t>(values_.size()); }
   double value(int64_t v) const { return values_[v]; }

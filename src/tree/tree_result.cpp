@@ -28,10 +28,10 @@ std::array<int64_t, 4> TreeResult::type_counts() const {
 }
 
 std::vector<PersistencePair> tree_pairs(const ContourTree &tree) {
-  std::vector<std::pair<int64_t, int64_t>> edges;
+  std::vector<GraphEdge> edges;
   edges.reserve(tree.arcs.size());
   for (const auto &a : tree.arcs)
-    edges.emplace_back(a[0], a[1]);
+    edges.push_back({a[0], a[1]});
   // Tree nodes are ascending in the total order, so their indices keep its tie-breaking.
   const ScalarGraph g(tree.values, edges);
   return persistence_diagram(g).pairs;

@@ -25,15 +25,19 @@ inline int threads_for(int64_t n, int threads, int64_t grain) {
   return static_cast<int>(std::min<int64_t>(std::max(1, threads), useful));
 }
 
-// Calls body(begin, end, worker) on disjoint chunks of [0, n); rethrows the first exception.
-template <class Body> void parallel_for(int64_t n, int threads, const Body &body) {
-  threads = static_cast<int>(std::min<int64_t>(std::max(1, threads), std::max<int64_t>(n, 1)));
+// Calls body(chunk, begin, end, worker) for each of `chunks` contiguous chunks of [0, n)
+// (chunk k is [n k / chunks, n (k + 1) / chunks)), the chunks handed out to `threads` threads in
+// turn; rethrows the first exception. Results written per chunk and combined in chunk order do
+// not depend on the thread count.
+template <class Body>
+void parallel_chunks(int64_t n, int64_t chunks, int threads, const Body &body) {
+  chunks = std::max<int64_t>(chunks, 1);
+  threads = static_cast<int>(std::min<int64_t>(std::max(1, threads), chunks));
   if (threads <= 1) {
-    body(int64_t{0}, n, 0);
+    for (int64_t c = 0; c < chunks; ++c)
+      body(c, n * c / chunks, n * (c + 1) / chunks, 0);
     return;
   }
-  // More chunks than threads balance uneven cells (degenerate cells cost more).
-  const int64_t chunks = std::min<int64_t>(n, int64_t{threads} * 16);
   std::vector<std::exception_ptr> errors(threads);
   std::vector<std::thread> pool;
   std::atomic<int64_t> next{0};
@@ -41,7 +45,7 @@ template <class Body> void parallel_for(int64_t n, int threads, const Body &body
     pool.emplace_back([&, t] {
       try {
         for (int64_t c; (c = next.fetch_add(1)) < chunks;)
-          body(n * c / chunks, n * (c + 1) / chunks, t);
+          body(c, n * c / chunks, n * (c + 1) / chunks, t);
       } catch (...) {
         errors[t] = std::current_exception();
       }
@@ -51,6 +55,19 @@ template <class Body> void parallel_for(int64_t n, int threads, const Body &body
   for (auto &e : errors)
     if (e)
       std::rethrow_exception(e);
+}
+
+// Calls body(begin, end, worker) on disjoint chunks of [0, n); rethrows the first exception.
+template <class Body> void parallel_for(int64_t n, int threads, const Body &body) {
+  threads = static_cast<int>(std::min<int64_t>(std::max(1, threads), std::max<int64_t>(n, 1)));
+  if (threads <= 1) {
+    body(int64_t{0}, n, 0);
+    return;
+  }
+  // More chunks than threads balance uneven cells (degenerate cells cost more).
+  parallel_chunks(
+      n, std::min<int64_t>(n, int64_t{threads} * 16), threads,
+      [&](int64_t, int64_t begin, int64_t end, int worker) { body(begin, end, worker); });
 }
 
 } // namespace hoct

@@ -259,9 +259,9 @@ void check_trees(const PlMesh &m) {
     EXPECT_EQ(split, brute_join_pairs(g, rev));
   }
   // The diagram of the field equals the diagram of its contour tree (viewed as a graph).
-  std::vector<std::pair<int64_t, int64_t>> tree_edges;
+  std::vector<GraphEdge> tree_edges;
   for (const auto &a : ct.arcs)
-    tree_edges.emplace_back(a[0], a[1]);
+    tree_edges.push_back({a[0], a[1]});
   std::vector<double> tv = ct.values;
   // Same tie-breaking: node ids ascending in the reduced tree follow the graph's order.
   const ScalarGraph tg(tv, tree_edges);

@@ -1,0 +1,16 @@
+// The one total order on graph nodes, (value, then id), as a sorted list: a stable radix sort
+// of the values' bit patterns (mapped so that unsigned order is numeric order, -0 = +0), which
+// keeps equal values in id order.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace hoct {
+
+// The nodes in ascending total order: ascending[r] is the node of rank r. Values must not be
+// NaN (inputs are checked for it).
+std::vector<int64_t> ascending_order(std::span<const double> values);
+
+} // namespace hoct

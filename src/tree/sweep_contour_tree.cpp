@@ -1,0 +1,221 @@
+#include "tree/sweep_contour_tree.hpp"
+
+#include "util/parallel_for.hpp"
+#include "util/uninitialized_vector.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <stdexcept>
+
+namespace hoct {
+namespace {
+
+using clock_type = std::chrono::steady_clock;
+double seconds(clock_type::time_point a, clock_type::time_point b) {
+  return std::chrono::duration<double>(b - a).count();
+}
+
+// The sweep upwards over ranks 0..n-1 of the graph whose edges, mapped to ranks by `to_rank`,
+// connect each rank to its lower neighbours. Each union makes the current rank the root, so a
+// component's root is always its most recent (highest) node: the node whose parent the current
+// rank becomes when the component joins it.
+template <class ToRank>
+RankMergeTree sweep_up(int64_t n, std::span<const GraphEdge> edges, const ToRank &to_rank) {
+  // Lower neighbours of every rank (CSR, filled backwards so the counts become the starts).
+  UninitializedVector<int64_t> start;
+  start.resize(static_cast<std::size_t>(n + 1));
+  std::fill(start.begin(), start.end(), 0);
+  for (const GraphEdge &e : edges) {
+    if (e.a < 0 || e.b < 0 || e.a >= n || e.b >= n)
+      throw std::out_of_range("sweep_contour_tree: edge endpoint out of range");
+    const int64_t ra = to_rank(e.a), rb = to_rank(e.b);
+    if (ra != rb)
+      ++start[std::max(ra, rb)];
+  }
+  for (int64_t v = 1; v <= n; ++v)
+    start[v] += start[v - 1];
+  UninitializedVector<int64_t> lower;
+  lower.resize(static_cast<std::size_t>(start[n]));
+  for (const GraphEdge &e : edges) {
+    const int64_t ra = to_rank(e.a), rb = to_rank(e.b);
+    if (ra != rb)
+      lower[--start[std::max(ra, rb)]] = std::min(ra, rb);
+  }
+  RankMergeTree t;
+  t.parent.assign(n, -1);
+  t.children.assign(n, 0);
+  UninitializedVector<int64_t> uf;
+  uf.resize(static_cast<std::size_t>(n));
+  for (int64_t v = 0; v < n; ++v) {
+    uf[v] = v;
+    for (int64_t k = start[v]; k < start[v + 1]; ++k) {
+      int64_t r = lower[k];
+      while (uf[r] != r) { // find, with path halving
+        uf[r] = uf[uf[r]];
+        r = uf[r];
+      }
+      if (r == v)
+        continue;
+      t.parent[r] = v;
+      uf[r] = v;
+      ++t.children[v];
+    }
+  }
+  return t;
+}
+
+// Merges the join tree (parent above) and the split tree (parent below), both in rank space,
+// into the augmented contour tree's arcs (lower rank first): leaves of either tree are peeled
+// off one by one (Carr, Snoeyink, Axen). Children are tracked by count and rank sum, so a node
+// with one child knows it.
+std::vector<std::array<int64_t, 2>> merge_ranked(std::vector<int64_t> jparent,
+                                                 std::vector<int32_t> jdown,
+                                                 std::vector<int64_t> sparent,
+                                                 std::vector<int32_t> sup) {
+  const int64_t n = static_cast<int64_t>(jparent.size());
+  std::vector<int64_t> jsum(n, 0), ssum(n, 0);
+  for (int64_t v = 0; v < n; ++v) {
+    if (jparent[v] >= 0)
+      jsum[jparent[v]] += v;
+    if (sparent[v] >= 0)
+      ssum[sparent[v]] += v;
+  }
+  std::vector<char> removed(n, 0);
+  std::vector<int64_t> queue;
+  auto is_leaf = [&](int64_t v) {
+    return (jdown[v] == 0 && sup[v] <= 1) || (sup[v] == 0 && jdown[v] <= 1);
+  };
+  for (int64_t v = 0; v < n; ++v)
+    if (is_leaf(v))
+      queue.push_back(v);
+  std::vector<std::array<int64_t, 2>> arcs;
+  arcs.reserve(static_cast<std::size_t>(n));
+  auto remove_from = [](std::vector<int64_t> &parent, std::vector<int32_t> &count,
+                        std::vector<int64_t> &sum, int64_t v) {
+    const int64_t p = parent[v];
+    const int64_t child = count[v] == 1 ? sum[v] : -1;
+    if (p >= 0) {
+      sum[p] -= v;
+      --count[p];
+    }
+    if (child >= 0) {
+      parent[child] = p;
+      if (p >= 0) {
+        sum[p] += child;
+        ++count[p];
+      }
+    }
+    return p;
+  };
+  for (std::size_t q = 0; q < queue.size(); ++q) {
+    const int64_t v = queue[q];
+    if (removed[v] || !is_leaf(v))
+      continue;
+    // A lower leaf's arc goes up, to its join-tree parent; an upper leaf's down, to its split
+    // parent. A join root with an upper neighbour left is handled as an upper leaf; the last
+    // node of a component has no arc.
+    const int64_t other = jdown[v] == 0 && sup[v] <= 1 ? jparent[v] : sparent[v];
+    if (other < 0)
+      continue;
+    arcs.push_back({std::min(v, other), std::max(v, other)});
+    removed[v] = 1;
+    const int64_t jp = remove_from(jparent, jdown, jsum, v);
+    const int64_t sp = remove_from(sparent, sup, ssum, v);
+    for (int64_t w : {jp, sp})
+      if (w >= 0 && !removed[w] && is_leaf(w))
+        queue.push_back(w);
+  }
+  return arcs;
+}
+
+} // namespace
+
+RankMergeTree rank_join_tree(std::span<const int64_t> rank, std::span<const GraphEdge> edges) {
+  return sweep_up(static_cast<int64_t>(rank.size()), edges, [&](int64_t v) { return rank[v]; });
+}
+
+RankMergeTree rank_split_tree(std::span<const int64_t> rank, std::span<const GraphEdge> edges) {
+  const int64_t last = static_cast<int64_t>(rank.size()) - 1;
+  return sweep_up(last + 1, edges, [&](int64_t v) { return last - rank[v]; });
+}
+
+ContourTree sweep_contour_tree(std::span<const double> values,
+                               std::span<const GraphEdge> join_edges,
+                               std::span<const GraphEdge> split_edges, bool augmented, int threads,
+                               SweepTimings *timings) {
+  const auto t0 = clock_type::now();
+  const int64_t n = static_cast<int64_t>(values.size());
+  std::vector<int64_t> order = ascending_order(values);
+  std::vector<int64_t> rank(n);
+  for (int64_t r = 0; r < n; ++r)
+    rank[order[r]] = r;
+  const auto t1 = clock_type::now();
+  RankMergeTree join, split;
+  parallel_for(2, std::min(threads, 2), [&](int64_t begin, int64_t end, int) {
+    for (int64_t k = begin; k < end; ++k)
+      (k == 0 ? join : split) =
+          k == 0 ? rank_join_tree(rank, join_edges) : rank_split_tree(rank, split_edges);
+  });
+  const auto t2 = clock_type::now();
+  // The split tree in ascending ranks.
+  std::vector<int64_t> sparent(n);
+  std::vector<int32_t> sup(n);
+  for (int64_t r = 0; r < n; ++r) {
+    const int64_t m = n - 1 - r, p = split.parent[m];
+    sparent[r] = p < 0 ? -1 : n - 1 - p;
+    sup[r] = split.children[m];
+  }
+  split = {};
+  ContourTree out;
+  if (augmented) {
+    out.nodes = std::move(order);
+    out.arcs = merge_ranked(std::move(join.parent), std::move(join.children), std::move(sparent),
+                            std::move(sup));
+    std::sort(out.arcs.begin(), out.arcs.end());
+  } else {
+    // A node's down-degree in the contour tree is its number of join-tree children, its
+    // up-degree its number of split-tree children. Regular nodes (one of each) are spliced out of
+    // both trees first; merging what is left gives the reduced tree directly, without building
+    // the augmented one (Carr, Snoeyink, Axen 2003).
+    std::vector<int64_t> index(n, -1);
+    for (int64_t r = 0; r < n; ++r)
+      if (!(join.children[r] == 1 && sup[r] == 1)) {
+        index[r] = static_cast<int64_t>(out.nodes.size());
+        out.nodes.push_back(order[r]);
+      }
+    const int64_t k = static_cast<int64_t>(out.nodes.size());
+    std::vector<int64_t> jp(k), sp(k), nearest(n);
+    std::vector<int32_t> jd(k), su(k);
+    // Join parents are above: the nearest kept node at or above each rank, top down.
+    for (int64_t r = n - 1; r >= 0; --r) {
+      const int64_t p = join.parent[r];
+      nearest[r] = index[r] >= 0 ? index[r] : (p < 0 ? -1 : nearest[p]);
+      if (index[r] >= 0) {
+        jp[index[r]] = p < 0 ? -1 : nearest[p];
+        jd[index[r]] = join.children[r];
+      }
+    }
+    // Split parents are below: bottom up.
+    for (int64_t r = 0; r < n; ++r) {
+      const int64_t p = sparent[r];
+      nearest[r] = index[r] >= 0 ? index[r] : (p < 0 ? -1 : nearest[p]);
+      if (index[r] >= 0) {
+        sp[index[r]] = p < 0 ? -1 : nearest[p];
+        su[index[r]] = sup[r];
+      }
+    }
+    out.arcs = merge_ranked(std::move(jp), std::move(jd), std::move(sp), std::move(su));
+    std::sort(out.arcs.begin(), out.arcs.end());
+  }
+  out.values.resize(out.nodes.size());
+  for (std::size_t i = 0; i < out.nodes.size(); ++i)
+    out.values[i] = values[out.nodes[i]];
+  if (timings) {
+    timings->order = seconds(t0, t1);
+    timings->sweeps = seconds(t1, t2);
+    timings->merge = seconds(t2, clock_type::now());
+  }
+  return out;
+}
+
+} // namespace hoct
