@@ -3,7 +3,6 @@
 #include "util/uninitialized_vector.hpp"
 
 #include <algorithm>
-#include <array>
 #include <bit>
 #include <cstring>
 
@@ -24,9 +23,43 @@ struct Item {
   int64_t id;
 };
 
-constexpr int kBits = 11;
-constexpr int kPasses = (64 + kBits - 1) / kBits;
-constexpr std::size_t kBuckets = std::size_t{1} << kBits;
+bool item_less(const Item &a, const Item &b) {
+  return a.key < b.key || (a.key == b.key && a.id < b.id);
+}
+
+// Sorts a[0, n) by (key, id), with scratch b of the same size: small ranges by comparison, large
+// ones partitioned (stably) on the 12 highest bits in which their keys differ, each part then
+// sorted the same way. Floating-point keys share their leading (exponent) bits in clusters, so a
+// fixed digit would leave most keys in a few buckets; this adapts to every range's own prefix.
+void sort_items(Item *a, Item *b, std::size_t n) {
+  if (n <= 2048) {
+    std::sort(a, a + n, item_less);
+    return;
+  }
+  uint64_t lo = a[0].key, hi = a[0].key;
+  for (std::size_t i = 1; i < n; ++i) {
+    lo = std::min(lo, a[i].key);
+    hi = std::max(hi, a[i].key);
+  }
+  if (lo == hi)
+    return; // equal keys, still in id order (every partition is stable, the input is by id)
+  constexpr int kBits = 12;
+  constexpr std::size_t kBuckets = std::size_t{1} << kBits;
+  const int shift = std::max(64 - std::countl_zero(hi ^ lo) - kBits, 0);
+  const uint64_t base = lo >> shift;
+  std::vector<std::size_t> start(kBuckets + 1, 0);
+  for (std::size_t i = 0; i < n; ++i)
+    ++start[(a[i].key >> shift) - base + 1];
+  for (std::size_t k = 1; k <= kBuckets; ++k)
+    start[k] += start[k - 1];
+  std::vector<std::size_t> fill(start.begin(), start.end() - 1);
+  for (std::size_t i = 0; i < n; ++i)
+    b[fill[(a[i].key >> shift) - base]++] = a[i];
+  std::copy(b, b + n, a);
+  for (std::size_t k = 0; k < kBuckets; ++k)
+    if (start[k + 1] - start[k] > 1)
+      sort_items(a + start[k], b + start[k], start[k + 1] - start[k]);
+}
 
 } // namespace
 
@@ -35,33 +68,9 @@ std::vector<int64_t> ascending_order(std::span<const double> values) {
   UninitializedVector<Item> a, b;
   a.resize(n);
   b.resize(n);
-  // All digit histograms in one pass.
-  std::vector<std::array<std::size_t, kBuckets>> count(kPasses);
-  for (auto &c : count)
-    c.fill(0);
-  for (std::size_t i = 0; i < n; ++i) {
-    const uint64_t k = order_key(values[i]);
-    a[i] = {k, static_cast<int64_t>(i)};
-    for (int p = 0; p < kPasses; ++p)
-      ++count[p][(k >> (p * kBits)) & (kBuckets - 1)];
-  }
-  // Least significant digit first; each pass is stable, so equal keys stay in id order. A digit
-  // that all keys share needs no pass.
-  for (int p = 0; p < kPasses; ++p) {
-    auto &c = count[p];
-    if (std::find(c.begin(), c.end(), n) != c.end())
-      continue;
-    std::size_t sum = 0;
-    for (std::size_t &x : c) {
-      const std::size_t here = x;
-      x = sum;
-      sum += here;
-    }
-    const int shift = p * kBits;
-    for (std::size_t i = 0; i < n; ++i)
-      b[c[(a[i].key >> shift) & (kBuckets - 1)]++] = a[i];
-    a.swap(b);
-  }
+  for (std::size_t i = 0; i < n; ++i)
+    a[i] = {order_key(values[i]), static_cast<int64_t>(i)};
+  sort_items(a.data(), b.data(), n);
   std::vector<int64_t> order(n);
   for (std::size_t i = 0; i < n; ++i)
     order[i] = a[i].id;

@@ -1,6 +1,6 @@
-// The one total order on graph nodes, (value, then id), as a sorted list: a stable radix sort
-// of the values' bit patterns (mapped so that unsigned order is numeric order, -0 = +0), which
-// keeps equal values in id order.
+// The one total order on graph nodes, (value, then id), as a sorted list: the values' bit
+// patterns (mapped so that unsigned order is numeric order, -0 = +0) partitioned by their
+// leading differing bits, then each part sorted by (pattern, id) in cache.
 #pragma once
 
 #include <cstdint>
