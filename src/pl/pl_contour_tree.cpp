@@ -27,7 +27,7 @@ TreeResult pl_contour_tree(const PlMesh &m, bool augmented, const std::string &m
   const int sweep_threads =
       threads_for(static_cast<int64_t>(m.values.size()), thread_count(threads), 8192);
   const ContourTree ct =
-      sweep_contour_tree(m.values, edges, edges, augmented, sweep_threads, &sweep);
+      sweep_contour_tree(m.values, {edges, {}, {}}, augmented, sweep_threads, &sweep);
   const auto t3 = clock::now();
 
   TreeResult r;

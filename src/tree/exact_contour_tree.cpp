@@ -240,12 +240,13 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
   }
   const int64_t interior_nodes = next - edge_base - static_cast<int64_t>(en.nodes.size());
   // Large arrays, filled in parallel without being zeroed first; room for the edge chains.
+  // The graph's edges: the cells' lower connections in the join graph only, their upper ones in
+  // the split graph only; the edge chains and the fallback cells' sub-edges in both (stored once).
   const std::size_t chain_edges = static_cast<std::size_t>(ne + en.offset[ne]);
-  UninitializedVector<GraphEdge> join_edges, split_edges;
-  join_edges.reserve(cell_join + chain_edges);
-  split_edges.reserve(cell_split + chain_edges);
+  UninitializedVector<GraphEdge> join_edges, split_edges, common_edges;
   join_edges.resize(cell_join);
   split_edges.resize(cell_split);
+  common_edges.reserve(chain_edges);
   std::vector<double> values(next);
   UninitializedVector<NodeSource> source;
   source.resize(static_cast<std::size_t>(next));
@@ -377,10 +378,9 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
       source[id].fallback = true;
     for (const auto &t : cr.triangles)
       for (int j = 0; j < 3; ++j) {
-        join_edges.push_back({ids[t[j]], ids[t[(j + 1) % 3]]});
+        common_edges.push_back({ids[t[j]], ids[t[(j + 1) % 3]]});
         if (opt.arc_geometry)
           geo_edges.push_back({ids[t[j]], ids[t[(j + 1) % 3]], {}});
-        split_edges.push_back({ids[t[j]], ids[t[(j + 1) % 3]]});
       }
   }
 
@@ -388,25 +388,22 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
   // Without fallback lattice nodes or geometry, edge e adds count(e) + 1 pieces at a known
   // offset: written in parallel.
   if (lattice_node.empty() && !opt.arc_geometry) {
-    const std::size_t base_join = join_edges.size(), base_split = split_edges.size();
-    join_edges.resize(base_join + chain_edges);
-    split_edges.resize(base_split + chain_edges);
+    const std::size_t base = common_edges.size();
+    common_edges.resize(base + chain_edges);
     parallel_for(ne, threads, [&](int64_t begin, int64_t end, int) {
       for (int64_t e = begin; e < end; ++e) {
         std::size_t slot = static_cast<std::size_t>(e + en.offset[e]);
         int64_t prev = topo.edge_vertices(e)[0];
         for (int64_t i = en.offset[e]; i <= en.offset[e + 1]; ++i) {
           const int64_t cur = i < en.offset[e + 1] ? edge_base + i : topo.edge_vertices(e)[1];
-          join_edges[base_join + slot] = {prev, cur};
-          split_edges[base_split + slot] = {prev, cur};
+          common_edges[base + slot] = {prev, cur};
           ++slot;
           prev = cur;
         }
       }
     });
   } else {
-    join_edges.reserve(join_edges.size() + chain_edges);
-    split_edges.reserve(split_edges.size() + chain_edges);
+    common_edges.reserve(common_edges.size() + chain_edges);
     std::vector<std::pair<double, int64_t>> chain;
     std::map<int64_t, std::vector<std::pair<double, int64_t>>> lattice_by_edge;
     for (const auto &[key, id] : lattice_node)
@@ -439,8 +436,7 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
           }
           geo_edges.push_back({chain[i].second, chain[i + 1].second, std::move(inner)});
         }
-        join_edges.push_back({chain[i].second, chain[i + 1].second});
-        split_edges.push_back({chain[i].second, chain[i + 1].second});
+        common_edges.push_back({chain[i].second, chain[i + 1].second});
       }
     }
   }
@@ -452,8 +448,8 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
   const int sweep_threads = threads_for(static_cast<int64_t>(values.size()),
                                         thread_count(opt.threads), 8 * opt.cells_per_thread);
   SweepTimings sweep_time;
-  const ContourTree ct = sweep_contour_tree(values, join_edges, split_edges, opt.augmented,
-                                            sweep_threads, &sweep_time);
+  const ContourTree ct = sweep_contour_tree(values, {common_edges, join_edges, split_edges},
+                                            opt.augmented, sweep_threads, &sweep_time);
   if (opt.progress) {
     opt.progress("join and split sweeps", sweep_time.order + sweep_time.sweeps);
     opt.progress("merge", sweep_time.merge);

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <initializer_list>
 #include <stdexcept>
 
 namespace hoct {
@@ -15,41 +16,51 @@ double seconds(clock_type::time_point a, clock_type::time_point b) {
   return std::chrono::duration<double>(b - a).count();
 }
 
-// The sweep upwards over ranks 0..n-1 of the graph whose edges, mapped to ranks by `to_rank`,
-// connect each rank to its lower neighbours. Each union makes the current rank the root, so a
-// component's root is always its most recent (highest) node: the node whose parent the current
-// rank becomes when the component joins it.
-template <class ToRank>
-RankMergeTree sweep_up(int64_t n, std::span<const GraphEdge> edges, const ToRank &to_rank) {
+// Augmented merge tree in rank space (indices of type I: 32 bits when they fit, halving the
+// memory the sweeps touch at random): parent[r] is the rank of r's parent, -1 at a root;
+// children[r] counts the ranks whose parent is r.
+template <class I> struct RankTree {
+  UninitializedVector<I> parent;
+  std::vector<int32_t> children;
+};
+
+// The sweep upwards over ranks 0..n-1 of the graph whose edges (all lists), mapped to ranks by
+// `to_rank`, connect each rank to its lower neighbours. Each union makes the current rank the
+// root, so a component's root is always its most recent (highest) node: the node whose parent
+// the current rank becomes when the component joins it.
+template <class I, class ToRank>
+RankTree<I> sweep_up(int64_t n, std::initializer_list<std::span<const GraphEdge>> lists,
+                     const ToRank &to_rank) {
   // Lower neighbours of every rank (CSR, filled backwards so the counts become the starts).
-  UninitializedVector<int64_t> start;
+  UninitializedVector<I> start;
   start.resize(static_cast<std::size_t>(n + 1));
-  std::fill(start.begin(), start.end(), 0);
-  for (const GraphEdge &e : edges) {
-    if (e.a < 0 || e.b < 0 || e.a >= n || e.b >= n)
-      throw std::out_of_range("sweep_contour_tree: edge endpoint out of range");
-    const int64_t ra = to_rank(e.a), rb = to_rank(e.b);
-    if (ra != rb)
-      ++start[std::max(ra, rb)];
-  }
+  std::fill(start.begin(), start.end(), I{0});
+  for (std::span<const GraphEdge> edges : lists)
+    for (const GraphEdge &e : edges) {
+      const I ra = to_rank(e.a), rb = to_rank(e.b);
+      if (ra != rb)
+        ++start[std::max(ra, rb)];
+    }
   for (int64_t v = 1; v <= n; ++v)
     start[v] += start[v - 1];
-  UninitializedVector<int64_t> lower;
+  UninitializedVector<I> lower;
   lower.resize(static_cast<std::size_t>(start[n]));
-  for (const GraphEdge &e : edges) {
-    const int64_t ra = to_rank(e.a), rb = to_rank(e.b);
-    if (ra != rb)
-      lower[--start[std::max(ra, rb)]] = std::min(ra, rb);
-  }
-  RankMergeTree t;
-  t.parent.assign(n, -1);
+  for (std::span<const GraphEdge> edges : lists)
+    for (const GraphEdge &e : edges) {
+      const I ra = to_rank(e.a), rb = to_rank(e.b);
+      if (ra != rb)
+        lower[--start[std::max(ra, rb)]] = std::min(ra, rb);
+    }
+  RankTree<I> t;
+  t.parent.resize(static_cast<std::size_t>(n));
+  std::fill(t.parent.begin(), t.parent.end(), I{-1});
   t.children.assign(n, 0);
-  UninitializedVector<int64_t> uf;
+  UninitializedVector<I> uf;
   uf.resize(static_cast<std::size_t>(n));
-  for (int64_t v = 0; v < n; ++v) {
+  for (I v = 0; v < static_cast<I>(n); ++v) {
     uf[v] = v;
-    for (int64_t k = start[v]; k < start[v + 1]; ++k) {
-      int64_t r = lower[k];
+    for (I k = start[v]; k < start[v + 1]; ++k) {
+      I r = lower[k];
       while (uf[r] != r) { // find, with path halving
         uf[r] = uf[uf[r]];
         r = uf[r];
@@ -130,83 +141,95 @@ std::vector<std::array<int64_t, 2>> merge_ranked(std::vector<int64_t> jparent,
 
 } // namespace
 
-RankMergeTree rank_join_tree(std::span<const int64_t> rank, std::span<const GraphEdge> edges) {
-  return sweep_up(static_cast<int64_t>(rank.size()), edges, [&](int64_t v) { return rank[v]; });
+namespace {
+
+void check_edges(std::span<const GraphEdge> edges, int64_t n) {
+  for (const GraphEdge &e : edges)
+    if (e.a < 0 || e.b < 0 || e.a >= n || e.b >= n)
+      throw std::out_of_range("sweep_contour_tree: edge endpoint out of range");
 }
 
-RankMergeTree rank_split_tree(std::span<const int64_t> rank, std::span<const GraphEdge> edges) {
-  const int64_t last = static_cast<int64_t>(rank.size()) - 1;
-  return sweep_up(last + 1, edges, [&](int64_t v) { return last - rank[v]; });
-}
-
-ContourTree sweep_contour_tree(std::span<const double> values,
-                               std::span<const GraphEdge> join_edges,
-                               std::span<const GraphEdge> split_edges, bool augmented, int threads,
-                               SweepTimings *timings) {
+template <class I>
+ContourTree sweep_ranked(std::span<const double> values, const SweepEdges &edges, bool augmented,
+                         int threads, SweepTimings *timings) {
   const auto t0 = clock_type::now();
   const int64_t n = static_cast<int64_t>(values.size());
   std::vector<int64_t> order = ascending_order(values);
-  std::vector<int64_t> rank(n);
+  UninitializedVector<I> rank;
+  rank.resize(static_cast<std::size_t>(n));
   for (int64_t r = 0; r < n; ++r)
-    rank[order[r]] = r;
+    rank[order[r]] = static_cast<I>(r);
   const auto t1 = clock_type::now();
-  RankMergeTree join, split;
+  // The split sweep runs upwards over mirrored ranks n - 1 - r.
+  const I last = static_cast<I>(n - 1);
+  RankTree<I> join, split;
   parallel_for(2, std::min(threads, 2), [&](int64_t begin, int64_t end, int) {
     for (int64_t k = begin; k < end; ++k)
-      (k == 0 ? join : split) =
-          k == 0 ? rank_join_tree(rank, join_edges) : rank_split_tree(rank, split_edges);
+      if (k == 0)
+        join = sweep_up<I>(n, {edges.common, edges.join_only}, [&](int64_t v) { return rank[v]; });
+      else
+        split = sweep_up<I>(n, {edges.common, edges.split_only},
+                            [&](int64_t v) { return static_cast<I>(last - rank[v]); });
   });
+  rank = {};
   const auto t2 = clock_type::now();
-  // The split tree in ascending ranks.
-  std::vector<int64_t> sparent(n);
-  std::vector<int32_t> sup(n);
-  for (int64_t r = 0; r < n; ++r) {
-    const int64_t m = n - 1 - r, p = split.parent[m];
-    sparent[r] = p < 0 ? -1 : n - 1 - p;
-    sup[r] = split.children[m];
-  }
-  split = {};
+  // Both trees in ascending ranks: join parents above, split parents below.
+  auto split_parent = [&](int64_t r) -> int64_t {
+    const I p = split.parent[n - 1 - r];
+    return p < 0 ? -1 : n - 1 - p;
+  };
+  auto split_children = [&](int64_t r) { return split.children[n - 1 - r]; };
   ContourTree out;
   if (augmented) {
+    std::vector<int64_t> jp(n), sp(n);
+    std::vector<int32_t> su(n);
+    for (int64_t r = 0; r < n; ++r) {
+      jp[r] = join.parent[r] < 0 ? -1 : join.parent[r];
+      sp[r] = split_parent(r);
+      su[r] = split_children(r);
+    }
     out.nodes = std::move(order);
-    out.arcs = merge_ranked(std::move(join.parent), std::move(join.children), std::move(sparent),
-                            std::move(sup));
-    std::sort(out.arcs.begin(), out.arcs.end());
+    out.arcs = merge_ranked(std::move(jp), std::move(join.children), std::move(sp), std::move(su));
   } else {
     // A node's down-degree in the contour tree is its number of join-tree children, its
     // up-degree its number of split-tree children. Regular nodes (one of each) are spliced out of
     // both trees first; merging what is left gives the reduced tree directly, without building
     // the augmented one (Carr, Snoeyink, Axen 2003).
-    std::vector<int64_t> index(n, -1);
-    for (int64_t r = 0; r < n; ++r)
-      if (!(join.children[r] == 1 && sup[r] == 1)) {
-        index[r] = static_cast<int64_t>(out.nodes.size());
+    UninitializedVector<I> index, nearest;
+    index.resize(static_cast<std::size_t>(n));
+    nearest.resize(static_cast<std::size_t>(n));
+    for (int64_t r = 0; r < n; ++r) {
+      const bool regular = join.children[r] == 1 && split_children(r) == 1;
+      index[r] = regular ? I{-1} : static_cast<I>(out.nodes.size());
+      if (!regular)
         out.nodes.push_back(order[r]);
-      }
+    }
     const int64_t k = static_cast<int64_t>(out.nodes.size());
-    std::vector<int64_t> jp(k), sp(k), nearest(n);
+    std::vector<int64_t> jp(k), sp(k);
     std::vector<int32_t> jd(k), su(k);
     // Join parents are above: the nearest kept node at or above each rank, top down.
     for (int64_t r = n - 1; r >= 0; --r) {
-      const int64_t p = join.parent[r];
-      nearest[r] = index[r] >= 0 ? index[r] : (p < 0 ? -1 : nearest[p]);
+      const I p = join.parent[r];
+      const I near_p = p < 0 ? I{-1} : nearest[p];
+      nearest[r] = index[r] >= 0 ? index[r] : near_p;
       if (index[r] >= 0) {
-        jp[index[r]] = p < 0 ? -1 : nearest[p];
+        jp[index[r]] = near_p;
         jd[index[r]] = join.children[r];
       }
     }
     // Split parents are below: bottom up.
     for (int64_t r = 0; r < n; ++r) {
-      const int64_t p = sparent[r];
-      nearest[r] = index[r] >= 0 ? index[r] : (p < 0 ? -1 : nearest[p]);
+      const int64_t p = split_parent(r);
+      const I near_p = p < 0 ? I{-1} : nearest[p];
+      nearest[r] = index[r] >= 0 ? index[r] : near_p;
       if (index[r] >= 0) {
-        sp[index[r]] = p < 0 ? -1 : nearest[p];
-        su[index[r]] = sup[r];
+        sp[index[r]] = near_p;
+        su[index[r]] = split_children(r);
       }
     }
     out.arcs = merge_ranked(std::move(jp), std::move(jd), std::move(sp), std::move(su));
-    std::sort(out.arcs.begin(), out.arcs.end());
   }
+  std::sort(out.arcs.begin(), out.arcs.end());
   out.values.resize(out.nodes.size());
   for (std::size_t i = 0; i < out.nodes.size(); ++i)
     out.values[i] = values[out.nodes[i]];
@@ -216,6 +239,28 @@ ContourTree sweep_contour_tree(std::span<const double> values,
     timings->merge = seconds(t2, clock_type::now());
   }
   return out;
+}
+
+} // namespace
+
+ContourTree sweep_contour_tree(std::span<const double> values, const SweepEdges &edges,
+                               bool augmented, int threads, SweepTimings *timings) {
+  const int64_t n = static_cast<int64_t>(values.size());
+  for (auto list : {edges.common, edges.join_only, edges.split_only})
+    check_edges(list, n);
+  // 32-bit ranks and offsets where every rank and every edge count fits.
+  const std::size_t m =
+      edges.common.size() + std::max(edges.join_only.size(), edges.split_only.size());
+  if (n < (int64_t{1} << 31) - 1 && m < (std::size_t{1} << 31) - 1)
+    return sweep_ranked<int32_t>(values, edges, augmented, threads, timings);
+  return sweep_ranked<int64_t>(values, edges, augmented, threads, timings);
+}
+
+ContourTree sweep_contour_tree_wide(std::span<const double> values, const SweepEdges &edges,
+                                    bool augmented, int threads) {
+  for (auto list : {edges.common, edges.join_only, edges.split_only})
+    check_edges(list, static_cast<int64_t>(values.size()));
+  return sweep_ranked<int64_t>(values, edges, augmented, threads, nullptr);
 }
 
 } // namespace hoct

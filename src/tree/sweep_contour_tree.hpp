@@ -15,27 +15,24 @@
 
 namespace hoct {
 
-// Augmented join tree in rank space: parent[r] is the rank of r's parent (above r), -1 at a
-// root; children[r] counts the nodes whose parent is r. For the split tree, rank r stands for
-// the node of rank n - 1 - r (the sweep runs downwards), and parent is in that numbering too.
-struct RankMergeTree {
-  std::vector<int64_t> parent;
-  std::vector<int32_t> children;
+// The graph's edges: `common` ones in both sweeps, `join_only` in the join sweep, `split_only`
+// in the split sweep (self-loops and duplicates are allowed).
+struct SweepEdges {
+  std::span<const GraphEdge> common, join_only, split_only;
 };
-// `rank[v]`: the rank of node v; edges with endpoints out of range are rejected.
-RankMergeTree rank_join_tree(std::span<const int64_t> rank, std::span<const GraphEdge> edges);
-RankMergeTree rank_split_tree(std::span<const int64_t> rank, std::span<const GraphEdge> edges);
 
 struct SweepTimings {
   double order = 0, sweeps = 0, merge = 0; // seconds
 };
 
 // The contour tree (augmented or reduced) of the graph with the given node values, whose join
-// tree comes from `join_edges` and split tree from `split_edges` (self-loops and duplicates are
-// allowed). `threads` >= 2 runs the two sweeps at once.
-ContourTree sweep_contour_tree(std::span<const double> values,
-                               std::span<const GraphEdge> join_edges,
-                               std::span<const GraphEdge> split_edges, bool augmented,
-                               int threads = 1, SweepTimings *timings = nullptr);
+// tree comes from common + join_only edges and split tree from common + split_only edges.
+// `threads` >= 2 runs the two sweeps at once.
+ContourTree sweep_contour_tree(std::span<const double> values, const SweepEdges &edges,
+                               bool augmented, int threads = 1, SweepTimings *timings = nullptr);
+// The same with 64-bit rank indices whatever the size (sweep_contour_tree uses them only for
+// more than 2^31 nodes or edges): lets the tests run that path on small graphs.
+ContourTree sweep_contour_tree_wide(std::span<const double> values, const SweepEdges &edges,
+                                    bool augmented, int threads = 1);
 
 } // namespace hoct

@@ -17,7 +17,17 @@ namespace {
 
 struct RandomGraph {
   std::vector<double> values;
-  std::vector<GraphEdge> join, split;
+  std::vector<GraphEdge> common, join, split; // join / split: the extra edges of each sweep
+
+  std::vector<GraphEdge> all_join() const { return concat(join); }
+  std::vector<GraphEdge> all_split() const { return concat(split); }
+
+private:
+  std::vector<GraphEdge> concat(const std::vector<GraphEdge> &extra) const {
+    std::vector<GraphEdge> all = common;
+    all.insert(all.end(), extra.begin(), extra.end());
+    return all;
+  }
 };
 
 // The 1-skeleton of `components` triangulated grids (disks: their level sets form a tree) with
@@ -59,7 +69,7 @@ RandomGraph random_graph(std::mt19937_64 &rng, int components, int distinct_valu
     adj[e.a].push_back(e.b);
     adj[e.b].push_back(e.a);
   }
-  g.join = g.split = edges;
+  g.common = edges;
   for (int64_t k = 0; k < n; ++k) {
     const int64_t start = static_cast<int64_t>(rng() % n);
     for (bool down : {true, false}) {
@@ -77,13 +87,12 @@ RandomGraph random_graph(std::mt19937_64 &rng, int components, int distinct_valu
       (down ? g.join : g.split).push_back({start, v});
     }
   }
-  std::shuffle(g.join.begin(), g.join.end(), rng);
-  std::shuffle(g.split.begin(), g.split.end(), rng);
+  std::shuffle(g.common.begin(), g.common.end(), rng);
   return g;
 }
 
 ContourTree reference(const RandomGraph &g, bool augmented) {
-  const ScalarGraph jg(g.values, g.join), sg(g.values, g.split);
+  const ScalarGraph jg(g.values, g.all_join()), sg(g.values, g.all_split());
   const ContourTree aug = merge_trees(jg, join_tree(jg), split_tree(sg));
   return augmented ? aug : reduce(aug);
 }
@@ -105,8 +114,15 @@ TEST(SweepContourTree, MatchesTheScalarGraphPathOnRandomGraphs) {
       for (int threads : {1, 2}) {
         SCOPED_TRACE(testing::Message() << "trial " << trial << " n " << n << " augmented "
                                         << augmented << " threads " << threads);
-        expect_same(sweep_contour_tree(g.values, g.join, g.split, augmented, threads),
-                    reference(g, augmented));
+        const ContourTree expected = reference(g, augmented);
+        expect_same(sweep_contour_tree(g.values, {g.common, g.join, g.split}, augmented, threads),
+                    expected);
+        // The same edges, none marked common.
+        const auto join = g.all_join(), split = g.all_split();
+        expect_same(sweep_contour_tree(g.values, {{}, join, split}, augmented, threads), expected);
+        expect_same(
+            sweep_contour_tree_wide(g.values, {g.common, g.join, g.split}, augmented, threads),
+            expected);
       }
   }
 }
@@ -119,12 +135,15 @@ TEST(SweepContourTree, LargeGraphOnTwoThreadsMatches) {
     RandomGraph part = random_graph(rng, 3, 5000);
     const int64_t base = static_cast<int64_t>(g.values.size());
     g.values.insert(g.values.end(), part.values.begin(), part.values.end());
-    for (auto [list, add] : {std::pair{&g.join, &part.join}, std::pair{&g.split, &part.split}})
+    for (auto [list, add] : {std::pair{&g.common, &part.common}, std::pair{&g.join, &part.join},
+                             std::pair{&g.split, &part.split}})
       for (const GraphEdge &e : *add)
         list->push_back({base + e.a, base + e.b});
   }
-  expect_same(sweep_contour_tree(g.values, g.join, g.split, false, 2), reference(g, false));
-  expect_same(sweep_contour_tree(g.values, g.join, g.split, true, 1), reference(g, true));
+  expect_same(sweep_contour_tree(g.values, {g.common, g.join, g.split}, false, 2),
+              reference(g, false));
+  expect_same(sweep_contour_tree(g.values, {g.common, g.join, g.split}, true, 1),
+              reference(g, true));
 }
 
 TEST(NodeOrder, AscendingOrderBreaksTiesById) {
@@ -162,8 +181,9 @@ TEST(NodeOrder, RadixOrderEqualsComparisonSort) {
 TEST(SweepContourTree, RejectsEdgesOutOfRange) {
   const std::vector<double> values{0, 1};
   const std::vector<GraphEdge> bad{{0, 2}}, good{{0, 1}};
-  EXPECT_THROW(sweep_contour_tree(values, bad, good, false), std::out_of_range);
-  EXPECT_THROW(sweep_contour_tree(values, good, bad, false), std::out_of_range);
+  EXPECT_THROW(sweep_contour_tree(values, {bad, good, good}, false), std::out_of_range);
+  EXPECT_THROW(sweep_contour_tree(values, {good, bad, good}, false), std::out_of_range);
+  EXPECT_THROW(sweep_contour_tree(values, {good, good, bad}, false), std::out_of_range);
 }
 
 } // namespace
