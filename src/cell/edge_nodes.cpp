@@ -50,8 +50,14 @@ uint8_t edge_nodes_of(const BernsteinPoly &p, double value_scale, const EdgeNode
 bool monotone(std::span<const double> c) {
   if (c.size() < 2)
     return false;
-  thread_local std::vector<double> d;
-  d.resize(c.size() - 1);
+  constexpr std::size_t kSmall = 32;
+  double small[kSmall];
+  std::vector<double> large;
+  double *d = small;
+  if (c.size() - 1 > kSmall) {
+    large.resize(c.size() - 1);
+    d = large.data();
+  }
   const int n = static_cast<int>(c.size()) - 1;
   double dscale = 0, pscale = 0;
   for (int i = 0; i < n; ++i) {
@@ -60,7 +66,7 @@ bool monotone(std::span<const double> c) {
   }
   for (double x : c)
     pscale = std::max(pscale, std::abs(x));
-  return !(dscale <= 1e-12 * pscale) && certainly_rootless(d);
+  return !(dscale <= 1e-12 * pscale) && certainly_rootless({d, static_cast<std::size_t>(n)});
 }
 
 } // namespace
@@ -68,30 +74,42 @@ bool monotone(std::span<const double> c) {
 EdgeNodes find_edge_nodes(const Topology &topo, const Field &field, const EdgeNodeOptions &opt) {
   const int64_t ne = topo.num_edges();
   EdgeNodes out;
-  out.offset.assign(ne + 1, 0);
-  out.degeneracy.assign(ne, kEdgeOk);
+  out.offset.resize(ne + 1);
+  out.degeneracy.resize(ne);
   const double value_scale = std::max({std::abs(field.min_value()), std::abs(field.max_value()),
                                        field.max_value() - field.min_value(), 1e-300});
-  // Fixed blocks of edges, each collecting its own nodes; concatenated in edge order.
+  // Fixed blocks of edges, each collecting its own nodes (counts first in offset[e + 1]); then
+  // every block's offsets and nodes placed by prefix sums over the blocks, in parallel: the
+  // result does not depend on the thread count.
   const int64_t blocks = std::max<int64_t>(1, std::min<int64_t>(ne, 256));
   std::vector<std::vector<EdgeNode>> block_nodes(blocks);
-  std::vector<int64_t> count(ne, 0);
+  out.offset[0] = 0;
   parallel_for(blocks, opt.threads, [&](int64_t b0, int64_t b1, int) {
     for (int64_t b = b0; b < b1; ++b)
       for (int64_t e = ne * b / blocks; e < ne * (b + 1) / blocks; ++e) {
         const std::size_t before = block_nodes[b].size();
-        if (monotone(field.edge_coefficients(e)))
-          continue; // no node, not degenerate (count[e] stays 0)
-        out.degeneracy[e] =
-            edge_nodes_of(field.edge_polynomial(e), value_scale, opt, block_nodes[b]);
-        count[e] = static_cast<int64_t>(block_nodes[b].size() - before);
+        uint8_t degeneracy = kEdgeOk;
+        if (!monotone(field.edge_coefficients(e)))
+          degeneracy = edge_nodes_of(field.edge_polynomial(e), value_scale, opt, block_nodes[b]);
+        out.degeneracy[e] = degeneracy;
+        out.offset[e + 1] = static_cast<int64_t>(block_nodes[b].size() - before);
       }
   });
-  for (int64_t e = 0; e < ne; ++e)
-    out.offset[e + 1] = out.offset[e] + count[e];
-  out.nodes.reserve(static_cast<std::size_t>(out.offset[ne]));
-  for (const auto &bn : block_nodes)
-    out.nodes.insert(out.nodes.end(), bn.begin(), bn.end());
+  std::vector<int64_t> block_base(blocks + 1, 0);
+  for (int64_t b = 0; b < blocks; ++b)
+    block_base[b + 1] = block_base[b] + static_cast<int64_t>(block_nodes[b].size());
+  out.nodes.resize(static_cast<std::size_t>(block_base[blocks]));
+  parallel_for(blocks, threads_for(ne, opt.threads, 65536), [&](int64_t b0, int64_t b1, int) {
+    for (int64_t b = b0; b < b1; ++b) {
+      int64_t sum = block_base[b];
+      for (int64_t e = ne * b / blocks; e < ne * (b + 1) / blocks; ++e) {
+        sum += out.offset[e + 1];
+        out.offset[e + 1] = sum;
+      }
+      std::copy(block_nodes[b].begin(), block_nodes[b].end(),
+                out.nodes.begin() + static_cast<std::ptrdiff_t>(block_base[b]));
+    }
+  });
   return out;
 }
 

@@ -6,6 +6,7 @@
 
 #include "mesh/field.hpp"
 #include "mesh/topology.hpp"
+#include "util/uninitialized_vector.hpp"
 
 #include <cstdint>
 #include <vector>
@@ -28,9 +29,9 @@ enum EdgeDegeneracy : uint8_t {
 };
 
 struct EdgeNodes {
-  std::vector<int64_t> offset;     // nodes of edge e: nodes[offset[e] .. offset[e+1])
-  std::vector<EdgeNode> nodes;     // ascending t within each edge
-  std::vector<uint8_t> degeneracy; // EdgeDegeneracy bits per edge
+  UninitializedVector<int64_t> offset;     // nodes of edge e: nodes[offset[e] .. offset[e+1])
+  std::vector<EdgeNode> nodes;             // ascending t within each edge
+  UninitializedVector<uint8_t> degeneracy; // EdgeDegeneracy bits per edge
 
   int64_t count(int64_t e) const { return offset[e + 1] - offset[e]; }
 };

@@ -251,14 +251,16 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
   UninitializedVector<NodeSource> source;
   source.resize(static_cast<std::size_t>(next));
   // Sources and values of vertices and edge nodes.
-  parallel_for(nv, threads, [&](int64_t begin, int64_t end, int) {
+  // Threads for the gathering loops: only where each gets enough items to pay for its start.
+  auto gather_threads = [&](int64_t items) { return threads_for(items, threads, 32768); };
+  parallel_for(nv, gather_threads(nv), [&](int64_t begin, int64_t end, int) {
     for (int64_t v = begin; v < end; ++v) {
       values[v] = field.vertex_value(v);
       source[v] = {topo.vertex_cell(v), point_on_edge(topo.vertex_corner(v), 0.0),
                    NodeLocation::Vertex, false};
     }
   });
-  parallel_for(ne, threads, [&](int64_t begin, int64_t end, int) {
+  parallel_for(ne, gather_threads(ne), [&](int64_t begin, int64_t end, int) {
     for (int64_t e = begin; e < end; ++e) {
       if (en.offset[e] == en.offset[e + 1])
         continue;
@@ -274,7 +276,8 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
     }
   });
   // Interior nodes and the cells' connections in global ids, each chunk into its own slots.
-  parallel_for(chunks, threads, [&](int64_t begin, int64_t end, int) {
+  const int64_t gathered = next - edge_base + static_cast<int64_t>(cell_join + cell_split);
+  parallel_for(chunks, gather_threads(gathered), [&](int64_t begin, int64_t end, int) {
     for (int64_t k = begin; k < end; ++k) {
       const CellChunk &ch = chunk_out[k];
       const int64_t base = node_base[k];
@@ -390,7 +393,7 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
   if (lattice_node.empty() && !opt.arc_geometry) {
     const std::size_t base = common_edges.size();
     common_edges.resize(base + chain_edges);
-    parallel_for(ne, threads, [&](int64_t begin, int64_t end, int) {
+    parallel_for(ne, gather_threads(ne), [&](int64_t begin, int64_t end, int) {
       for (int64_t e = begin; e < end; ++e) {
         std::size_t slot = static_cast<std::size_t>(e + en.offset[e]);
         int64_t prev = topo.edge_vertices(e)[0];

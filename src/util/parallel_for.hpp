@@ -39,17 +39,20 @@ void parallel_chunks(int64_t n, int64_t chunks, int threads, const Body &body) {
     return;
   }
   std::vector<std::exception_ptr> errors(threads);
-  std::vector<std::thread> pool;
   std::atomic<int64_t> next{0};
-  for (int t = 0; t < threads; ++t)
-    pool.emplace_back([&, t] {
-      try {
-        for (int64_t c; (c = next.fetch_add(1)) < chunks;)
-          body(c, n * c / chunks, n * (c + 1) / chunks, t);
-      } catch (...) {
-        errors[t] = std::current_exception();
-      }
-    });
+  auto work = [&](int t) {
+    try {
+      for (int64_t c; (c = next.fetch_add(1)) < chunks;)
+        body(c, n * c / chunks, n * (c + 1) / chunks, t);
+    } catch (...) {
+      errors[t] = std::current_exception();
+    }
+  };
+  // The calling thread is worker 0 (one thread fewer to start).
+  std::vector<std::thread> pool;
+  for (int t = 1; t < threads; ++t)
+    pool.emplace_back(work, t);
+  work(0);
   for (auto &th : pool)
     th.join();
   for (auto &e : errors)
