@@ -31,26 +31,53 @@ template <class I> struct RankTree {
 template <class I, class ToRank>
 RankTree<I> sweep_up(int64_t n, std::initializer_list<std::span<const GraphEdge>> lists,
                      const ToRank &to_rank) {
-  // Lower neighbours of every rank (CSR, filled backwards so the counts become the starts).
-  UninitializedVector<I> start;
+  // Lower neighbours of every rank (CSR). Ranks are scattered at random over the mesh, so the
+  // edges are first distributed (as (higher, lower) rank pairs) into windows of 4096 ranks, then
+  // each window's part of the CSR is built with its counters in cache.
+  constexpr int kWindowBits = 12;
+  const int64_t windows = (n >> kWindowBits) + 1;
+  std::vector<int64_t> window_start(windows + 1, 0);
+  for (std::span<const GraphEdge> edges : lists)
+    for (const GraphEdge &e : edges) {
+      const I ra = to_rank(e.a), rb = to_rank(e.b);
+      if (ra != rb)
+        ++window_start[(std::max(ra, rb) >> kWindowBits) + 1];
+    }
+  for (int64_t w = 1; w <= windows; ++w)
+    window_start[w] += window_start[w - 1];
+  struct Pair {
+    I hi, lo;
+  };
+  UninitializedVector<Pair> pairs;
+  pairs.resize(static_cast<std::size_t>(window_start[windows]));
+  {
+    std::vector<int64_t> fill(window_start.begin(), window_start.end() - 1);
+    for (std::span<const GraphEdge> edges : lists)
+      for (const GraphEdge &e : edges) {
+        const I ra = to_rank(e.a), rb = to_rank(e.b);
+        if (ra != rb)
+          pairs[fill[std::max(ra, rb) >> kWindowBits]++] = {std::max(ra, rb), std::min(ra, rb)};
+      }
+  }
+  UninitializedVector<I> start, lower;
   start.resize(static_cast<std::size_t>(n + 1));
-  std::fill(start.begin(), start.end(), I{0});
-  for (std::span<const GraphEdge> edges : lists)
-    for (const GraphEdge &e : edges) {
-      const I ra = to_rank(e.a), rb = to_rank(e.b);
-      if (ra != rb)
-        ++start[std::max(ra, rb)];
+  lower.resize(pairs.size());
+  for (int64_t w = 0; w < windows; ++w) {
+    const int64_t r0 = w << kWindowBits, r1 = std::min(n, (w + 1) << kWindowBits);
+    std::fill(start.begin() + r0, start.begin() + r1, I{0});
+    for (int64_t k = window_start[w]; k < window_start[w + 1]; ++k)
+      ++start[pairs[k].hi];
+    // End offsets, then filled backwards so that they become the start offsets.
+    I end = static_cast<I>(window_start[w]);
+    for (int64_t r = r0; r < r1; ++r) {
+      end += start[r];
+      start[r] = end;
     }
-  for (int64_t v = 1; v <= n; ++v)
-    start[v] += start[v - 1];
-  UninitializedVector<I> lower;
-  lower.resize(static_cast<std::size_t>(start[n]));
-  for (std::span<const GraphEdge> edges : lists)
-    for (const GraphEdge &e : edges) {
-      const I ra = to_rank(e.a), rb = to_rank(e.b);
-      if (ra != rb)
-        lower[--start[std::max(ra, rb)]] = std::min(ra, rb);
-    }
+    for (int64_t k = window_start[w]; k < window_start[w + 1]; ++k)
+      lower[--start[pairs[k].hi]] = pairs[k].lo;
+  }
+  start[n] = static_cast<I>(pairs.size());
+  pairs = {};
   RankTree<I> t;
   t.parent.resize(static_cast<std::size_t>(n));
   std::fill(t.parent.begin(), t.parent.end(), I{-1});
