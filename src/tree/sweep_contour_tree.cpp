@@ -25,9 +25,8 @@ template <class I> struct RankTree {
 };
 
 // The sweep upwards over ranks 0..n-1 of the graph whose edges (all lists), mapped to ranks by
-// `to_rank`, connect each rank to its lower neighbours. Each union makes the current rank the
-// root, so a component's root is always its most recent (highest) node: the node whose parent
-// the current rank becomes when the component joins it.
+// `to_rank`, connect each rank to its lower neighbours: when a component meets the current rank,
+// the component's highest node so far gets the current rank as its parent.
 template <class I, class ToRank>
 RankTree<I> sweep_up(int64_t n, std::initializer_list<std::span<const GraphEdge>> lists,
                      const ToRank &to_rank) {
@@ -82,21 +81,35 @@ RankTree<I> sweep_up(int64_t n, std::initializer_list<std::span<const GraphEdge>
   t.parent.resize(static_cast<std::size_t>(n));
   std::fill(t.parent.begin(), t.parent.end(), I{-1});
   t.children.assign(n, 0);
-  UninitializedVector<I> uf;
+  // Union by size with path halving; top[root] is the highest rank of the root's component so
+  // far (the node whose parent the current rank becomes when that component joins it).
+  UninitializedVector<I> uf, size, top;
   uf.resize(static_cast<std::size_t>(n));
+  size.resize(static_cast<std::size_t>(n));
+  top.resize(static_cast<std::size_t>(n));
+  auto find = [&](I x) {
+    while (uf[x] != x) {
+      uf[x] = uf[uf[x]];
+      x = uf[x];
+    }
+    return x;
+  };
   for (I v = 0; v < static_cast<I>(n); ++v) {
     uf[v] = v;
+    size[v] = 1;
+    top[v] = v;
+    I rv = v; // v's root
     for (I k = start[v]; k < start[v + 1]; ++k) {
-      I r = lower[k];
-      while (uf[r] != r) { // find, with path halving
-        uf[r] = uf[uf[r]];
-        r = uf[r];
-      }
-      if (r == v)
+      const I r = find(lower[k]);
+      if (r == rv)
         continue;
-      t.parent[r] = v;
-      uf[r] = v;
+      t.parent[top[r]] = v;
       ++t.children[v];
+      const I big = size[r] > size[rv] ? r : rv, small = big == r ? rv : r;
+      uf[small] = big;
+      size[big] += size[small];
+      rv = big;
+      top[rv] = v;
     }
   }
   return t;
