@@ -30,11 +30,18 @@ SectorResult connect_sectors(const BernsteinTriangle &g, const CellNodes &cn,
   SectorResult out;
   if (interior.empty() && edge.empty())
     return out; // only corners: every sector lies along an edge
-  const PathField down(g);
-  std::optional<PathField> up_field; // -g, built when an upper sector needs it
+  // The fields the paths follow, built when a sector needs one: g for descending paths, -g for
+  // ascending ones (most cells of a smooth field have edge nodes whose sectors all lie along
+  // their edges, and need neither).
+  std::optional<PathField> down_field, up_field;
+  auto down = [&]() -> const PathField & {
+    if (!down_field)
+      down_field.emplace(g);
+    return *down_field;
+  };
   auto up = [&]() -> const PathField & {
     if (!up_field)
-      up_field = down.negated();
+      up_field = down().negated();
     return *up_field;
   };
   thread_local std::vector<double> vals, neg_vals; // reused across cells of a thread
@@ -49,9 +56,11 @@ SectorResult connect_sectors(const BernsteinTriangle &g, const CellNodes &cn,
   // Each sector is tried along up to two directions (the second only if the first fails); the
   // cell fails when neither gives a certified path.
   auto lower = [&](int node, const Vec2 &dir, int skip, const Vec2 *alt = nullptr) {
-    int m = connect_lower(down, cn, vals, cn.nodes[node].uv, vals[node], dir, skip, counters, want);
+    int m =
+        connect_lower(down(), cn, vals, cn.nodes[node].uv, vals[node], dir, skip, counters, want);
     if (m < 0 && alt)
-      m = connect_lower(down, cn, vals, cn.nodes[node].uv, vals[node], *alt, skip, counters, want);
+      m = connect_lower(down(), cn, vals, cn.nodes[node].uv, vals[node], *alt, skip, counters,
+                        want);
     if (m < 0) {
       ++counters.failed;
       out.failed = true;
@@ -77,19 +86,7 @@ SectorResult connect_sectors(const BernsteinTriangle &g, const CellNodes &cn,
       out.split_paths.push_back(path);
   };
 
-  // Second derivatives once per cell, when a node needs them.
-  BernsteinTriangle guu, guv, gvv;
-  bool have_second = false;
-  auto hessian = [&](const Vec2 &p) {
-    if (!have_second) {
-      guu = down.gu.du();
-      guv = down.gu.dv();
-      gvv = down.gv.dv();
-      have_second = true;
-    }
-    const double huv = guv(p[0], p[1]);
-    return Mat2{{{guu(p[0], p[1]), huv}, {huv, gvv(p[0], p[1])}}};
-  };
+  auto hessian = [&](const Vec2 &p) { return g.jet(p[0], p[1]).hessian; };
   for (int node : interior) {
     const Vec2 &p = cn.nodes[node].uv;
     double lambda[2];
@@ -114,15 +111,21 @@ SectorResult connect_sectors(const BernsteinTriangle &g, const CellNodes &cn,
   // scale, as in find_gradient_zeros); below, the node is treated as a critical point of the
   // field lying on the edge (degenerate: fall back). The level is relative to the gradient, not
   // the values: in a thin cell the reference normal derivative is small with the cell's width.
+  // The largest gradient coefficient, d |c[a+1,b] - c[a,b]| or d |c[a,b+1] - c[a,b]|.
   double grad_scale = 0;
-  for (const BernsteinTriangle *d : {&down.gu, &down.gv})
-    for (double c : d->coefficients())
-      grad_scale = std::max(grad_scale, std::abs(c));
+  const int d = g.degree();
+  for (int b = 0; b < d; ++b)
+    for (int a = 0; a + b < d; ++a) {
+      const double c = g.coefficient(a, b);
+      grad_scale = std::max({grad_scale, d * std::abs(g.coefficient(a + 1, b) - c),
+                             d * std::abs(g.coefficient(a, b + 1) - c)});
+    }
   const double gscale = 1e3 * 64 * std::numeric_limits<double>::epsilon() * grad_scale;
   for (const CellEdgeNode &e : edge) {
     const Vec2 &p = cn.nodes[e.node].uv;
     const Vec2 n = inward_normal(e.local_edge);
-    const double sn = down.gu(p[0], p[1]) * n[0] + down.gv(p[0], p[1]) * n[1];
+    const BernsteinTriangle::Jet jet = g.jet(p[0], p[1]);
+    const double sn = jet.gradient[0] * n[0] + jet.gradient[1] * n[1];
     if (std::abs(sn) <= gscale) {
       out.degenerate = true;
       continue;
@@ -136,7 +139,7 @@ SectorResult connect_sectors(const BernsteinTriangle &g, const CellNodes &cn,
     // value has its depth; in thin cells the reference normal is nearly tangent in the physical
     // plane and the dip along it can be below certification margins. The normal is the fallback.
     const Vec2 t = edge_tangent(e.local_edge);
-    const Mat2 h = hessian(p);
+    const Mat2 &h = jet.hessian;
     const double htt =
         t[0] * (h[0][0] * t[0] + h[0][1] * t[1]) + t[1] * (h[1][0] * t[0] + h[1][1] * t[1]);
     const double htn =

@@ -64,6 +64,48 @@ BernsteinTriangle BernsteinTriangle::dv() const {
   return r;
 }
 
+BernsteinTriangle::Jet BernsteinTriangle::jet(double u, double v) const {
+  Jet j{0, {0, 0}, {{{0, 0}, {0, 0}}}};
+  const auto l = barycentric(u, v);
+  constexpr int kStack = 91; // lattice_size(12)
+  double stack_buf[kStack];
+  std::vector<double> heap;
+  double *w = stack_buf;
+  if (c_.size() > kStack) {
+    heap = c_;
+    w = heap.data();
+  } else {
+    std::copy(c_.begin(), c_.end(), w);
+  }
+  // de Casteljau down to degree 2 (in place, as operator()).
+  for (int n = d_; n > 2; --n)
+    for (int b = 0; b <= n - 1; ++b)
+      for (int a = 0; a <= n - 1 - b; ++a)
+        w[lattice_index(n - 1, a, b)] = l[0] * w[lattice_index(n, a, b)] +
+                                        l[1] * w[lattice_index(n, a + 1, b)] +
+                                        l[2] * w[lattice_index(n, a, b + 1)];
+  const double d = d_;
+  if (d_ >= 2) {
+    auto q = [&](int a, int b) { return w[lattice_index(2, a, b)]; };
+    const double s = d * (d - 1);
+    j.hessian[0][0] = s * (q(2, 0) - 2 * q(1, 0) + q(0, 0));
+    j.hessian[0][1] = j.hessian[1][0] = s * (q(1, 1) - q(1, 0) - q(0, 1) + q(0, 0));
+    j.hessian[1][1] = s * (q(0, 2) - 2 * q(0, 1) + q(0, 0));
+    for (int b = 0; b <= 1; ++b)
+      for (int a = 0; a <= 1 - b; ++a)
+        w[lattice_index(1, a, b)] = l[0] * q(a, b) + l[1] * q(a + 1, b) + l[2] * q(a, b + 1);
+  }
+  if (d_ >= 1) {
+    const double c0 = w[lattice_index(1, 0, 0)], c1 = w[lattice_index(1, 1, 0)],
+                 c2 = w[lattice_index(1, 0, 1)];
+    j.gradient = {d * (c1 - c0), d * (c2 - c0)};
+    j.value = l[0] * c0 + l[1] * c1 + l[2] * c2;
+  } else {
+    j.value = w[0];
+  }
+  return j;
+}
+
 Vec2 BernsteinTriangle::gradient(double u, double v) const { return {du()(u, v), dv()(u, v)}; }
 
 Mat2 BernsteinTriangle::hessian(double u, double v) const {

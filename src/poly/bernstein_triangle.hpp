@@ -38,6 +38,14 @@ public:
   Vec2 gradient(double u, double v) const;
   // [[g_uu, g_uv], [g_uv, g_vv]].
   Mat2 hessian(double u, double v) const;
+  // Value, gradient and Hessian at (u, v) in one de Casteljau pass, without allocating (for
+  // degrees up to 12): the last two steps' coefficients give the derivatives.
+  struct Jet {
+    double value;
+    Vec2 gradient;
+    Mat2 hessian;
+  };
+  Jet jet(double u, double v) const;
 
   // Restriction to edge k (0: P0->P1, 1: P1->P2, 2: P2->P0), parameter t from the first corner.
   BernsteinPoly edge(int k) const;

@@ -79,6 +79,33 @@ TEST_P(BernsteinDegree, LagrangeToBernsteinMatchesDirectEvaluationInBothNodeOrde
   }
 }
 
+TEST_P(BernsteinDegree, JetGivesValueGradientAndHessian) {
+  // Against the closed-form derivatives of the monomial the polynomial interpolates, inside,
+  // on the boundary and outside the triangle.
+  const int d = GetParam();
+  std::mt19937_64 rng(7 + d);
+  Monomial m(d, rng);
+  std::vector<double> vals(lattice_size(d));
+  for (int i = 0; i < lattice_size(d); ++i) {
+    const auto p = lattice_point(d, i);
+    vals[i] = d == 0 ? m.eval(0, 0)
+                     : m.eval(static_cast<double>(p[0]) / d, static_cast<double>(p[1]) / d);
+  }
+  const BernsteinTriangle b = bernstein_from_lattice_values(vals.data(), d);
+  for (const Vec2 &p :
+       {Vec2{0.2, 0.3}, Vec2{0, 0}, Vec2{1, 0}, Vec2{0.5, 0.5}, Vec2{0.05, 0.9}, Vec2{-0.2, 0.7}}) {
+    const BernsteinTriangle::Jet j = b.jet(p[0], p[1]);
+    const double tol = 1e-9 * (1 + d * d * d);
+    EXPECT_NEAR(j.value, m.eval(p[0], p[1]), tol);
+    EXPECT_NEAR(j.gradient[0], m.eval(p[0], p[1], 1, 0), tol);
+    EXPECT_NEAR(j.gradient[1], m.eval(p[0], p[1], 0, 1), tol);
+    EXPECT_NEAR(j.hessian[0][0], m.eval(p[0], p[1], 2, 0), tol);
+    EXPECT_NEAR(j.hessian[0][1], m.eval(p[0], p[1], 1, 1), tol);
+    EXPECT_NEAR(j.hessian[1][0], m.eval(p[0], p[1], 1, 1), tol);
+    EXPECT_NEAR(j.hessian[1][1], m.eval(p[0], p[1], 0, 2), tol);
+  }
+}
+
 TEST_P(BernsteinDegree, EdgeAndSegmentRestrictions) {
   const int d = GetParam();
   std::mt19937_64 rng(99 + d);

@@ -146,14 +146,14 @@ TEST(SweepContourTree, LargeGraphOnTwoThreadsMatches) {
               reference(g, true));
 }
 
-TEST(NodeOrder, AscendingOrderBreaksTiesById) {
+TEST(NodeTotalOrder, AscendingOrderBreaksTiesById) {
   const std::vector<double> values{2, 1, 2, 1, -0.0, 0.0, 1};
   const std::vector<int64_t> expected{4, 5, 1, 3, 6, 0, 2};
   EXPECT_EQ(ascending_order(values), expected);
   EXPECT_TRUE(ascending_order(std::vector<double>{}).empty());
 }
 
-TEST(NodeOrder, RadixOrderEqualsComparisonSort) {
+TEST(NodeTotalOrder, PartitionSortEqualsComparisonSort) {
   // Values of every sign and magnitude (denormals, infinities, many ties): the radix sort of
   // the bit patterns against std::sort with the total order.
   std::mt19937_64 rng(3);
