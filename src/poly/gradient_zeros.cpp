@@ -180,6 +180,43 @@ GradientScreen screen_gradient(std::span<const double> coefficients, int d,
   // triangle (its Bernstein coefficients share a sign), so there is no critical point at all.
   else if (ulo > 0 || uhi < 0 || vlo > 0 || vhi < 0)
     r.verdict = GradientScreen::kNoZero;
+  // Else the same for the component along the mean gradient direction (a, b): if every
+  // coefficient of a g_u + b g_v exceeds its rounding margin with one sign, so does the
+  // polynomial on the closed triangle (a convex combination of them), and the gradient cannot
+  // vanish there. Margins as in the box search (64 (m+1)^2 eps of the scale).
+  else {
+    auto excludes = [&](double a, double b) {
+      const double eps = std::numeric_limits<double>::epsilon();
+      const double margin = 64.0 * d * d * eps * r.scale * (std::abs(a) + std::abs(b));
+      bool positive = true, negative = true;
+      for (int j = 0; j < d && (positive || negative); ++j)
+        for (int i = 0; i + j < d && (positive || negative); ++i) {
+          const double c = coef(i, j);
+          const double x = a * (d * (coef(i + 1, j) - c)), y = b * (d * (coef(i, j + 1) - c));
+          const double h = x + y, m = margin + 2 * eps * (std::abs(x) + std::abs(y));
+          positive = positive && h > m;
+          negative = negative && h < -m;
+        }
+      return positive || negative;
+    };
+    double a = 0, b = 0;
+    for (int j = 0; j < d; ++j)
+      for (int i = 0; i + j < d; ++i) {
+        const double c = coef(i, j);
+        a += coef(i + 1, j) - c;
+        b += coef(i, j + 1) - c;
+      }
+    // The mean gradient direction, then the rows of the inverse Hessian at the centroid (near a
+    // zero they behave like u - u* and v - v*, as in the box search).
+    bool none = excludes(a, b);
+    if (!none && d >= 2) {
+      BernsteinTriangle g(d, std::vector<double>(coefficients.begin(), coefficients.end()));
+      const Mat2 h = g.jet(1.0 / 3, 1.0 / 3).hessian;
+      none = excludes(h[1][1], -h[0][1]) || excludes(-h[0][1], h[0][0]);
+    }
+    if (none)
+      r.verdict = GradientScreen::kNoZero;
+  }
   return r;
 }
 

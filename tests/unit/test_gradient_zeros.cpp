@@ -139,6 +139,60 @@ TEST_P(GradientZerosDegree, RandomPolynomialsAgreeWithBruteForceNewton) {
 
 INSTANTIATE_TEST_SUITE_P(Degrees2To8, GradientZerosDegree, ::testing::Range(2, 9));
 
+TEST(GradientScreen, CombinedComponentsExcludeWhatSingleOnesCannot) {
+  // A bowl centred outside the triangle, beyond its hypotenuse: both gradient components change
+  // sign on the triangle, their combination along the mean gradient does not.
+  const BernsteinTriangle outside = from_function(
+      3, [](double u, double v) { return (u - 0.6) * (u - 0.6) + (v - 0.6) * (v - 0.6); });
+  EXPECT_EQ(screen_gradient(outside.coefficients(), 3, 1e-12).verdict, GradientScreen::kNoZero);
+  EXPECT_TRUE(find_gradient_zeros(outside).zeros.empty());
+  const BernsteinTriangle inside = from_function(
+      3, [](double u, double v) { return (u - 0.3) * (u - 0.3) + (v - 0.3) * (v - 0.3); });
+  EXPECT_EQ(screen_gradient(inside.coefficients(), 3, 1e-12).verdict, GradientScreen::kSearch);
+  ASSERT_EQ(find_gradient_zeros(inside).zeros.size(), 1u);
+}
+
+TEST(GradientScreen, NeverDiscardsACellWithAGradientZero) {
+  // Bowls and saddles centred near the triangle's boundary (inside and out), perturbed at
+  // random, degrees 2 to 8: whenever the screen says "no zero", an independent Newton search
+  // from a dense grid of starts finds none in the closed triangle.
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> U(-1, 1);
+  int discarded = 0;
+  for (int d = 2; d <= 8; ++d)
+    for (int trial = 0; trial < 60; ++trial) {
+      const double cu = 0.5 + 0.6 * U(rng), cv = 0.5 + 0.6 * U(rng), sign = trial % 2 ? 1 : -1;
+      std::vector<double> noise(lattice_size(d));
+      for (double &x : noise)
+        x = 0.02 * U(rng);
+      BernsteinTriangle g = from_function(d, [&](double u, double v) {
+        return (u - cu) * (u - cu) + sign * (v - cv) * (v - cv) + 0.3 * (u - cu) * (v - cv);
+      });
+      for (std::size_t i = 0; i < noise.size(); ++i)
+        g.coefficients()[i] += noise[i];
+      if (screen_gradient(g.coefficients(), d, 1e-12).verdict != GradientScreen::kNoZero)
+        continue;
+      ++discarded;
+      const BernsteinTriangle gu = g.du(), gv = g.dv(), guu = gu.du(), guv = gu.dv(), gvv = gv.dv();
+      for (int i = 0; i <= 30; ++i)
+        for (int j = 0; i + j <= 30; ++j) {
+          double u = i / 30.0, v = j / 30.0;
+          for (int it = 0; it < 50; ++it) {
+            const double fu = gu(u, v), fv = gv(u, v), a = guu(u, v), b = guv(u, v), c = gvv(u, v),
+                         det = a * c - b * b;
+            if (det == 0 || std::abs(u) > 5 || std::abs(v) > 5)
+              break;
+            u -= (c * fu - b * fv) / det;
+            v -= (a * fv - b * fu) / det;
+          }
+          const bool zero = std::abs(gu(u, v)) + std::abs(gv(u, v)) < 1e-10;
+          EXPECT_FALSE(zero && u >= -1e-9 && v >= -1e-9 && u + v <= 1 + 1e-9)
+              << "d=" << d << " trial " << trial << ": zero at (" << u << ", " << v << ")";
+        }
+    }
+  EXPECT_GT(discarded, 50); // the screen does discard cells here
+}
+
 TEST(GradientZeros, DegenerateCasesAreReportedNotDropped) {
   // A ridge: g = -(u - 0.3)^2, critical along the whole line u = 0.3.
   const GradientZeros ridge = find_gradient_zeros(
