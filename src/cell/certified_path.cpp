@@ -79,7 +79,7 @@ double edge_parameter(int k, const Vec2 &p) {
 
 } // namespace
 
-PathField::PathField(BernsteinTriangle poly) : g(std::move(poly)), gu(g.du()), gv(g.dv()) {
+PathField::PathField(BernsteinTriangle poly) : g(std::move(poly)) {
   double scale = 0;
   for (double c : g.coefficients())
     scale = std::max(scale, std::abs(c));
@@ -88,9 +88,8 @@ PathField::PathField(BernsteinTriangle poly) : g(std::move(poly)), gu(g.du()), g
 
 PathField PathField::negated() const {
   PathField f = *this;
-  for (BernsteinTriangle *p : {&f.g, &f.gu, &f.gv})
-    for (double &c : p->coefficients())
-      c = -c;
+  for (double &c : f.g.coefficients())
+    c = -c;
   return f;
 }
 
@@ -156,7 +155,7 @@ int connect_lower(const PathField &f, const CellNodes &cn, const std::vector<dou
   Vec2 x = s;
   for (int step = 0; step < 100; ++step) {
     ++counters.steps;
-    const Vec2 grad = {f.gu(x[0], x[1]), f.gv(x[0], x[1])};
+    const Vec2 grad = f.g.jet(x[0], x[1]).gradient;
     const double gn = std::hypot(grad[0], grad[1]);
     if (!(gn > 0))
       break;

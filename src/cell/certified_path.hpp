@@ -26,10 +26,10 @@ struct PathCounters {
 struct PathField {
   PathField() = default;
   explicit PathField(BernsteinTriangle g);
-  // The field -g (for ascending paths), without recomputing the derivatives.
+  // The field -g (for ascending paths).
   PathField negated() const;
-  BernsteinTriangle g, gu, gv;
-  double margin = 0; // certified strict inequalities use level - margin
+  BernsteinTriangle g; // its gradient, where descent steps need it, from g.jet()
+  double margin = 0;   // certified strict inequalities use level - margin
 };
 
 // True if g < threshold on the segment p -> q, ignoring the first `skip` Bernstein coefficients;

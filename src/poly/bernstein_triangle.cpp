@@ -64,6 +64,14 @@ BernsteinTriangle BernsteinTriangle::dv() const {
   return r;
 }
 
+void BernsteinTriangle::assign(int degree, std::span<const double> coefficients) {
+  if (degree < 0 || coefficients.size() != static_cast<std::size_t>(lattice_size(degree)))
+    throw std::invalid_argument(
+        "BernsteinTriangle::assign: coefficient count does not match the degree");
+  d_ = degree;
+  c_.assign(coefficients.begin(), coefficients.end());
+}
+
 BernsteinTriangle::Jet BernsteinTriangle::jet(double u, double v) const {
   Jet j{0, {0, 0}, {{{0, 0}, {0, 0}}}};
   const auto l = barycentric(u, v);

@@ -10,6 +10,7 @@
 #include "poly/lattice.hpp"
 
 #include <array>
+#include <span>
 #include <utility>
 #include <vector>
 
@@ -28,6 +29,9 @@ public:
   int degree() const { return d_; }
   const std::vector<double> &coefficients() const { return c_; }
   std::vector<double> &coefficients() { return c_; }
+  // Becomes the polynomial of the given degree and coefficients (lattice order), reusing this
+  // one's storage (for per-cell scratch polynomials).
+  void assign(int degree, std::span<const double> coefficients);
   double coefficient(int a, int b) const { return c_[lattice_index(d_, a, b)]; }
 
   // Value at (u, v) by de Casteljau.

@@ -68,14 +68,14 @@ struct CellScratch {
   CellNodes cn;
   std::vector<int> interior_idx;
   std::vector<CellEdgeNode> edge_nodes;
+  BernsteinTriangle poly; // the current cell's polynomial (storage reused from cell to cell)
 };
 
 // The certified connections of regular cell c (interior critical points in scratch.critical),
 // appended with its interior nodes to `out`; or, when a sector cannot be connected, the reason
 // for falling back (nothing appended).
-uint8_t connect_cell(const Mesh &mesh, const EdgeNodes &en, int64_t c,
-                     std::optional<BernsteinTriangle> &g, bool arc_geometry, CellScratch &scratch,
-                     CellChunk &out) {
+uint8_t connect_cell(const Mesh &mesh, const EdgeNodes &en, int64_t c, bool have_polynomial,
+                     bool arc_geometry, CellScratch &scratch, CellChunk &out) {
   const Topology &topo = mesh.topology;
   const Field &field = mesh.field;
   const int64_t edge_base = topo.num_vertices();
@@ -83,8 +83,9 @@ uint8_t connect_cell(const Mesh &mesh, const EdgeNodes &en, int64_t c,
   if (scratch.critical.empty() && en.count(topo.cell_edge(c, 0)) == 0 &&
       en.count(topo.cell_edge(c, 1)) == 0 && en.count(topo.cell_edge(c, 2)) == 0)
     return 0;
-  if (!g)
-    g.emplace(field.cell_polynomial(c));
+  if (!have_polynomial)
+    scratch.poly.assign(field.degree(c), field.coefficients(c));
+  const BernsteinTriangle &g = scratch.poly;
   CellNodes &cn = scratch.cn;
   cn.nodes.clear();
   scratch.interior_idx.clear();
@@ -121,7 +122,7 @@ uint8_t connect_cell(const Mesh &mesh, const EdgeNodes &en, int64_t c,
         {scratch.critical[i].uv, scratch.critical[i].value, -1 - static_cast<int64_t>(i)});
   }
   const SectorResult r =
-      connect_sectors(*g, cn, scratch.interior_idx, scratch.edge_nodes, out.counters, arc_geometry);
+      connect_sectors(g, cn, scratch.interior_idx, scratch.edge_nodes, out.counters, arc_geometry);
   if (r.failed || r.degenerate)
     return r.failed ? kCertificationFailed : kDegenerateEdgeNode;
   // The cell's interior node i becomes the chunk's node first + i.
@@ -189,13 +190,15 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
         if (en.degeneracy[topo.cell_edge(c, j)] != kEdgeOk)
           why |= kDegenerateEdge;
       scratch.critical.clear();
-      std::optional<BernsteinTriangle> g;
+      bool have_polynomial = false; // scratch.poly holds cell c's polynomial
       // Most cells: no gradient zero, decided on the stored coefficients.
       if (screen_gradient(field.coefficients(c), field.degree(c), zero_options.constant_tolerance)
               .verdict != GradientScreen::kNoZero) {
-        g.emplace(field.cell_polynomial(c));
+        scratch.poly.assign(field.degree(c), field.coefficients(c));
+        have_polynomial = true;
+        const BernsteinTriangle &g = scratch.poly;
         cell = c;
-        const GradientZeros z = find_gradient_zeros(*g, zero_options);
+        const GradientZeros z = find_gradient_zeros(g, zero_options);
         if (z.constant)
           why |= kConstantCell;
         if (z.budget_exhausted)
@@ -207,11 +210,12 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
           } else if (p.near_boundary) {
             why |= kZeroNearBoundary;
           } else {
-            scratch.critical.push_back({{p.u, p.v}, (*g)(p.u, p.v)});
+            scratch.critical.push_back({{p.u, p.v}, g(p.u, p.v)});
           }
         }
       }
-      fallback[c] = why ? why : connect_cell(mesh, en, c, g, opt.arc_geometry, scratch, out);
+      fallback[c] =
+          why ? why : connect_cell(mesh, en, c, have_polynomial, opt.arc_geometry, scratch, out);
     }
   });
   const auto t3 = clock_type::now();
