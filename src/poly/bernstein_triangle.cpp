@@ -73,27 +73,32 @@ void BernsteinTriangle::assign(int degree, std::span<const double> coefficients)
 }
 
 BernsteinTriangle::Jet BernsteinTriangle::jet(double u, double v) const {
+  return jet_of(c_, d_, u, v);
+}
+
+BernsteinTriangle::Jet BernsteinTriangle::jet_of(std::span<const double> c, int deg, double u,
+                                                 double v) {
   Jet j{0, {0, 0}, {{{0, 0}, {0, 0}}}};
   const auto l = barycentric(u, v);
   constexpr int kStack = 91; // lattice_size(12)
   double stack_buf[kStack];
   std::vector<double> heap;
   double *w = stack_buf;
-  if (c_.size() > kStack) {
-    heap = c_;
+  if (c.size() > kStack) {
+    heap.assign(c.begin(), c.end());
     w = heap.data();
   } else {
-    std::copy(c_.begin(), c_.end(), w);
+    std::copy(c.begin(), c.end(), w);
   }
   // de Casteljau down to degree 2 (in place, as operator()).
-  for (int n = d_; n > 2; --n)
+  for (int n = deg; n > 2; --n)
     for (int b = 0; b <= n - 1; ++b)
       for (int a = 0; a <= n - 1 - b; ++a)
         w[lattice_index(n - 1, a, b)] = l[0] * w[lattice_index(n, a, b)] +
                                         l[1] * w[lattice_index(n, a + 1, b)] +
                                         l[2] * w[lattice_index(n, a, b + 1)];
-  const double d = d_;
-  if (d_ >= 2) {
+  const double d = deg;
+  if (deg >= 2) {
     auto q = [&](int a, int b) { return w[lattice_index(2, a, b)]; };
     const double s = d * (d - 1);
     j.hessian[0][0] = s * (q(2, 0) - 2 * q(1, 0) + q(0, 0));
@@ -103,7 +108,7 @@ BernsteinTriangle::Jet BernsteinTriangle::jet(double u, double v) const {
       for (int a = 0; a <= 1 - b; ++a)
         w[lattice_index(1, a, b)] = l[0] * q(a, b) + l[1] * q(a + 1, b) + l[2] * q(a, b + 1);
   }
-  if (d_ >= 1) {
+  if (deg >= 1) {
     const double c0 = w[lattice_index(1, 0, 0)], c1 = w[lattice_index(1, 1, 0)],
                  c2 = w[lattice_index(1, 0, 1)];
     j.gradient = {d * (c1 - c0), d * (c2 - c0)};

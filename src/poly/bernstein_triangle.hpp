@@ -50,6 +50,8 @@ public:
     Mat2 hessian;
   };
   Jet jet(double u, double v) const;
+  // The same for coefficients (lattice order) of the given degree held elsewhere.
+  static Jet jet_of(std::span<const double> coefficients, int degree, double u, double v);
 
   // Restriction to edge k (0: P0->P1, 1: P1->P2, 2: P2->P0), parameter t from the first corner.
   BernsteinPoly edge(int k) const;

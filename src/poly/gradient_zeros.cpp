@@ -210,8 +210,7 @@ GradientScreen screen_gradient(std::span<const double> coefficients, int d,
     // zero they behave like u - u* and v - v*, as in the box search).
     bool none = excludes(a, b);
     if (!none && d >= 2) {
-      BernsteinTriangle g(d, std::vector<double>(coefficients.begin(), coefficients.end()));
-      const Mat2 h = g.jet(1.0 / 3, 1.0 / 3).hessian;
+      const Mat2 h = BernsteinTriangle::jet_of(coefficients, d, 1.0 / 3, 1.0 / 3).hessian;
       none = excludes(h[1][1], -h[0][1]) || excludes(-h[0][1], h[0][0]);
     }
     if (none)
