@@ -45,14 +45,11 @@ std::vector<NodeType> ContourTree::types() const {
   return t;
 }
 
-ContourTree merge_trees(const ScalarGraph &g, const MergeTree &join, const MergeTree &split) {
-  const int64_t n = g.size();
-  if (join.size() != n || split.size() != n)
-    throw std::invalid_argument("merge_trees: trees and graph differ in size");
-  // Join tree: parent above, `jdown` children below. Split tree: parent below, `sup` children
-  // above. Children are tracked by count and id sum, so a node with one child knows it.
-  std::vector<int64_t> jparent = join.parent, sparent = split.parent;
-  std::vector<int32_t> jdown = join.children, sup = split.children;
+std::vector<std::array<int64_t, 2>> merge_join_split(std::vector<int64_t> jparent,
+                                                     std::vector<int32_t> jdown,
+                                                     std::vector<int64_t> sparent,
+                                                     std::vector<int32_t> sup) {
+  const int64_t n = static_cast<int64_t>(jparent.size());
   std::vector<int64_t> jsum(n, 0), ssum(n, 0);
   for (int64_t v = 0; v < n; ++v) {
     if (jparent[v] >= 0)
@@ -68,50 +65,21 @@ ContourTree merge_trees(const ScalarGraph &g, const MergeTree &join, const Merge
   for (int64_t v = 0; v < n; ++v)
     if (is_leaf(v))
       queue.push_back(v);
-
-  ContourTree ct;
-  ct.nodes = g.ascending();
-  ct.values.resize(n);
-  std::vector<int64_t> index(n);
-  for (int64_t i = 0; i < n; ++i) {
-    index[ct.nodes[i]] = i;
-    ct.values[i] = g.value(ct.nodes[i]);
-  }
-  auto add_arc = [&](int64_t a, int64_t b) {
-    int64_t ia = index[a], ib = index[b];
-    if (ia > ib)
-      std::swap(ia, ib);
-    ct.arcs.push_back({ia, ib});
-  };
-  // Removes v from the join tree (it has <= 1 child there).
-  auto remove_from_join = [&](int64_t v) {
-    const int64_t p = jparent[v];
-    const int64_t child = jdown[v] == 1 ? jsum[v] : -1;
+  std::vector<std::array<int64_t, 2>> arcs;
+  arcs.reserve(static_cast<std::size_t>(n));
+  auto remove_from = [](std::vector<int64_t> &parent, std::vector<int32_t> &count,
+                        std::vector<int64_t> &sum, int64_t v) {
+    const int64_t p = parent[v];
+    const int64_t child = count[v] == 1 ? sum[v] : -1;
     if (p >= 0) {
-      jsum[p] -= v;
-      --jdown[p];
+      sum[p] -= v;
+      --count[p];
     }
     if (child >= 0) {
-      jparent[child] = p;
+      parent[child] = p;
       if (p >= 0) {
-        jsum[p] += child;
-        ++jdown[p];
-      }
-    }
-    return p;
-  };
-  auto remove_from_split = [&](int64_t v) {
-    const int64_t p = sparent[v];
-    const int64_t child = sup[v] == 1 ? ssum[v] : -1;
-    if (p >= 0) {
-      ssum[p] -= v;
-      --sup[p];
-    }
-    if (child >= 0) {
-      sparent[child] = p;
-      if (p >= 0) {
-        ssum[p] += child;
-        ++sup[p];
+        sum[p] += child;
+        ++count[p];
       }
     }
     return p;
@@ -120,27 +88,40 @@ ContourTree merge_trees(const ScalarGraph &g, const MergeTree &join, const Merge
     const int64_t v = queue[q];
     if (removed[v] || !is_leaf(v))
       continue;
-    int64_t other;
-    if (jdown[v] == 0 && sup[v] <= 1) {
-      // A lower leaf: its contour-tree arc goes up, to its join-tree parent.
-      other = jparent[v];
-      if (other < 0 && sup[v] == 0)
-        continue; // the last node of its component
-      if (other < 0)
-        continue; // join root with an upper neighbour left: handled as an upper leaf
-      add_arc(v, other);
-    } else {
-      other = sparent[v];
-      if (other < 0)
-        continue;
-      add_arc(v, other);
-    }
+    // A lower leaf's arc goes up, to its join-tree parent; an upper leaf's down, to its split
+    // parent. A join root with an upper neighbour left is handled as an upper leaf; the last
+    // node of a component has no arc.
+    const int64_t other = jdown[v] == 0 && sup[v] <= 1 ? jparent[v] : sparent[v];
+    if (other < 0)
+      continue;
+    arcs.push_back({std::min(v, other), std::max(v, other)});
     removed[v] = 1;
-    const int64_t jp = remove_from_join(v);
-    const int64_t sp = remove_from_split(v);
+    const int64_t jp = remove_from(jparent, jdown, jsum, v);
+    const int64_t sp = remove_from(sparent, sup, ssum, v);
     for (int64_t w : {jp, sp})
       if (w >= 0 && !removed[w] && is_leaf(w))
         queue.push_back(w);
+  }
+  return arcs;
+}
+
+ContourTree merge_trees(const ScalarGraph &g, const MergeTree &join, const MergeTree &split) {
+  const int64_t n = g.size();
+  if (join.size() != n || split.size() != n)
+    throw std::invalid_argument("merge_trees: trees and graph differ in size");
+  ContourTree ct;
+  ct.nodes = g.ascending();
+  ct.values.resize(n);
+  std::vector<int64_t> index(n);
+  for (int64_t i = 0; i < n; ++i) {
+    index[ct.nodes[i]] = i;
+    ct.values[i] = g.value(ct.nodes[i]);
+  }
+  ct.arcs = merge_join_split(join.parent, join.children, split.parent, split.children);
+  for (auto &a : ct.arcs) {
+    a = {index[a[0]], index[a[1]]};
+    if (a[0] > a[1])
+      std::swap(a[0], a[1]);
   }
   std::sort(ct.arcs.begin(), ct.arcs.end());
   return ct;

@@ -28,6 +28,15 @@ struct ContourTree {
   std::vector<NodeType> types() const;
 };
 
+// The join/split merge on plain arrays over nodes 0..n-1 (Carr, Snoeyink, Axen): join-tree parent
+// (above, -1 at a root) and number of children, split-tree parent (below) and number of
+// children; leaves of either tree are peeled off one by one (children tracked by count and sum,
+// so a node with one child knows it). Returns the arcs as node pairs (smaller number first).
+std::vector<std::array<int64_t, 2>> merge_join_split(std::vector<int64_t> jparent,
+                                                     std::vector<int32_t> jdown,
+                                                     std::vector<int64_t> sparent,
+                                                     std::vector<int32_t> sup);
+
 // Merges augmented join and split trees of the same graph into the augmented contour tree (every
 // graph node, n - 1 arcs per connected component). Requires both trees from one ScalarGraph.
 ContourTree merge_trees(const ScalarGraph &graph, const MergeTree &join, const MergeTree &split);

@@ -115,70 +115,6 @@ RankTree<I> sweep_up(int64_t n, std::initializer_list<std::span<const GraphEdge>
   return t;
 }
 
-// Merges the join tree (parent above) and the split tree (parent below), both in rank space,
-// into the augmented contour tree's arcs (lower rank first): leaves of either tree are peeled
-// off one by one (Carr, Snoeyink, Axen). Children are tracked by count and rank sum, so a node
-// with one child knows it.
-std::vector<std::array<int64_t, 2>> merge_ranked(std::vector<int64_t> jparent,
-                                                 std::vector<int32_t> jdown,
-                                                 std::vector<int64_t> sparent,
-                                                 std::vector<int32_t> sup) {
-  const int64_t n = static_cast<int64_t>(jparent.size());
-  std::vector<int64_t> jsum(n, 0), ssum(n, 0);
-  for (int64_t v = 0; v < n; ++v) {
-    if (jparent[v] >= 0)
-      jsum[jparent[v]] += v;
-    if (sparent[v] >= 0)
-      ssum[sparent[v]] += v;
-  }
-  std::vector<char> removed(n, 0);
-  std::vector<int64_t> queue;
-  auto is_leaf = [&](int64_t v) {
-    return (jdown[v] == 0 && sup[v] <= 1) || (sup[v] == 0 && jdown[v] <= 1);
-  };
-  for (int64_t v = 0; v < n; ++v)
-    if (is_leaf(v))
-      queue.push_back(v);
-  std::vector<std::array<int64_t, 2>> arcs;
-  arcs.reserve(static_cast<std::size_t>(n));
-  auto remove_from = [](std::vector<int64_t> &parent, std::vector<int32_t> &count,
-                        std::vector<int64_t> &sum, int64_t v) {
-    const int64_t p = parent[v];
-    const int64_t child = count[v] == 1 ? sum[v] : -1;
-    if (p >= 0) {
-      sum[p] -= v;
-      --count[p];
-    }
-    if (child >= 0) {
-      parent[child] = p;
-      if (p >= 0) {
-        sum[p] += child;
-        ++count[p];
-      }
-    }
-    return p;
-  };
-  for (std::size_t q = 0; q < queue.size(); ++q) {
-    const int64_t v = queue[q];
-    if (removed[v] || !is_leaf(v))
-      continue;
-    // A lower leaf's arc goes up, to its join-tree parent; an upper leaf's down, to its split
-    // parent. A join root with an upper neighbour left is handled as an upper leaf; the last
-    // node of a component has no arc.
-    const int64_t other = jdown[v] == 0 && sup[v] <= 1 ? jparent[v] : sparent[v];
-    if (other < 0)
-      continue;
-    arcs.push_back({std::min(v, other), std::max(v, other)});
-    removed[v] = 1;
-    const int64_t jp = remove_from(jparent, jdown, jsum, v);
-    const int64_t sp = remove_from(sparent, sup, ssum, v);
-    for (int64_t w : {jp, sp})
-      if (w >= 0 && !removed[w] && is_leaf(w))
-        queue.push_back(w);
-  }
-  return arcs;
-}
-
 } // namespace
 
 namespace {
@@ -229,7 +165,8 @@ ContourTree sweep_ranked(std::span<const double> values, const SweepEdges &edges
       su[r] = split_children(r);
     }
     out.nodes = std::move(order);
-    out.arcs = merge_ranked(std::move(jp), std::move(join.children), std::move(sp), std::move(su));
+    out.arcs =
+        merge_join_split(std::move(jp), std::move(join.children), std::move(sp), std::move(su));
   } else {
     // A node's down-degree in the contour tree is its number of join-tree children, its
     // up-degree its number of split-tree children. Regular nodes (one of each) are spliced out of
@@ -267,7 +204,7 @@ ContourTree sweep_ranked(std::span<const double> values, const SweepEdges &edges
         su[index[r]] = split_children(r);
       }
     }
-    out.arcs = merge_ranked(std::move(jp), std::move(jd), std::move(sp), std::move(su));
+    out.arcs = merge_join_split(std::move(jp), std::move(jd), std::move(sp), std::move(su));
   }
   std::sort(out.arcs.begin(), out.arcs.end());
   out.values.resize(out.nodes.size());
