@@ -19,29 +19,44 @@ BernsteinTriangle::BernsteinTriangle(int degree, std::vector<double> coefficient
 BernsteinTriangle::BernsteinTriangle(int degree)
     : d_(degree), c_(static_cast<std::size_t>(lattice_size(degree)), 0.0) {}
 
-double BernsteinTriangle::operator()(double u, double v) const {
-  const auto l = barycentric(u, v);
-  // In place: step n overwrites the lower-degree coefficients it no longer needs. A stack buffer
-  // covers degrees up to 12 without allocating.
-  constexpr int kStack = 91; // lattice_size(12)
-  double stack_buf[kStack];
-  std::vector<double> heap;
-  double *w = stack_buf;
-  if (c_.size() > kStack) {
-    heap = c_;
-    w = heap.data();
-  } else {
-    std::copy(c_.begin(), c_.end(), w);
+namespace {
+
+// A working copy of coefficients for de Casteljau in place: on the stack up to degree 12 (no
+// allocation), else on the heap.
+struct WorkCopy {
+  explicit WorkCopy(std::span<const double> c) {
+    if (c.size() > kStack) {
+      heap.assign(c.begin(), c.end());
+      w = heap.data();
+    } else {
+      std::copy(c.begin(), c.end(), stack);
+    }
   }
-  for (int n = d_; n > 0; --n)
+  static constexpr std::size_t kStack = 91; // lattice_size(12)
+  double stack[kStack];
+  std::vector<double> heap;
+  double *w = stack;
+};
+
+// de Casteljau steps in place from degree `from` down to degree `to` at barycentric l: step n
+// overwrites the lower-degree coefficients it no longer needs (index (a, b) in degree n-1 is <=
+// index (a, b) in degree n, and the entries of degree n read later, (a+1, b) and (a, b+1), have
+// larger indices).
+void casteljau_down(double *w, int from, int to, const std::array<double, 3> &l) {
+  for (int n = from; n > to; --n)
     for (int b = 0; b <= n - 1; ++b)
       for (int a = 0; a <= n - 1 - b; ++a)
-        // Index (a, b) in degree n-1 is <= index (a, b) in degree n, and entries of degree n
-        // read later, (a+1, b) and (a, b+1), have larger indices: safe in place.
         w[lattice_index(n - 1, a, b)] = l[0] * w[lattice_index(n, a, b)] +
                                         l[1] * w[lattice_index(n, a + 1, b)] +
                                         l[2] * w[lattice_index(n, a, b + 1)];
-  return w[0];
+}
+
+} // namespace
+
+double BernsteinTriangle::operator()(double u, double v) const {
+  WorkCopy work(c_);
+  casteljau_down(work.w, d_, 0, barycentric(u, v));
+  return work.w[0];
 }
 
 BernsteinTriangle BernsteinTriangle::du() const {
@@ -80,23 +95,9 @@ BernsteinTriangle::Jet BernsteinTriangle::jet_of(std::span<const double> c, int 
                                                  double v) {
   Jet j{0, {0, 0}, {{{0, 0}, {0, 0}}}};
   const auto l = barycentric(u, v);
-  constexpr int kStack = 91; // lattice_size(12)
-  double stack_buf[kStack];
-  std::vector<double> heap;
-  double *w = stack_buf;
-  if (c.size() > kStack) {
-    heap.assign(c.begin(), c.end());
-    w = heap.data();
-  } else {
-    std::copy(c.begin(), c.end(), w);
-  }
-  // de Casteljau down to degree 2 (in place, as operator()).
-  for (int n = deg; n > 2; --n)
-    for (int b = 0; b <= n - 1; ++b)
-      for (int a = 0; a <= n - 1 - b; ++a)
-        w[lattice_index(n - 1, a, b)] = l[0] * w[lattice_index(n, a, b)] +
-                                        l[1] * w[lattice_index(n, a + 1, b)] +
-                                        l[2] * w[lattice_index(n, a, b + 1)];
+  WorkCopy work(c);
+  double *w = work.w;
+  casteljau_down(w, deg, 2, l); // to degree 2: its coefficients give the Hessian
   const double d = deg;
   if (deg >= 2) {
     auto q = [&](int a, int b) { return w[lattice_index(2, a, b)]; };
