@@ -1,5 +1,7 @@
 #include "tree/scalar_graph.hpp"
 
+#include "tree/node_order.hpp"
+
 #include <algorithm>
 #include <numeric>
 #include <stdexcept>
@@ -46,19 +48,7 @@ ScalarGraph::ScalarGraph(std::vector<double> values, std::span<const GraphEdge> 
       adj_[pos[a]++] = b;
       adj_[pos[b]++] = a;
     }
-  // Sort (value, id) records directly: cache-friendlier than an indirect sort of ids.
-  struct Key {
-    double value;
-    int64_t id;
-  };
-  std::vector<Key> keys(n);
-  for (int64_t v = 0; v < n; ++v)
-    keys[v] = {values_[v], v};
-  std::sort(keys.begin(), keys.end(),
-            [](const Key &a, const Key &b) { return node_less(a.value, a.id, b.value, b.id); });
-  ascending_.resize(n);
-  for (int64_t i = 0; i < n; ++i)
-    ascending_[i] = keys[i].id;
+  ascending_ = ascending_order(values_); // the one total order (value, id)
 }
 
 } // namespace hoct
