@@ -10,63 +10,52 @@ namespace hoct {
 
 namespace {
 
-// The nodes of one edge (ascending t) and its degeneracy bits.
-uint8_t edge_nodes_of(const BernsteinPoly &p, double value_scale, const EdgeNodeOptions &opt,
+// The nodes of edge polynomial p (ascending t) and its degeneracy bits. Most edges of a smooth
+// field are strictly monotone: they are decided on the coefficients without building anything
+// (the derivative neither constant at rounding level nor near zero anywhere, the test
+// find_roots starts with). The rest works in per-thread buffers: no allocation per edge.
+uint8_t edge_nodes_of(std::span<const double> p, double value_scale, const EdgeNodeOptions &opt,
                       std::vector<EdgeNode> &nodes) {
   uint8_t deg = kEdgeOk;
-  if (p.degree() < 1)
+  const int n = static_cast<int>(p.size()) - 1;
+  if (n < 1)
     return deg;
-  const BernsteinPoly dp = p.derivative();
+  thread_local std::vector<double> dp, ddp;
+  thread_local std::vector<Root> roots;
+  dp.resize(static_cast<std::size_t>(n));
+  bernstein_derivative(p, dp.data());
   // A constant edge (derivative zero up to rounding of the values).
   double dscale = 0, pscale = 0;
-  for (double c : dp.coefficients())
+  for (double c : dp)
     dscale = std::max(dscale, std::abs(c));
-  for (double c : p.coefficients())
+  for (double c : p)
     pscale = std::max(pscale, std::abs(c));
   if (dscale <= 1e-12 * pscale)
     return deg | kEdgeConstant;
-  const std::vector<Root> roots = find_roots(dp);
+  if (certainly_rootless(dp))
+    return deg;
+  find_roots(dp, roots);
   if (roots.empty())
     return deg;
-  const BernsteinPoly ddp = dp.derivative();
+  // The second derivative (as BernsteinPoly::derivative: the zero constant below degree 2).
+  ddp.assign(1, 0.0);
+  if (n >= 2) {
+    ddp.resize(static_cast<std::size_t>(n - 1));
+    bernstein_derivative(dp, ddp.data());
+  }
   for (const Root &r : roots) {
     if (r.t <= opt.vertex_tolerance || r.t >= 1 - opt.vertex_tolerance) {
       deg |= kEdgeRootAtVertex;
       continue; // the vertex itself is the node
     }
-    const double second = ddp(r.t);
+    const double second = bernstein_value(ddp, r.t);
     if (!r.simple)
       deg |= kEdgeMultipleRoot;
     else if (std::abs(second) <= opt.flat_tolerance * value_scale)
       deg |= kEdgeFlatCriticalPoint;
-    nodes.push_back({r.t, p(r.t), second, r.simple});
+    nodes.push_back({r.t, bernstein_value(p, r.t), second, r.simple});
   }
   return deg;
-}
-
-// Most edges of a smooth field are strictly monotone: edge_nodes_of would find a derivative that
-// is neither constant (at rounding level) nor has a root (certainly_rootless, the test
-// find_roots starts with). Decided here without building the polynomials.
-bool monotone(std::span<const double> c) {
-  if (c.size() < 2)
-    return false;
-  constexpr std::size_t kSmall = 32;
-  double small[kSmall];
-  std::vector<double> large;
-  double *d = small;
-  if (c.size() - 1 > kSmall) {
-    large.resize(c.size() - 1);
-    d = large.data();
-  }
-  const int n = static_cast<int>(c.size()) - 1;
-  double dscale = 0, pscale = 0;
-  for (int i = 0; i < n; ++i) {
-    d[i] = n * (c[i + 1] - c[i]); // as BernsteinPoly::derivative
-    dscale = std::max(dscale, std::abs(d[i]));
-  }
-  for (double x : c)
-    pscale = std::max(pscale, std::abs(x));
-  return !(dscale <= 1e-12 * pscale) && certainly_rootless({d, static_cast<std::size_t>(n)});
 }
 
 } // namespace
@@ -88,10 +77,8 @@ EdgeNodes find_edge_nodes(const Topology &topo, const Field &field, const EdgeNo
     for (int64_t b = b0; b < b1; ++b)
       for (int64_t e = ne * b / blocks; e < ne * (b + 1) / blocks; ++e) {
         const std::size_t before = block_nodes[b].size();
-        uint8_t degeneracy = kEdgeOk;
-        if (!monotone(field.edge_coefficients(e)))
-          degeneracy = edge_nodes_of(field.edge_polynomial(e), value_scale, opt, block_nodes[b]);
-        out.degeneracy[e] = degeneracy;
+        out.degeneracy[e] =
+            edge_nodes_of(field.edge_coefficients(e), value_scale, opt, block_nodes[b]);
         out.offset[e + 1] = static_cast<int64_t>(block_nodes[b].size() - before);
       }
   });

@@ -7,19 +7,19 @@
 
 namespace hoct {
 
-double BernsteinPoly::operator()(double t) const {
-  if (c_.empty())
+double bernstein_value(std::span<const double> c, double t) {
+  if (c.empty())
     return 0.0;
-  const int n = degree();
+  const int n = static_cast<int>(c.size()) - 1;
   // Small fixed buffer for the usual degrees; heap only above.
   double stack_buf[32];
   std::vector<double> heap;
   double *w = stack_buf;
   if (n + 1 > 32) {
-    heap.assign(c_.begin(), c_.end());
+    heap.assign(c.begin(), c.end());
     w = heap.data();
   } else {
-    std::copy(c_.begin(), c_.end(), w);
+    std::copy(c.begin(), c.end(), w);
   }
   const double s = 1.0 - t;
   for (int r = 1; r <= n; ++r)
@@ -28,13 +28,20 @@ double BernsteinPoly::operator()(double t) const {
   return w[0];
 }
 
+void bernstein_derivative(std::span<const double> c, double *out) {
+  const int n = static_cast<int>(c.size()) - 1;
+  for (int i = 0; i < n; ++i)
+    out[i] = n * (c[i + 1] - c[i]);
+}
+
+double BernsteinPoly::operator()(double t) const { return bernstein_value(c_, t); }
+
 BernsteinPoly BernsteinPoly::derivative() const {
   const int n = degree();
   if (n <= 0)
     return BernsteinPoly(std::vector<double>{0.0});
   std::vector<double> d(n);
-  for (int i = 0; i < n; ++i)
-    d[i] = n * (c_[i + 1] - c_[i]);
+  bernstein_derivative(c_, d.data());
   return BernsteinPoly(std::move(d));
 }
 

@@ -4,10 +4,18 @@
 // coefficients enclose its range on [0, 1] (convex hull property).
 #pragma once
 
+#include <span>
 #include <utility>
 #include <vector>
 
 namespace hoct {
+
+// Value at t of the polynomial with Bernstein coefficients c (de Casteljau; stable for t in
+// [0, 1]); 0 for no coefficients. BernsteinPoly::operator() is this.
+double bernstein_value(std::span<const double> c, double t);
+// The derivative's coefficients n (c[i+1] - c[i]), i < n = c.size() - 1, into out[0 .. n)
+// (nothing for n = 0). BernsteinPoly::derivative is this.
+void bernstein_derivative(std::span<const double> c, double *out);
 
 class BernsteinPoly {
 public:

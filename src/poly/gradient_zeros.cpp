@@ -29,11 +29,12 @@ struct Box {
   std::size_t offset;
 };
 
-// A polynomial in monomial form a[i * (d+1) + j] u^i v^j, evaluated by nested Horner with a
-// rigorous bound on the rounding error.
+// A polynomial in monomial form a[i * (d+1) + j] u^i v^j (a view of scratch storage),
+// evaluated by nested Horner with a rigorous bound on the rounding error.
 struct Monomial {
-  std::vector<double> a;
+  double *a = nullptr;
   int d = 0;
+  std::size_t size() const { return static_cast<std::size_t>(d + 1) * (d + 1); }
   double operator()(double u, double v) const {
     double r = 0;
     for (int i = d; i >= 0; --i) {
@@ -59,55 +60,60 @@ struct Monomial {
     }
     return 2 * (4 * d + 6) * std::numeric_limits<double>::epsilon() * r;
   }
-  Monomial du() const { return derivative(true); }
-  Monomial dv() const { return derivative(false); }
-
-private:
-  Monomial derivative(bool in_u) const {
-    Monomial m;
-    m.d = std::max(d - 1, 0);
-    m.a.assign(static_cast<std::size_t>(m.d + 1) * (m.d + 1), 0.0);
-    for (int i = 0; i <= d; ++i)
-      for (int j = 0; i + j <= d; ++j) {
-        const double c = a[static_cast<std::size_t>(i) * (d + 1) + j];
-        if (in_u && i > 0)
-          m.a[static_cast<std::size_t>(i - 1) * (m.d + 1) + j] += i * c;
-        if (!in_u && j > 0)
-          m.a[static_cast<std::size_t>(i) * (m.d + 1) + (j - 1)] += j * c;
-      }
-    return m;
-  }
 };
 
-Monomial monomial_of(const BernsteinTriangle &p) { return {to_monomial(p), p.degree()}; }
-
-// Upper bound of |p| on the box |u - x| <= rx, |v - y| <= ry.
-double abs_bound(const Monomial &p, double x, double y, double rx, double ry) {
-  const double bu = std::abs(x) + rx, bv = std::abs(y) + ry;
-  double r = 0;
-  for (int i = p.d; i >= 0; --i) {
-    const double *row = &p.a[static_cast<std::size_t>(i) * (p.d + 1)];
-    double s = 0;
-    for (int j = p.d - i; j >= 0; --j)
-      s = s * bv + std::abs(row[j]);
-    r = r * bu + s;
-  }
-  return r;
+// The partial derivative of p in u (or v), of degree max(d - 1, 0), into storage at `out`.
+Monomial derivative(const Monomial &p, bool in_u, double *out) {
+  Monomial m{out, std::max(p.d - 1, 0)};
+  std::fill(out, out + m.size(), 0.0);
+  for (int i = 0; i <= p.d; ++i)
+    for (int j = 0; i + j <= p.d; ++j) {
+      const double c = p.a[static_cast<std::size_t>(i) * (p.d + 1) + j];
+      if (in_u && i > 0)
+        m.a[static_cast<std::size_t>(i - 1) * (m.d + 1) + j] += i * c;
+      if (!in_u && j > 0)
+        m.a[static_cast<std::size_t>(i) * (m.d + 1) + (j - 1)] += j * c;
+    }
+  return m;
 }
 
-// Enclosure of s p + t q over the box (p, q of the same degree), the rounding of forming the
-// combination's coefficients included.
-Iv hessian_row_range(double s, const Monomial &p, double t, const Monomial &q, double x, double y,
-                     double rx, double ry) {
-  thread_local std::vector<double> combined;
-  combined.resize(p.a.size());
-  for (std::size_t i = 0; i < combined.size(); ++i)
-    combined[i] = s * p.a[i] + t * q.a[i];
-  const auto [lo, hi] = monomial_range(combined, p.d, x, y, rx, ry);
+// A polynomial's Taylor expansion at a box centre (taylor_expansion), for enclosures of it and
+// of combinations with others over boxes around that centre.
+struct Taylor {
+  const double *e = nullptr;
+  int d = 0;
+  double magnitude = 0; // 64 eps times it bounds the rounding of every coefficient
+};
+Taylor expand(const Monomial &p, double x, double y, double *storage) {
+  return {storage, p.d, taylor_expansion(p.a, p.d, x, y, storage)};
+}
+
+// Enclosure of s P + t Q over the box |u - x| <= rx, |v - y| <= ry, for P and Q (same degree)
+// expanded at (x, y): the centre coefficient plus or minus the others times the radii' powers,
+// widened by the rounding of the expansions (64 eps of their magnitudes), of the combination
+// and of the sum (4 eps of its terms). Beyond degree 31 (binomials no longer exact in the
+// expansion) the whole line.
+Iv combination_range(double s, const Taylor &P, double t, const Taylor &Q, double rx, double ry) {
+  const int d = P.d;
+  if (d >= 32)
+    return {-INFINITY, INFINITY};
+  const double eps = std::numeric_limits<double>::epsilon();
+  double centre = 0, spread = 0, terms = 0, pa = 1;
+  for (int a = 0; a <= d; ++a, pa *= rx) {
+    double w = pa;
+    for (int b = 0; a + b <= d; ++b, w *= ry) {
+      const std::size_t k = static_cast<std::size_t>(a) * (d + 1) + b;
+      const double x = s * P.e[k], y = t * Q.e[k];
+      terms += (std::abs(x) + std::abs(y)) * w;
+      if (a == 0 && b == 0)
+        centre = x + y;
+      else
+        spread += std::abs(x + y) * w;
+    }
+  }
   const double round =
-      4 * std::numeric_limits<double>::epsilon() *
-      (std::abs(s) * abs_bound(p, x, y, rx, ry) + std::abs(t) * abs_bound(q, x, y, rx, ry));
-  return {lo - round, hi + round};
+      64 * eps * (std::abs(s) * P.magnitude + std::abs(t) * Q.magnitude) + 4 * eps * terms;
+  return {centre - spread - round, centre + spread + round};
 }
 
 // True if every coefficient exceeds `margin` in absolute value with one common sign: the
@@ -155,19 +161,29 @@ GradientScreen screen_gradient(std::span<const double> coefficients, int d,
     r.verdict = GradientScreen::kNoZero; // a non-constant linear field has no critical point
     return r;
   }
-  // The gradient's Bernstein coefficients d (c[a+1,b] - c[a,b]) and d (c[a,b+1] - c[a,b]),
-  // scanned without building them first.
-  auto coef = [&](int a, int b) { return coefficients[lattice_index(d, a, b)]; };
+  // The gradient's Bernstein coefficients d (c[a+1,b] - c[a,b]) and d (c[a,b+1] - c[a,b]) (as
+  // BernsteinTriangle::du and ::dv), in a per-thread buffer.
+  const std::size_t n = static_cast<std::size_t>(lattice_size(d - 1));
+  thread_local std::vector<double> grad;
+  grad.resize(2 * n);
+  double *gu = grad.data(), *gv = gu + n;
   double ulo = INFINITY, uhi = -INFINITY, vlo = INFINITY, vhi = -INFINITY;
-  for (int b = 0; b < d; ++b)
-    for (int a = 0; a + b < d; ++a) {
-      const double c = coef(a, b);
-      const double gu_ab = d * (coef(a + 1, b) - c), gv_ab = d * (coef(a, b + 1) - c);
-      ulo = std::min(ulo, gu_ab);
-      uhi = std::max(uhi, gu_ab);
-      vlo = std::min(vlo, gv_ab);
-      vhi = std::max(vhi, gv_ab);
+  {
+    std::size_t k = 0;
+    for (int b = 0; b < d; ++b) {
+      // Row b of the lattice and the row above it.
+      const double *row = &coefficients[lattice_index(d, 0, b)];
+      const double *up = &coefficients[lattice_index(d, 0, b + 1)];
+      for (int a = 0; a + b < d; ++a, ++k) {
+        gu[k] = d * (row[a + 1] - row[a]);
+        gv[k] = d * (up[a] - row[a]);
+        ulo = std::min(ulo, gu[k]);
+        uhi = std::max(uhi, gu[k]);
+        vlo = std::min(vlo, gv[k]);
+        vhi = std::max(vhi, gv[k]);
+      }
     }
+  }
   r.scale = std::max({-ulo, uhi, -vlo, vhi});
   // Constant up to rounding: the gradient is round-off of the values (e.g. a constant field
   // converted from Lagrange to Bernstein form).
@@ -185,27 +201,30 @@ GradientScreen screen_gradient(std::span<const double> coefficients, int d,
   // polynomial on the closed triangle (a convex combination of them), and the gradient cannot
   // vanish there. Margins as in the box search (64 (m+1)^2 eps of the scale).
   else {
+    const double eps = std::numeric_limits<double>::epsilon();
     auto excludes = [&](double a, double b) {
-      const double eps = std::numeric_limits<double>::epsilon();
       const double margin = 64.0 * d * d * eps * r.scale * (std::abs(a) + std::abs(b));
       bool positive = true, negative = true;
-      for (int j = 0; j < d && (positive || negative); ++j)
-        for (int i = 0; i + j < d && (positive || negative); ++i) {
-          const double c = coef(i, j);
-          const double x = a * (d * (coef(i + 1, j) - c)), y = b * (d * (coef(i, j + 1) - c));
-          const double h = x + y, m = margin + 2 * eps * (std::abs(x) + std::abs(y));
-          positive = positive && h > m;
-          negative = negative && h < -m;
-        }
+      for (std::size_t k = 0; k < n && (positive || negative); ++k) {
+        const double x = a * gu[k], y = b * gv[k];
+        const double h = x + y, m = margin + 2 * eps * (std::abs(x) + std::abs(y));
+        positive = positive && h > m;
+        negative = negative && h < -m;
+      }
       return positive || negative;
     };
     double a = 0, b = 0;
-    for (int j = 0; j < d; ++j)
-      for (int i = 0; i + j < d; ++i) {
-        const double c = coef(i, j);
-        a += coef(i + 1, j) - c;
-        b += coef(i, j + 1) - c;
+    {
+      std::size_t k = 0;
+      for (int j = 0; j < d; ++j) {
+        const double *row = &coefficients[lattice_index(d, 0, j)];
+        const double *up = &coefficients[lattice_index(d, 0, j + 1)];
+        for (int i = 0; i + j < d; ++i, ++k) {
+          a += row[i + 1] - row[i];
+          b += up[i] - row[i];
+        }
       }
+    }
     // The mean gradient direction, then the rows of the inverse Hessian at the centroid (near a
     // zero they behave like u - u* and v - v*, as in the box search).
     bool none = excludes(a, b);
@@ -255,10 +274,28 @@ GradientZeros search_zeros(const BernsteinTriangle &g, const GradientZeroOptions
   // The retry in the cell's shape gets a tenth of the budget: it is for slivers whose field is
   // smooth in the plane, where it needs a few boxes per cell, not for degenerate cells.
   const int64_t budget = use_frame ? std::max<int64_t>(opt.max_boxes / 10, 1) : opt.max_boxes;
-  const BernsteinTriangle gu = g.du(), gv = g.dv();
   // Evaluation in monomial form (Horner) with rigorous rounding bounds; the subdivision itself
-  // works on tensor Bernstein coefficients.
-  Monomial mu = monomial_of(gu), mv = monomial_of(gv);
+  // works on tensor Bernstein coefficients. The gradient components (Bernstein, then monomial),
+  // the Hessian's entries and their Taylor expansions live in one per-thread buffer.
+  const int m = d - 1;
+  if (m > 60)
+    throw std::invalid_argument("find_gradient_zeros: degree above 61 is not supported");
+  const std::size_t tri = static_cast<std::size_t>(lattice_size(m)),
+                    sz = static_cast<std::size_t>(m + 1) * (m + 1),
+                    hsz = static_cast<std::size_t>(std::max(m, 1)) * std::max(m, 1);
+  thread_local std::vector<double> store;
+  store.resize(2 * tri + 2 * sz + 6 * hsz);
+  double *bu = store.data(), *bv = bu + tri, *hessian_store = bv + tri + 2 * sz;
+  for (int b = 0; b <= m; ++b)
+    for (int a = 0; a <= m - b; ++a) {
+      // As BernsteinTriangle::du and ::dv.
+      const double c = g.coefficient(a, b);
+      bu[lattice_index(m, a, b)] = d * (g.coefficient(a + 1, b) - c);
+      bv[lattice_index(m, a, b)] = d * (g.coefficient(a, b + 1) - c);
+    }
+  Monomial mu{bv + tri, m}, mv{bv + tri + sz, m};
+  to_monomial(bu, m, mu.a);
+  to_monomial(bv, m, mv.a);
   const double eps = std::numeric_limits<double>::epsilon();
   // The coefficients themselves carry the rounding of their computation from the data (e.g. the
   // Lagrange -> Bernstein conversion), relative to the gradient's scale: a gradient component
@@ -294,12 +331,11 @@ GradientZeros search_zeros(const BernsteinTriangle &g, const GradientZeroOptions
       B = {{{side * Ti[0][0], side * Ti[0][1]}, {side * Ti[1][0], side * Ti[1][1]}}};
       c0 = {Ti[0][0] * xlo + Ti[0][1] * ylo, Ti[1][0] * xlo + Ti[1][1] * ylo};
       // The gradient in box coordinates: B^T (g_u, g_v) at B x + c.
-      const int m = d - 1;
       thread_local std::vector<double> pu, pv, au, av;
       for (auto *v : {&pu, &pv, &au, &av})
-        v->resize(mu.a.size());
-      compose_affine(mu.a.data(), m, B, c0, pu.data(), au.data());
-      compose_affine(mv.a.data(), m, B, c0, pv.data(), av.data());
+        v->resize(sz);
+      compose_affine(mu.a, m, B, c0, pu.data(), au.data());
+      compose_affine(mv.a, m, B, c0, pv.data(), av.data());
       // Bounds of |x^i y^j| where the search evaluates (the rectangle, boxes inflated by 1.25).
       double su = 0, sv = 0;
       for (int i = 0; i <= m; ++i)
@@ -321,7 +357,10 @@ GradientZeros search_zeros(const BernsteinTriangle &g, const GradientZeroOptions
   auto to_reference = [&](double x, double y) {
     return Vec2{B[0][0] * x + B[0][1] * y + c0[0], B[1][0] * x + B[1][1] * y + c0[1]};
   };
-  const Monomial muu = mu.du(), muv = mu.dv(), mvv = mv.dv();
+  const Monomial muu = derivative(mu, true, hessian_store),
+                 muv = derivative(mu, false, hessian_store + hsz),
+                 mvv = derivative(mv, false, hessian_store + 2 * hsz);
+  double *taylor_store = hessian_store + 3 * hsz;
 
   // Newton's method from (u, v); gives up when the iterate leaves the square of half-width
   // `reach` around (cu, cv) (it is then heading for another zero or diverging).
@@ -356,10 +395,14 @@ GradientZeros search_zeros(const BernsteinTriangle &g, const GradientZeroOptions
     // M = I - Y J(X), each entry enclosed as one polynomial (the combination of the Hessian's
     // entries formed first): entry-wise intervals of J(X) lose the cancellation in Y J(X), which
     // for an ill-conditioned Hessian (thin cells) leaves M far from contracting on any box.
-    const Iv M00 = Iv{1, 1} + (-1.0) * hessian_row_range(y00, muu, y01, muv, cx, cy, rx, ry);
-    const Iv M01 = (-1.0) * hessian_row_range(y00, muv, y01, mvv, cx, cy, rx, ry);
-    const Iv M10 = (-1.0) * hessian_row_range(y10, muu, y11, muv, cx, cy, rx, ry);
-    const Iv M11 = Iv{1, 1} + (-1.0) * hessian_row_range(y10, muv, y11, mvv, cx, cy, rx, ry);
+    // The Hessian's entries expanded once at the centre; each entry of M is a combination.
+    const Taylor huu = expand(muu, cx, cy, taylor_store),
+                 huv = expand(muv, cx, cy, taylor_store + hsz),
+                 hvv = expand(mvv, cx, cy, taylor_store + 2 * hsz);
+    const Iv M00 = Iv{1, 1} + (-1.0) * combination_range(y00, huu, y01, huv, rx, ry);
+    const Iv M01 = (-1.0) * combination_range(y00, huv, y01, hvv, rx, ry);
+    const Iv M10 = (-1.0) * combination_range(y10, huu, y11, huv, rx, ry);
+    const Iv M11 = Iv{1, 1} + (-1.0) * combination_range(y10, huv, y11, hvv, rx, ry);
     const double fu = mu(x, y), fv = mv(x, y);
     const double eu = err_u + mu.error_bound(x, y), ev = err_v + mv.error_bound(x, y);
     const Iv F0{fu - eu, fu + eu}, F1{fv - ev, fv + ev};
@@ -380,7 +423,8 @@ GradientZeros search_zeros(const BernsteinTriangle &g, const GradientZeroOptions
     double u, v, cx, cy, rx, ry;
     bool certified;
   };
-  std::vector<Found> found;
+  thread_local std::vector<Found> found;
+  found.clear();
   auto known = [&](double u, double v) {
     for (const Found &f : found)
       if (f.certified && std::abs(u - f.cx) <= f.rx && std::abs(v - f.cy) <= f.ry)
@@ -390,10 +434,6 @@ GradientZeros search_zeros(const BernsteinTriangle &g, const GradientZeroOptions
 
   // Depth-first subdivision; boxes and their coefficients live on two stacks reused across
   // calls of the same thread (no allocation per box).
-  const int m = d - 1;
-  if (m > 60)
-    throw std::invalid_argument("find_gradient_zeros: degree above 61 is not supported");
-  const std::size_t sz = static_cast<std::size_t>(m + 1) * (m + 1);
   thread_local std::vector<Box> stack;
   thread_local std::vector<double> arena, current;
   stack.clear();
@@ -404,7 +444,7 @@ GradientZeros search_zeros(const BernsteinTriangle &g, const GradientZeroOptions
     // parameters p = x / root_w, q = y / root_h.
     thread_local std::vector<double> scaled;
     for (const Monomial *c : {&mu, &mv}) {
-      scaled = c->a;
+      scaled.assign(c->a, c->a + sz);
       for (int i = 0; i <= m; ++i)
         for (int j = 0; i + j <= m; ++j)
           scaled[static_cast<std::size_t>(i) * (m + 1) + j] *=
@@ -412,8 +452,8 @@ GradientZeros search_zeros(const BernsteinTriangle &g, const GradientZeroOptions
       TensorBernstein::from_monomial(scaled.data(), m, arena.data() + (c == &mv ? sz : 0));
     }
   } else {
-    TensorBernstein::from_monomial(mu.a.data(), m, arena.data());
-    TensorBernstein::from_monomial(mv.a.data(), m, arena.data() + sz);
+    TensorBernstein::from_monomial(mu.a, m, arena.data());
+    TensorBernstein::from_monomial(mv.a, m, arena.data() + sz);
   }
   stack.push_back({0.0, 0.0, root_w, root_h, 0});
   // Bounds on the rounding of the subdivided coefficients (conversion and de Casteljau steps),

@@ -1,19 +1,26 @@
 #include "poly/monomial.hpp"
 
 #include "poly/binomial.hpp"
+#include "poly/lattice.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
 namespace hoct {
 
 std::vector<double> to_monomial(const BernsteinTriangle &p) {
-  const int d = p.degree();
-  std::vector<double> mono((d + 1) * (d + 1), 0.0);
+  std::vector<double> mono((p.degree() + 1) * (p.degree() + 1));
+  to_monomial(p.coefficients().data(), p.degree(), mono.data());
+  return mono;
+}
+
+void to_monomial(const double *bernstein, int d, double *mono) {
+  std::fill(mono, mono + (d + 1) * (d + 1), 0.0);
   for (int b = 0; b <= d; ++b)
     for (int a = 0; a + b <= d; ++a) {
       const int k = d - a - b;
-      const double c = p.coefficient(a, b) * trinomial(k, a, b);
+      const double c = bernstein[lattice_index(d, a, b)] * trinomial(k, a, b);
       // (1-u-v)^k = sum_{x+y<=k} k!/(x! y! (k-x-y)!) (-1)^(x+y) u^x v^y
       for (int y = 0; y <= k; ++y)
         for (int x = 0; x + y <= k; ++x) {
@@ -21,7 +28,6 @@ std::vector<double> to_monomial(const BernsteinTriangle &p) {
           mono[(a + x) * (d + 1) + (b + y)] += c * w;
         }
     }
-  return mono;
 }
 
 void compose_affine(const double *mono, int d, const Mat2 &b, const Vec2 &c, double *out,
@@ -80,44 +86,32 @@ void compose_affine(const double *mono, int d, const Mat2 &b, const Vec2 &c, dou
     }
 }
 
-std::pair<double, double> monomial_range(const std::vector<double> &mono, int d, double x, double y,
-                                         double rx, double ry) {
-  // Taylor coefficients e_ab = sum_{i>=a, j>=b} m_ij C(i,a) C(j,b) x^(i-a) y^(j-b), with powers
-  // and binomials from small tables (this runs in the inner loop of the Krawczyk test).
-  constexpr int kMax = 32;
-  if (d >= kMax)
-    return {-INFINITY, INFINITY};
-  double px[kMax], py[kMax], prx[kMax], pry[kMax], binom[kMax][kMax];
-  for (int i = 0; i <= d; ++i)
-    for (int a = 0; a <= i; ++a)
-      binom[i][a] = binomial(i, a);
-  px[0] = py[0] = prx[0] = pry[0] = 1;
+double taylor_expansion(const double *mono, int d, double x, double y, double *e) {
+  // e_ab = sum_{i>=a, j>=b} m_ij C(i,a) C(j,b) x^(i-a) y^(j-b).
+  thread_local std::vector<double> powers;
+  powers.resize(2 * static_cast<std::size_t>(d + 1));
+  double *px = powers.data(), *py = px + d + 1;
+  px[0] = py[0] = 1;
   for (int i = 1; i <= d; ++i) {
     px[i] = px[i - 1] * x;
     py[i] = py[i - 1] * y;
-    prx[i] = prx[i - 1] * rx;
-    pry[i] = pry[i - 1] * ry;
   }
-  double centre = 0, spread = 0, magnitude = 0;
+  double magnitude = 0;
   for (int a = 0; a <= d; ++a)
     for (int b = 0; a + b <= d; ++b) {
-      double e = 0;
+      double sum = 0;
       for (int i = a; i <= d; ++i) {
-        const double ci = binom[i][a] * px[i - a];
+        const double ci = binomial(i, a) * px[i - a];
         const double *row = &mono[static_cast<std::size_t>(i) * (d + 1)];
         for (int j = b; i + j <= d; ++j) {
-          const double term = row[j] * ci * binom[j][b] * py[j - b];
-          e += term;
+          const double term = row[j] * ci * binomial(j, b) * py[j - b];
+          sum += term;
           magnitude += std::abs(term);
         }
       }
-      if (a == 0 && b == 0)
-        centre = e;
-      else
-        spread += std::abs(e) * prx[a] * pry[b];
+      e[static_cast<std::size_t>(a) * (d + 1) + b] = sum;
     }
-  const double round = 64 * std::numeric_limits<double>::epsilon() * magnitude;
-  return {centre - spread - round, centre + spread + round};
+  return magnitude;
 }
 
 } // namespace hoct

@@ -5,13 +5,14 @@
 
 #include "poly/bernstein_triangle.hpp"
 
-#include <utility>
 #include <vector>
 
 namespace hoct {
 
 // Coefficients a[i * (d+1) + j] of u^i v^j (i + j <= d).
 std::vector<double> to_monomial(const BernsteinTriangle &p);
+// The same from Bernstein coefficients in canonical lattice order, into mono[0 .. (d+1)^2).
+void to_monomial(const double *bernstein, int degree, double *mono);
 
 // The monomial coefficients (same layout and degree) of p(B (s, t) + c) as a polynomial in
 // (s, t), an affine change of variables, into out[0 .. (d+1)^2); into abs_out those of |p|
@@ -20,9 +21,10 @@ std::vector<double> to_monomial(const BernsteinTriangle &p);
 void compose_affine(const double *mono, int degree, const Mat2 &b, const Vec2 &c, double *out,
                     double *abs_out);
 
-// Enclosure [lo, hi] of p over the box |u - x| <= rx, |v - y| <= ry, from the Taylor expansion
-// at (x, y), given p's monomial coefficients and degree. Inflated for rounding.
-std::pair<double, double> monomial_range(const std::vector<double> &mono, int degree, double x,
-                                         double y, double rx, double ry);
+// The Taylor coefficients of p at (x, y), p(x + s, y + t) = sum e[a * (d+1) + b] s^a t^b, into
+// e[0 .. (d+1)^2), from p's monomial coefficients. Returns the sum of the magnitudes of all the
+// terms added up: 64 eps times it bounds the rounding of every e (and of their sum). With the
+// radii of a box, the expansion encloses p's range over it (the Krawczyk test's Hessian).
+double taylor_expansion(const double *mono, int degree, double x, double y, double *e);
 
 } // namespace hoct

@@ -38,6 +38,10 @@ struct RootOptions {
 // it returns none and sets *identically_zero (if given).
 std::vector<Root> find_roots(const BernsteinPoly &p, const RootOptions &options = {},
                              bool *identically_zero = nullptr);
+// The same for the polynomial with Bernstein coefficients c, into `roots`
+// (cleared first): no allocation once `roots` and the thread's scratch buffers have grown.
+void find_roots(std::span<const double> c, std::vector<Root> &roots,
+                const RootOptions &options = {}, bool *identically_zero = nullptr);
 
 // True if the Bernstein coefficients c (degree >= 0) keep |p| above the tangency threshold on
 // [0, 1]: all above near_zero * max|c|, or all below its negative. find_roots then returns no
