@@ -93,5 +93,60 @@ TEST(RootIsolation, EndsMidpointsMultipleAndZero) {
   EXPECT_NEAR(r[0].t, 0.4, 1e-8);
 }
 
+TEST(RootIsolation, SpanFormReusesItsOutputAndAgreesWithThePolynomialForm) {
+  // The allocation-free form (coefficients in, roots into a reused vector) against the
+  // BernsteinPoly form, on simple roots, clusters, tangencies and exact zeros at the ends and at
+  // subdivision points; the output vector holds stale roots on entry.
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> U(-0.2, 1.2);
+  std::vector<Root> out(5, Root{0.5, 0.0, 1.0, true, 1});
+  std::vector<BernsteinPoly> cases = {
+      from_roots({0.0, 0.5, 1.0}), from_roots({0.3, 0.3, 0.8}), from_roots({0.4, 0.4 + 1e-9}),
+      BernsteinPoly({1.0, -0.1, 2.0}), BernsteinPoly({0.0, 0.0, 0.0})};
+  for (int trial = 0; trial < 300; ++trial) {
+    std::vector<double> r;
+    for (int k = 0, n = 1 + static_cast<int>(rng() % 8); k < n; ++k)
+      r.push_back(trial % 5 == 0 && k == 1 ? r[0] : U(rng)); // some double roots
+    cases.push_back(from_roots(r, trial % 2 ? 1.0 : -3.0));
+  }
+  std::size_t with_roots = 0;
+  for (const BernsteinPoly &p : cases) {
+    bool zero_a = false, zero_b = true;
+    const std::vector<Root> expected = find_roots(p, {}, &zero_a);
+    find_roots(p.coefficients(), out, {}, &zero_b);
+    EXPECT_EQ(zero_a, zero_b);
+    ASSERT_EQ(out.size(), expected.size());
+    for (std::size_t k = 0; k < out.size(); ++k) {
+      EXPECT_EQ(out[k].t, expected[k].t);
+      EXPECT_EQ(out[k].lo, expected[k].lo);
+      EXPECT_EQ(out[k].hi, expected[k].hi);
+      EXPECT_EQ(out[k].simple, expected[k].simple);
+      EXPECT_EQ(out[k].multiplicity, expected[k].multiplicity);
+    }
+    with_roots += !out.empty();
+  }
+  EXPECT_GT(with_roots, cases.size() / 2);
+  // And against the known roots: every simple root of a random product within 1e-9.
+  for (int trial = 0; trial < 200; ++trial) {
+    std::vector<double> r;
+    for (int k = 0, n = 1 + static_cast<int>(rng() % 8); k < n; ++k)
+      r.push_back(U(rng));
+    std::sort(r.begin(), r.end());
+    bool close = false;
+    for (std::size_t k = 1; k < r.size(); ++k)
+      close = close || r[k] - r[k - 1] < 1e-3;
+    if (close)
+      continue;
+    find_roots(from_roots(r).coefficients(), out);
+    std::vector<double> inside;
+    for (double x : r)
+      if (x >= 0 && x <= 1)
+        inside.push_back(x);
+    ASSERT_EQ(out.size(), inside.size());
+    for (std::size_t k = 0; k < out.size(); ++k)
+      EXPECT_NEAR(out[k].t, inside[k], 1e-9);
+  }
+}
+
 } // namespace
 } // namespace hoct
