@@ -124,27 +124,36 @@ int connect_lower(const PathField &f, const CellNodes &cn, const std::vector<dou
   }
   if (!started)
     return -1;
-  // Candidate targets: nodes below the threshold, nearest first.
-  thread_local std::vector<int> order; // reused: no allocation per call
-  order.clear();
-  for (std::size_t i = 0; i < cn.nodes.size(); ++i)
-    if (values[i] < thr)
-      order.push_back(static_cast<int>(i));
-  auto try_targets = [&](const Vec2 &x) {
-    std::sort(order.begin(), order.end(), [&](int a, int b) {
-      const auto &pa = cn.nodes[a].uv, &pb = cn.nodes[b].uv;
-      const double da = (pa[0] - x[0]) * (pa[0] - x[0]) + (pa[1] - x[1]) * (pa[1] - x[1]);
-      const double db = (pb[0] - x[0]) * (pb[0] - x[0]) + (pb[1] - x[1]) * (pb[1] - x[1]);
-      return da < db || (da == db && a < b);
-    });
-    for (int m : order)
-      if (certify_below(f.g, x, cn.nodes[m].uv, thr, 0))
-        return m;
+  // Candidate targets: nodes below the threshold, nearest first; from the first step's end,
+  // those ahead of the sector's start (on the side of its direction) before those behind it,
+  // which a segment can reach only by crossing back through the node's neighbourhood.
+  struct Candidate {
+    double key;
+    int node;
+    bool operator<(const Candidate &o) const {
+      return key < o.key || (key == o.key && node < o.node);
+    }
+  };
+  thread_local std::vector<Candidate> order; // reused: no allocation per call
+  auto try_targets = [&](const Vec2 &x, bool ahead_first) {
+    order.clear();
+    for (std::size_t i = 0; i < cn.nodes.size(); ++i)
+      if (values[i] < thr) {
+        const auto &p = cn.nodes[i].uv;
+        double key = (p[0] - x[0]) * (p[0] - x[0]) + (p[1] - x[1]) * (p[1] - x[1]);
+        if (ahead_first && (p[0] - c[0]) * w[0] + (p[1] - c[1]) * w[1] <= 0)
+          key += 16; // beyond any squared distance in the reference triangle
+        order.push_back({key, static_cast<int>(i)});
+      }
+    std::sort(order.begin(), order.end());
+    for (const Candidate &t : order)
+      if (certify_below(f.g, x, cn.nodes[t.node].uv, thr, 0))
+        return t.node;
     return -1;
   };
   if (path)
     *path = {c, s};
-  int m = try_targets(s);
+  int m = try_targets(s, true);
   if (m >= 0) {
     ++counters.direct;
     if (path)
@@ -211,7 +220,7 @@ int connect_lower(const PathField &f, const CellNodes &cn, const std::vector<dou
     x = y;
     if (path)
       path->push_back(x);
-    m = try_targets(x);
+    m = try_targets(x, false);
     if (m >= 0) {
       ++counters.traced;
       if (path)

@@ -183,13 +183,25 @@ void casteljau_step_in_place(double *w, int n, const std::array<double, 3> &l) {
 
 namespace {
 
-// One in-place step for a compile-time degree N (unrolled by the compiler).
-template <int N> void casteljau_step_fixed(double *w, const std::array<double, 3> &l) {
+// One in-place step for a compile-time degree N, fully unrolled: read from a local copy (the
+// same values: a step never overwrites a coefficient it still has to read), so that the
+// compiler sees no aliasing and emits straight-line code instead of runtime-checked loops.
+template <int N>
+inline __attribute__((always_inline)) void casteljau_step_fixed(double *w,
+                                                                const std::array<double, 3> &l) {
+  constexpr int size = lattice_size(N);
+  double src[size];
+#pragma GCC unroll 64
+  for (int i = 0; i < size; ++i)
+    src[i] = w[i];
+  const double l0 = l[0], l1 = l[1], l2 = l[2];
+#pragma GCC unroll 16
   for (int b = 0; b <= N - 1; ++b)
+#pragma GCC unroll 16
     for (int a = 0; a <= N - 1 - b; ++a)
-      w[lattice_index(N - 1, a, b)] = l[0] * w[lattice_index(N, a, b)] +
-                                      l[1] * w[lattice_index(N, a + 1, b)] +
-                                      l[2] * w[lattice_index(N, a, b + 1)];
+      w[lattice_index(N - 1, a, b)] = l0 * src[lattice_index(N, a, b)] +
+                                      l1 * src[lattice_index(N, a + 1, b)] +
+                                      l2 * src[lattice_index(N, a, b + 1)];
 }
 
 // Steps from degree N down to 0 with weights l, in place; w[0] is the result.
