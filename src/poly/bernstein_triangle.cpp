@@ -42,7 +42,54 @@ struct WorkCopy {
 // overwrites the lower-degree coefficients it no longer needs (index (a, b) in degree n-1 is <=
 // index (a, b) in degree n, and the entries of degree n read later, (a+1, b) and (a, b+1), have
 // larger indices).
+// One in-place step for a compile-time degree N, fully unrolled: read from a local copy (the
+// same values: a step never overwrites a coefficient it still has to read), so that the
+// compiler sees no aliasing and emits straight-line code instead of runtime-checked loops.
+template <int N>
+inline __attribute__((always_inline)) void casteljau_step_fixed(double *w,
+                                                                const std::array<double, 3> &l) {
+  constexpr int size = lattice_size(N);
+  double src[size];
+#pragma GCC unroll 64
+  for (int i = 0; i < size; ++i)
+    src[i] = w[i];
+  const double l0 = l[0], l1 = l[1], l2 = l[2];
+#pragma GCC unroll 16
+  for (int b = 0; b <= N - 1; ++b)
+#pragma GCC unroll 16
+    for (int a = 0; a <= N - 1 - b; ++a)
+      w[lattice_index(N - 1, a, b)] = l0 * src[lattice_index(N, a, b)] +
+                                      l1 * src[lattice_index(N, a + 1, b)] +
+                                      l2 * src[lattice_index(N, a, b + 1)];
+}
+
+// Fixed-degree steps from degree N down to degree `to`.
+template <int N> void casteljau_fixed_down(double *w, int to, const std::array<double, 3> &l) {
+  if constexpr (N > 0) {
+    if (N > to) {
+      casteljau_step_fixed<N>(w, l);
+      casteljau_fixed_down<N - 1>(w, to, l);
+    }
+  }
+}
+
 void casteljau_down(double *w, int from, int to, const std::array<double, 3> &l) {
+  switch (from) { // the usual degrees, unrolled
+  case 1:
+    return casteljau_fixed_down<1>(w, to, l);
+  case 2:
+    return casteljau_fixed_down<2>(w, to, l);
+  case 3:
+    return casteljau_fixed_down<3>(w, to, l);
+  case 4:
+    return casteljau_fixed_down<4>(w, to, l);
+  case 5:
+    return casteljau_fixed_down<5>(w, to, l);
+  case 6:
+    return casteljau_fixed_down<6>(w, to, l);
+  default:
+    break;
+  }
   for (int n = from; n > to; --n)
     for (int b = 0; b <= n - 1; ++b)
       for (int a = 0; a <= n - 1 - b; ++a)
@@ -182,27 +229,6 @@ void casteljau_step_in_place(double *w, int n, const std::array<double, 3> &l) {
 } // namespace
 
 namespace {
-
-// One in-place step for a compile-time degree N, fully unrolled: read from a local copy (the
-// same values: a step never overwrites a coefficient it still has to read), so that the
-// compiler sees no aliasing and emits straight-line code instead of runtime-checked loops.
-template <int N>
-inline __attribute__((always_inline)) void casteljau_step_fixed(double *w,
-                                                                const std::array<double, 3> &l) {
-  constexpr int size = lattice_size(N);
-  double src[size];
-#pragma GCC unroll 64
-  for (int i = 0; i < size; ++i)
-    src[i] = w[i];
-  const double l0 = l[0], l1 = l[1], l2 = l[2];
-#pragma GCC unroll 16
-  for (int b = 0; b <= N - 1; ++b)
-#pragma GCC unroll 16
-    for (int a = 0; a <= N - 1 - b; ++a)
-      w[lattice_index(N - 1, a, b)] = l0 * src[lattice_index(N, a, b)] +
-                                      l1 * src[lattice_index(N, a + 1, b)] +
-                                      l2 * src[lattice_index(N, a, b + 1)];
-}
 
 // Steps from degree N down to 0 with weights l, in place; w[0] is the result.
 template <int N> void casteljau_down(double *w, const std::array<double, 3> &l) {
