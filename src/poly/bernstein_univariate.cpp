@@ -96,9 +96,9 @@ std::pair<double, double> BernsteinPoly::bounds() const {
   return {*lo, *hi};
 }
 
-int BernsteinPoly::sign_changes() const {
+int bernstein_sign_changes(std::span<const double> c) {
   int changes = 0, last = 0;
-  for (double x : c_) {
+  for (double x : c) {
     const int s = (x > 0) - (x < 0);
     if (s == 0)
       continue;
@@ -108,6 +108,8 @@ int BernsteinPoly::sign_changes() const {
   }
   return changes;
 }
+
+int BernsteinPoly::sign_changes() const { return bernstein_sign_changes(c_); }
 
 BernsteinPoly bernstein_from_equispaced(const double *values, int degree) {
   const auto &m = lagrange_to_bernstein_1d(degree);

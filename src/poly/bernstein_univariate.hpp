@@ -16,6 +16,8 @@ double bernstein_value(std::span<const double> c, double t);
 // The derivative's coefficients n (c[i+1] - c[i]), i < n = c.size() - 1, into out[0 .. n)
 // (nothing for n = 0). BernsteinPoly::derivative is this.
 void bernstein_derivative(std::span<const double> c, double *out);
+// Sign changes of the coefficient sequence c (zeros skipped). BernsteinPoly::sign_changes is this.
+int bernstein_sign_changes(std::span<const double> c);
 
 class BernsteinPoly {
 public:

@@ -9,18 +9,9 @@ namespace {
 
 int sign(double x) { return (x > 0) - (x < 0); }
 
-// Sign changes of c[0..n] (zeros skipped), as BernsteinPoly::sign_changes.
+// Sign changes of c[0..n] (zeros skipped).
 int sign_changes(const double *c, int n) {
-  int changes = 0, last = 0;
-  for (int i = 0; i <= n; ++i) {
-    const int s = sign(c[i]);
-    if (s == 0)
-      continue;
-    if (last != 0 && s != last)
-      ++changes;
-    last = s;
-  }
-  return changes;
+  return bernstein_sign_changes({c, static_cast<std::size_t>(n) + 1});
 }
 
 // The sign of q just inside its left (or right) end: its first (last) non-zero coefficient.
