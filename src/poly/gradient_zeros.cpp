@@ -1,5 +1,6 @@
 #include "poly/gradient_zeros.hpp"
 
+#include "poly/degree_dispatch.hpp"
 #include "poly/lattice.hpp"
 #include "poly/monomial.hpp"
 #include "poly/tensor_bernstein.hpp"
@@ -29,6 +30,21 @@ struct Box {
   std::size_t offset;
 };
 
+// Nested Horner of sum a[i * (d+1) + j] u^i v^j, or (Abs) of sum |a[..]| u^i v^j; degree D,
+// or d at run time when D < 0.
+template <int D, bool Abs> double horner(const double *a, int d_run, double u, double v) {
+  const int d = D >= 0 ? D : d_run;
+  double r = 0;
+  for (int i = d; i >= 0; --i) {
+    const double *row = &a[static_cast<std::size_t>(i) * (d + 1)];
+    double s = 0;
+    for (int j = d - i; j >= 0; --j)
+      s = s * v + (Abs ? std::abs(row[j]) : row[j]);
+    r = r * u + s;
+  }
+  return r;
+}
+
 // A polynomial in monomial form a[i * (d+1) + j] u^i v^j (a view of scratch storage),
 // evaluated by nested Horner with a rigorous bound on the rounding error.
 struct Monomial {
@@ -36,28 +52,13 @@ struct Monomial {
   int d = 0;
   std::size_t size() const { return static_cast<std::size_t>(d + 1) * (d + 1); }
   double operator()(double u, double v) const {
-    double r = 0;
-    for (int i = d; i >= 0; --i) {
-      const double *row = &a[static_cast<std::size_t>(i) * (d + 1)];
-      double s = 0;
-      for (int j = d - i; j >= 0; --j)
-        s = s * v + row[j];
-      r = r * u + s;
-    }
-    return r;
+    return dispatch_degree(d, [&](auto D) { return horner<D.value, false>(a, d, u, v); });
   }
   // Bound on |computed - exact| of operator()(u, v): gamma_{4d+4} times the Horner sum of the
   // absolute values (Higham, Accuracy and Stability, 5.1), with margin.
   double error_bound(double u, double v) const {
-    const double au = std::abs(u), av = std::abs(v);
-    double r = 0;
-    for (int i = d; i >= 0; --i) {
-      const double *row = &a[static_cast<std::size_t>(i) * (d + 1)];
-      double s = 0;
-      for (int j = d - i; j >= 0; --j)
-        s = s * av + std::abs(row[j]);
-      r = r * au + s;
-    }
+    const double r = dispatch_degree(
+        d, [&](auto D) { return horner<D.value, true>(a, d, std::abs(u), std::abs(v)); });
     return 2 * (4 * d + 6) * std::numeric_limits<double>::epsilon() * r;
   }
 };
@@ -93,10 +94,10 @@ Taylor expand(const Monomial &p, double x, double y, double *storage) {
 // widened by the rounding of the expansions (64 eps of their magnitudes), of the combination
 // and of the sum (4 eps of its terms). Beyond degree 31 (binomials no longer exact in the
 // expansion) the whole line.
-Iv combination_range(double s, const Taylor &P, double t, const Taylor &Q, double rx, double ry) {
-  const int d = P.d;
-  if (d >= 32)
-    return {-INFINITY, INFINITY};
+template <int D>
+Iv combination_range_fixed(double s, const Taylor &P, double t, const Taylor &Q, double rx,
+                           double ry) {
+  const int d = D >= 0 ? D : P.d;
   const double eps = std::numeric_limits<double>::epsilon();
   double centre = 0, spread = 0, terms = 0, pa = 1;
   for (int a = 0; a <= d; ++a, pa *= rx) {
@@ -114,6 +115,12 @@ Iv combination_range(double s, const Taylor &P, double t, const Taylor &Q, doubl
   const double round =
       64 * eps * (std::abs(s) * P.magnitude + std::abs(t) * Q.magnitude) + 4 * eps * terms;
   return {centre - spread - round, centre + spread + round};
+}
+Iv combination_range(double s, const Taylor &P, double t, const Taylor &Q, double rx, double ry) {
+  if (P.d >= 32)
+    return {-INFINITY, INFINITY};
+  return dispatch_degree(
+      P.d, [&](auto D) { return combination_range_fixed<D.value>(s, P, t, Q, rx, ry); });
 }
 
 // True if every coefficient exceeds `margin` in absolute value with one common sign: the

@@ -1,6 +1,7 @@
 #include "poly/monomial.hpp"
 
 #include "poly/binomial.hpp"
+#include "poly/degree_dispatch.hpp"
 #include "poly/lattice.hpp"
 
 #include <algorithm>
@@ -16,18 +17,27 @@ std::vector<double> to_monomial(const BernsteinTriangle &p) {
 }
 
 void to_monomial(const double *bernstein, int d, double *mono) {
-  std::fill(mono, mono + (d + 1) * (d + 1), 0.0);
+  // The coefficient of u^i v^j is d! / (i! j! (d-i-j)!) times the forward difference
+  // D_u^i D_v^j c_00 (D_u c_ab = c_(a+1)b - c_ab): the Bernstein lattice laid out in `mono`, then
+  // differenced in place, first along v (each column a), then along u (each row j).
+  const int w = d + 1;
+  std::fill(mono, mono + w * w, 0.0);
   for (int b = 0; b <= d; ++b)
-    for (int a = 0; a + b <= d; ++a) {
-      const int k = d - a - b;
-      const double c = bernstein[lattice_index(d, a, b)] * trinomial(k, a, b);
-      // (1-u-v)^k = sum_{x+y<=k} k!/(x! y! (k-x-y)!) (-1)^(x+y) u^x v^y
-      for (int y = 0; y <= k; ++y)
-        for (int x = 0; x + y <= k; ++x) {
-          const double w = trinomial(k - x - y, x, y) * (((x + y) & 1) ? -1.0 : 1.0);
-          mono[(a + x) * (d + 1) + (b + y)] += c * w;
-        }
-    }
+    for (int a = 0; a + b <= d; ++a)
+      mono[a * w + b] = bernstein[lattice_index(d, a, b)];
+  for (int a = 0; a <= d; ++a) {
+    double *col = mono + a * w;
+    for (int k = 1; k <= d - a; ++k)
+      for (int b = d - a; b >= k; --b)
+        col[b] -= col[b - 1];
+  }
+  for (int j = 0; j <= d; ++j)
+    for (int k = 1; k <= d - j; ++k)
+      for (int a = d - j; a >= k; --a)
+        mono[a * w + j] -= mono[(a - 1) * w + j];
+  for (int i = 0; i <= d; ++i)
+    for (int j = 0; i + j <= d; ++j)
+      mono[i * w + j] *= trinomial(d - i - j, i, j);
 }
 
 void compose_affine(const double *mono, int d, const Mat2 &b, const Vec2 &c, double *out,
@@ -86,32 +96,61 @@ void compose_affine(const double *mono, int d, const Mat2 &b, const Vec2 &c, dou
     }
 }
 
-double taylor_expansion(const double *mono, int d, double x, double y, double *e) {
-  // e_ab = sum_{i>=a, j>=b} m_ij C(i,a) C(j,b) x^(i-a) y^(j-b).
-  thread_local std::vector<double> powers;
-  powers.resize(2 * static_cast<std::size_t>(d + 1));
-  double *px = powers.data(), *py = px + d + 1;
-  px[0] = py[0] = 1;
+namespace {
+
+template <int D> double taylor_fixed(const double *mono, int d_run, double x, double y, double *e) {
+  const int d = D >= 0 ? D : d_run;
+  // e_ab = sum_{i>=a, j>=b} m_ij C(i,a) C(j,b) x^(i-a) y^(j-b), in two passes: along v,
+  // t_ib = sum_{j>=b} m_ij C(j,b) y^(j-b) (into e), then along u, e_ab = sum_{i>=a} C(i,a)
+  // x^(i-a) t_ib. Along any term's path at most 4d + 2 roundings (the two powers, four
+  // products, two sums of at most d + 1 terms), so the rounding of e_ab is at most gamma_(4d+2)
+  // (Higham 3.1) times the sum of the magnitudes of its terms; summed over (a, b) those are
+  // sum_ij |m_ij| (1+|x|)^i (1+|y|)^j, returned scaled so that 64 eps times it covers
+  // gamma_(4d+2).
+  const int w = d + 1;
+  double px[64], py[64];
+  double *xs = px, *ys = py;
+  std::vector<double> heap;
+  if (w > 64) {
+    heap.resize(2 * static_cast<std::size_t>(w));
+    xs = heap.data();
+    ys = xs + w;
+  }
+  xs[0] = ys[0] = 1;
   for (int i = 1; i <= d; ++i) {
-    px[i] = px[i - 1] * x;
-    py[i] = py[i - 1] * y;
+    xs[i] = xs[i - 1] * x;
+    ys[i] = ys[i - 1] * y;
   }
   double magnitude = 0;
+  const double ax = 1 + std::abs(x), ay = 1 + std::abs(y);
+  for (int i = d; i >= 0; --i) {
+    const double *row = &mono[static_cast<std::size_t>(i) * w];
+    double *t = &e[static_cast<std::size_t>(i) * w];
+    double r = 0;
+    for (int j = d - i; j >= 0; --j)
+      r = r * ay + std::abs(row[j]);
+    magnitude = magnitude * ax + r;
+    for (int b = 0; i + b <= d; ++b) {
+      double sum = 0;
+      for (int j = b; i + j <= d; ++j)
+        sum += row[j] * binomial(j, b) * ys[j - b];
+      t[b] = sum;
+    }
+  }
   for (int a = 0; a <= d; ++a)
     for (int b = 0; a + b <= d; ++b) {
-      double sum = 0;
-      for (int i = a; i <= d; ++i) {
-        const double ci = binomial(i, a) * px[i - a];
-        const double *row = &mono[static_cast<std::size_t>(i) * (d + 1)];
-        for (int j = b; i + j <= d; ++j) {
-          const double term = row[j] * ci * binomial(j, b) * py[j - b];
-          sum += term;
-          magnitude += std::abs(term);
-        }
-      }
-      e[static_cast<std::size_t>(a) * (d + 1) + b] = sum;
+      double sum = e[static_cast<std::size_t>(a) * w + b];
+      for (int i = a + 1; i + b <= d; ++i)
+        sum += binomial(i, a) * xs[i - a] * e[static_cast<std::size_t>(i) * w + b];
+      e[static_cast<std::size_t>(a) * w + b] = sum;
     }
-  return magnitude;
+  return magnitude * std::max(1.0, (4.0 * d + 4) / 60);
+}
+
+} // namespace
+
+double taylor_expansion(const double *mono, int d, double x, double y, double *e) {
+  return dispatch_degree(d, [&](auto D) { return taylor_fixed<D.value>(mono, d, x, y, e); });
 }
 
 } // namespace hoct

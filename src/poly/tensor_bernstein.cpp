@@ -38,16 +38,33 @@ TensorBernstein::TensorBernstein(int m, int n, std::vector<double> c)
 }
 
 void TensorBernstein::from_monomial(const double *mono, int d, double *out) {
-  // u^a = sum_{i>=a} C(i,a)/C(d,a) B_i^d(u), likewise in v.
+  // u^a = sum_{i>=a} C(i,a)/C(d,a) B_i^d(u), likewise in v: out = W mono W^T with
+  // W[i][a] = C(i,a)/C(d,a) (a <= i), in two passes (along v into `out`, then along u in place,
+  // each row i from the rows a <= i not yet overwritten: i descending).
+  const int w = d + 1;
+  double weights[64 * 64];
+  std::vector<double> heap;
+  double *W = weights;
+  if (w > 64) {
+    heap.resize(static_cast<std::size_t>(w) * w);
+    W = heap.data();
+  }
   for (int i = 0; i <= d; ++i)
+    for (int a = 0; a <= i; ++a)
+      W[i * w + a] = binomial(i, a) / binomial(d, a);
+  for (int a = 0; a <= d; ++a)
     for (int j = 0; j <= d; ++j) {
       double s = 0;
-      for (int a = 0; a <= i; ++a) {
-        const double wa = binomial(i, a) / binomial(d, a);
-        for (int b = 0; b <= j && a + b <= d; ++b)
-          s += wa * binomial(j, b) / binomial(d, b) * mono[a * (d + 1) + b];
-      }
-      out[i * (d + 1) + j] = s;
+      for (int b = 0; b <= j && a + b <= d; ++b)
+        s += W[j * w + b] * mono[a * w + b];
+      out[a * w + j] = s;
+    }
+  for (int i = d; i >= 0; --i)
+    for (int j = 0; j <= d; ++j) {
+      double s = 0;
+      for (int a = 0; a <= i; ++a)
+        s += W[i * w + a] * out[a * w + j];
+      out[i * w + j] = s;
     }
 }
 
