@@ -371,8 +371,9 @@ GradientZeros search_zeros(const BernsteinTriangle &g, const GradientZeroOptions
 
   // Newton's method from (u, v); gives up when the iterate leaves the square of half-width
   // `reach` around (cu, cv) (it is then heading for another zero or diverging).
+  // `last` receives the size |du| + |dv| of the last step taken.
   auto newton = [&](double &u, double &v, double cu = 0.5, double cv = 0.5, double reach = 10,
-                    int max_iterations = 40) {
+                    int max_iterations = 40, double *last = nullptr) {
     for (int it = 0; it < max_iterations; ++it) {
       const double fu = mu(u, v), fv = mv(u, v);
       const double a = muu(u, v), b = muv(u, v), c = mvv(u, v);
@@ -382,6 +383,8 @@ GradientZeros search_zeros(const BernsteinTriangle &g, const GradientZeroOptions
       const double du = (c * fu - b * fv) / det, dv = (a * fv - b * fu) / det;
       u -= du;
       v -= dv;
+      if (last)
+        *last = std::abs(du) + std::abs(dv);
       if (!std::isfinite(u) || !std::isfinite(v) || std::abs(u - cu) > reach ||
           std::abs(v - cv) > reach)
         return false;
@@ -432,6 +435,14 @@ GradientZeros search_zeros(const BernsteinTriangle &g, const GradientZeroOptions
   };
   thread_local std::vector<Found> found;
   found.clear();
+  // Grows the certified box f around the zero (x, y) while Krawczyk still proves uniqueness:
+  // the larger it is, the fewer boxes around the zero need subdividing. A box centred at the
+  // zero with twice f's largest radius contains f.
+  auto grown = [&](double x, double y, Found f) {
+    for (double R = 2 * std::max(f.rx, f.ry); R <= 0.5 && krawczyk(x, y, R, R, x, y) == 1; R *= 2)
+      f = {x, y, x, y, R, R, true};
+    return f;
+  };
   auto known = [&](double u, double v) {
     for (const Found &f : found)
       if (f.certified && std::abs(u - f.cx) <= f.rx && std::abs(v - f.cy) <= f.ry)
@@ -534,6 +545,23 @@ GradientZeros search_zeros(const BernsteinTriangle &g, const GradientZeroOptions
                             b.v0 >= f.cy - f.ry && b.v0 + b.wy <= f.cy + f.ry);
     if (covered)
       continue;
+    // Newton first, on boxes up to half the square (not the root, where the screen has just
+    // failed and a single zero rarely certifies a box that large): three steps from the centre;
+    // if they converge (the last below a thousandth of the box), Krawczyk on the square centred
+    // at the limit z that covers the box. Success proves z the only zero in that square: the box
+    // holds z or nothing, and the certified square may already cover its neighbours.
+    if (!framed && wmax <= 0.5) {
+      double x = cx, y = cy, last = INFINITY;
+      if (newton(x, y, cx, cy, 2 * wmax, 3, &last) && last <= 1e-3 * wmax) {
+        const double R = 1.0625 * std::max(std::abs(x - cx) + hx, std::abs(y - cy) + hy);
+        if (krawczyk(x, y, R, R, x, y) == 1) {
+          newton(x, y); // converges inside the square (Krawczyk)
+          if (!known(x, y))
+            found.push_back(grown(x, y, {x, y, x, y, R, R, true}));
+          continue;
+        }
+      }
+    }
     if (wmax <= 0.25) {
       // Certify on the box inflated by a quarter, so zeros on box edges are interior.
       const double rx = 1.25 * hx, ry = 1.25 * hy, r = std::max(rx, ry);
@@ -547,15 +575,8 @@ GradientZeros search_zeros(const BernsteinTriangle &g, const GradientZeroOptions
         continue;
       if (k == 1) {
         newton(x, y); // converges inside the box (Krawczyk)
-        if (!known(x, y)) {
-          // Grow the certified box around the zero while Krawczyk still proves uniqueness: the
-          // larger it is, the fewer boxes around the zero need subdividing. A box centred at the
-          // zero with radius 2r contains the box just certified.
-          Found f{x, y, cx, cy, rx, ry, true};
-          for (double R = 2 * r; R <= 0.5 && krawczyk(x, y, R, R, x, y) == 1; R *= 2)
-            f = {x, y, x, y, R, R, true};
-          found.push_back(f);
-        }
+        if (!known(x, y))
+          found.push_back(grown(x, y, {x, y, cx, cy, rx, ry, true}));
         continue;
       }
     }
