@@ -156,48 +156,66 @@ GradientZeros search_zeros(const BernsteinTriangle &g, const GradientZeroOptions
 
 } // namespace
 
+namespace {
+
+// Extremes of the coefficient differences c[a+1,b] - c[a,b] (lo[0], hi[0]) and
+// c[a,b+1] - c[a,b] (lo[1], hi[1]) over the lattice of degree D (d at run time if D < 0).
+template <int D> void difference_range(const double *c, int d_run, double lo[2], double hi[2]) {
+  const int d = D >= 0 ? D : d_run;
+  double ulo = INFINITY, uhi = -INFINITY, vlo = INFINITY, vhi = -INFINITY;
+  for (int b = 0; b < d; ++b) {
+    const double *row = &c[lattice_index(d, 0, b)], *up = &c[lattice_index(d, 0, b + 1)];
+    for (int a = 0; a + b < d; ++a) {
+      const double x = row[a + 1] - row[a], y = up[a] - row[a];
+      ulo = std::min(ulo, x);
+      uhi = std::max(uhi, x);
+      vlo = std::min(vlo, y);
+      vhi = std::max(vhi, y);
+    }
+  }
+  lo[0] = ulo;
+  hi[0] = uhi;
+  lo[1] = vlo;
+  hi[1] = vhi;
+}
+
+} // namespace
+
 GradientScreen screen_gradient(std::span<const double> coefficients, int d,
                                double constant_tolerance) {
   GradientScreen r;
-  if (d <= 0 || std::all_of(coefficients.begin(), coefficients.end(),
-                            [&](double x) { return x == coefficients[0]; })) {
+  if (d <= 0) {
     r.verdict = GradientScreen::kConstant;
     return r;
   }
   if (d == 1) {
-    r.verdict = GradientScreen::kNoZero; // a non-constant linear field has no critical point
+    // A non-constant linear field has no critical point.
+    r.verdict = std::all_of(coefficients.begin(), coefficients.end(),
+                            [&](double x) { return x == coefficients[0]; })
+                    ? GradientScreen::kConstant
+                    : GradientScreen::kNoZero;
     return r;
   }
-  // The gradient's Bernstein coefficients d (c[a+1,b] - c[a,b]) and d (c[a,b+1] - c[a,b]) (as
-  // BernsteinTriangle::du and ::dv), in a per-thread buffer.
-  const std::size_t n = static_cast<std::size_t>(lattice_size(d - 1));
-  thread_local std::vector<double> grad;
-  grad.resize(2 * n);
-  double *gu = grad.data(), *gv = gu + n;
-  double ulo = INFINITY, uhi = -INFINITY, vlo = INFINITY, vhi = -INFINITY;
-  {
-    std::size_t k = 0;
-    for (int b = 0; b < d; ++b) {
-      // Row b of the lattice and the row above it.
-      const double *row = &coefficients[lattice_index(d, 0, b)];
-      const double *up = &coefficients[lattice_index(d, 0, b + 1)];
-      for (int a = 0; a + b < d; ++a, ++k) {
-        gu[k] = d * (row[a + 1] - row[a]);
-        gv[k] = d * (up[a] - row[a]);
-        ulo = std::min(ulo, gu[k]);
-        uhi = std::max(uhi, gu[k]);
-        vlo = std::min(vlo, gv[k]);
-        vhi = std::max(vhi, gv[k]);
-      }
-    }
-  }
+  // The gradient's Bernstein coefficients are d (c[a+1,b] - c[a,b]) and d (c[a,b+1] - c[a,b])
+  // (as BernsteinTriangle::du and ::dv); first only their extremes (an unrolled pass for the
+  // common degrees; scaling by d > 0 preserves the order and the signs exactly).
+  double lo[2], hi[2];
+  dispatch_degree(d, [&](auto D) { difference_range<D.value>(coefficients.data(), d, lo, hi); });
+  const double ulo = d * lo[0], uhi = d * hi[0], vlo = d * lo[1], vhi = d * hi[1];
   r.scale = std::max({-ulo, uhi, -vlo, vhi});
   // Constant up to rounding: the gradient is round-off of the values (e.g. a constant field
-  // converted from Lagrange to Bernstein form).
-  double value_scale = 0;
-  for (double x : coefficients)
-    value_scale = std::max(value_scale, std::abs(x));
-  if (r.scale <= constant_tolerance * value_scale)
+  // converted from Lagrange to Bernstein form). Every value is within d differences of c[0,0],
+  // so max |c| <= |c[0,0]| + scale (doubled for the differences' rounding): only a gradient
+  // that small needs the values' largest magnitude.
+  auto constant = [&] {
+    if (r.scale > constant_tolerance * (std::abs(coefficients[0]) + 2 * r.scale))
+      return false;
+    double value_scale = 0;
+    for (double x : coefficients)
+      value_scale = std::max(value_scale, std::abs(x));
+    return r.scale <= constant_tolerance * value_scale;
+  };
+  if (constant())
     r.verdict = GradientScreen::kConstant;
   // Most cells of a smooth field: one gradient component keeps its sign on the whole closed
   // triangle (its Bernstein coefficients share a sign), so there is no critical point at all.
@@ -208,6 +226,21 @@ GradientScreen screen_gradient(std::span<const double> coefficients, int d,
   // polynomial on the closed triangle (a convex combination of them), and the gradient cannot
   // vanish there. Margins as in the box search (64 (m+1)^2 eps of the scale).
   else {
+    const std::size_t n = static_cast<std::size_t>(lattice_size(d - 1));
+    thread_local std::vector<double> grad;
+    grad.resize(2 * n);
+    double *gu = grad.data(), *gv = gu + n;
+    {
+      std::size_t k = 0;
+      for (int b = 0; b < d; ++b) {
+        const double *row = &coefficients[lattice_index(d, 0, b)];
+        const double *up = &coefficients[lattice_index(d, 0, b + 1)];
+        for (int a = 0; a + b < d; ++a, ++k) {
+          gu[k] = d * (row[a + 1] - row[a]);
+          gv[k] = d * (up[a] - row[a]);
+        }
+      }
+    }
     const double eps = std::numeric_limits<double>::epsilon();
     auto excludes = [&](double a, double b) {
       const double margin = 64.0 * d * d * eps * r.scale * (std::abs(a) + std::abs(b));
