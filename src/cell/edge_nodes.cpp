@@ -23,16 +23,23 @@ uint8_t edge_nodes_of(std::span<const double> p, double value_scale, const EdgeN
   thread_local std::vector<double> dp, ddp;
   thread_local std::vector<Root> roots;
   dp.resize(static_cast<std::size_t>(n));
-  bernstein_derivative(p, dp.data());
+  // One pass: the derivative's coefficients n (p[i+1] - p[i]) (as bernstein_derivative), their
+  // extremes and largest magnitude, and the values' largest magnitude.
+  double dscale = 0, dlo = INFINITY, dhi = -INFINITY, pscale = std::abs(p[0]);
+  for (int i = 0; i < n; ++i) {
+    const double x = n * (p[i + 1] - p[i]);
+    dp[i] = x;
+    dscale = std::max(dscale, std::abs(x));
+    dlo = std::min(dlo, x);
+    dhi = std::max(dhi, x);
+    pscale = std::max(pscale, std::abs(p[i + 1]));
+  }
   // A constant edge (derivative zero up to rounding of the values).
-  double dscale = 0, pscale = 0;
-  for (double c : dp)
-    dscale = std::max(dscale, std::abs(c));
-  for (double c : p)
-    pscale = std::max(pscale, std::abs(c));
   if (dscale <= 1e-12 * pscale)
     return deg | kEdgeConstant;
-  if (certainly_rootless(dp))
+  // Strictly monotone beyond find_roots' tangency threshold (certainly_rootless on dp).
+  const double level = std::max(RootOptions{}.near_zero, 0.0) * dscale;
+  if (dlo > level || dhi < -level)
     return deg;
   find_roots(dp, roots);
   if (roots.empty())
