@@ -1,5 +1,6 @@
 #include "cell/edge_nodes.hpp"
 
+#include "poly/degree_dispatch.hpp"
 #include "poly/root_isolation.hpp"
 #include "util/parallel_for.hpp"
 
@@ -20,27 +21,33 @@ uint8_t edge_nodes_of(std::span<const double> p, double value_scale, const EdgeN
   const int n = static_cast<int>(p.size()) - 1;
   if (n < 1)
     return deg;
-  thread_local std::vector<double> dp, ddp;
-  thread_local std::vector<Root> roots;
-  dp.resize(static_cast<std::size_t>(n));
-  // One pass: the derivative's coefficients n (p[i+1] - p[i]) (as bernstein_derivative), their
-  // extremes and largest magnitude, and the values' largest magnitude.
+  // One unrolled pass for the common degrees: the extremes and largest magnitude of the
+  // derivative's coefficients n (p[i+1] - p[i]) (as bernstein_derivative), and the values'
+  // largest magnitude; most edges are decided there.
   double dscale = 0, dlo = INFINITY, dhi = -INFINITY, pscale = std::abs(p[0]);
-  for (int i = 0; i < n; ++i) {
-    const double x = n * (p[i + 1] - p[i]);
-    dp[i] = x;
-    dscale = std::max(dscale, std::abs(x));
-    dlo = std::min(dlo, x);
-    dhi = std::max(dhi, x);
-    pscale = std::max(pscale, std::abs(p[i + 1]));
-  }
+  dispatch_degree(n, [&](auto D) {
+    const int m = D.value >= 0 ? D.value : n;
+#pragma GCC unroll 16
+    for (int i = 0; i < m; ++i) {
+      const double x = m * (p[i + 1] - p[i]);
+      dscale = std::max(dscale, std::abs(x));
+      dlo = std::min(dlo, x);
+      dhi = std::max(dhi, x);
+      pscale = std::max(pscale, std::abs(p[i + 1]));
+    }
+  });
   // A constant edge (derivative zero up to rounding of the values).
   if (dscale <= 1e-12 * pscale)
     return deg | kEdgeConstant;
-  // Strictly monotone beyond find_roots' tangency threshold (certainly_rootless on dp).
+  // Strictly monotone beyond find_roots' tangency threshold (certainly_rootless on the
+  // derivative).
   const double level = std::max(RootOptions{}.near_zero, 0.0) * dscale;
   if (dlo > level || dhi < -level)
     return deg;
+  thread_local std::vector<double> dp, ddp;
+  thread_local std::vector<Root> roots;
+  dp.resize(static_cast<std::size_t>(n));
+  bernstein_derivative(p, dp.data());
   find_roots(dp, roots);
   if (roots.empty())
     return deg;

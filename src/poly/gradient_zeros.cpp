@@ -163,8 +163,10 @@ namespace {
 template <int D> void difference_range(const double *c, int d_run, double lo[2], double hi[2]) {
   const int d = D >= 0 ? D : d_run;
   double ulo = INFINITY, uhi = -INFINITY, vlo = INFINITY, vhi = -INFINITY;
+#pragma GCC unroll 16
   for (int b = 0; b < d; ++b) {
     const double *row = &c[lattice_index(d, 0, b)], *up = &c[lattice_index(d, 0, b + 1)];
+#pragma GCC unroll 16
     for (int a = 0; a + b < d; ++a) {
       const double x = row[a + 1] - row[a], y = up[a] - row[a];
       ulo = std::min(ulo, x);
