@@ -86,6 +86,17 @@ PathField::PathField(BernsteinTriangle poly) : g(std::move(poly)) {
   margin = 1e-12 * std::max(scale, 1e-300);
 }
 
+void PathField::assign(const BernsteinTriangle &poly, bool negate) {
+  g.assign(poly.degree(), poly.coefficients());
+  double scale = 0;
+  for (double &c : g.coefficients()) {
+    scale = std::max(scale, std::abs(c));
+    if (negate)
+      c = -c;
+  }
+  margin = 1e-12 * std::max(scale, 1e-300);
+}
+
 PathField PathField::negated() const {
   PathField f = *this;
   for (double &c : f.g.coefficients())

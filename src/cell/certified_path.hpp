@@ -28,6 +28,8 @@ struct PathField {
   explicit PathField(BernsteinTriangle g);
   // The field -g (for ascending paths).
   PathField negated() const;
+  // This field made g (or -g), reusing its storage.
+  void assign(const BernsteinTriangle &poly, bool negate);
   BernsteinTriangle g; // its gradient, where descent steps need it, from g.jet()
   double margin = 0;   // certified strict inequalities use level - margin
 };

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <optional>
 
 namespace hoct {
 namespace {
@@ -23,26 +22,32 @@ void eigen2(const Mat2 &h, double lambda[2], Vec2 vec[2]) {
 
 } // namespace
 
-SectorResult connect_sectors(const BernsteinTriangle &g, const CellNodes &cn,
-                             const std::vector<int> &interior,
-                             const std::vector<CellEdgeNode> &edge, PathCounters &counters,
-                             bool with_paths) {
-  SectorResult out;
+void connect_sectors(const BernsteinTriangle &g, const CellNodes &cn,
+                     const std::vector<int> &interior, const std::vector<CellEdgeNode> &edge,
+                     PathCounters &counters, SectorResult &out, bool with_paths) {
+  out.join.clear();
+  out.split.clear();
+  out.join_paths.clear();
+  out.split_paths.clear();
+  out.failed = out.degenerate = false;
   if (interior.empty() && edge.empty())
-    return out; // only corners: every sector lies along an edge
-  // The fields the paths follow, built when a sector needs one: g for descending paths, -g for
+    return; // only corners: every sector lies along an edge
+  // The fields the paths follow, set when a sector needs one: g for descending paths, -g for
   // ascending ones (most cells of a smooth field have edge nodes whose sectors all lie along
-  // their edges, and need neither).
-  std::optional<PathField> down_field, up_field;
+  // their edges, and need neither). Per-thread storage, reused from cell to cell.
+  thread_local PathField down_field, up_field;
+  bool have_down = false, have_up = false;
   auto down = [&]() -> const PathField & {
-    if (!down_field)
-      down_field.emplace(g);
-    return *down_field;
+    if (!have_down)
+      down_field.assign(g, false);
+    have_down = true;
+    return down_field;
   };
   auto up = [&]() -> const PathField & {
-    if (!up_field)
-      up_field = down().negated();
-    return *up_field;
+    if (!have_up)
+      up_field.assign(g, true);
+    have_up = true;
+    return up_field;
   };
   thread_local std::vector<double> vals, neg_vals; // reused across cells of a thread
   vals.resize(cn.nodes.size());
@@ -152,7 +157,6 @@ SectorResult connect_sectors(const BernsteinTriangle &g, const CellNodes &cn,
     else
       use_conj ? upper(e.node, conj, 1, &n) : upper(e.node, n, 1);
   }
-  return out;
 }
 
 } // namespace hoct

@@ -34,9 +34,10 @@ struct SectorResult {
   bool degenerate = false; // an edge node with vanishing normal derivative: fall back
 };
 
-SectorResult connect_sectors(const BernsteinTriangle &g, const CellNodes &nodes,
-                             const std::vector<int> &interior_nodes,
-                             const std::vector<CellEdgeNode> &edge_nodes, PathCounters &counters,
-                             bool with_paths = false);
+// The result goes to `out` (cleared first; its storage is reused from cell to cell).
+void connect_sectors(const BernsteinTriangle &g, const CellNodes &nodes,
+                     const std::vector<int> &interior_nodes,
+                     const std::vector<CellEdgeNode> &edge_nodes, PathCounters &counters,
+                     SectorResult &out, bool with_paths = false);
 
 } // namespace hoct

@@ -69,6 +69,7 @@ struct CellScratch {
   std::vector<int> interior_idx;
   std::vector<CellEdgeNode> edge_nodes;
   BernsteinTriangle poly; // the current cell's polynomial (storage reused from cell to cell)
+  SectorResult sectors;   // the current cell's connections
 };
 
 // The certified connections of regular cell c (interior critical points in scratch.critical),
@@ -121,8 +122,9 @@ uint8_t connect_cell(const Mesh &mesh, const EdgeNodes &en, int64_t c, bool have
     cn.nodes.push_back(
         {scratch.critical[i].uv, scratch.critical[i].value, -1 - static_cast<int64_t>(i)});
   }
-  const SectorResult r =
-      connect_sectors(g, cn, scratch.interior_idx, scratch.edge_nodes, out.counters, arc_geometry);
+  const SectorResult &r = scratch.sectors;
+  connect_sectors(g, cn, scratch.interior_idx, scratch.edge_nodes, out.counters, scratch.sectors,
+                  arc_geometry);
   if (r.failed || r.degenerate)
     return r.failed ? kCertificationFailed : kDegenerateEdgeNode;
   // The cell's interior node i becomes the chunk's node first + i.
