@@ -1,6 +1,9 @@
-// A minimal parallel loop over [0, n) in contiguous chunks with std::threads. Work items must be
-// independent and write only their own slots: results are then identical for any thread count.
+// A minimal parallel loop over [0, n) in contiguous chunks on the process's worker threads
+// (util/worker_pool.hpp). Work items must be independent and write only their own slots: results
+// are then identical for any thread count.
 #pragma once
+
+#include "util/worker_pool.hpp"
 
 #include <algorithm>
 #include <atomic>
@@ -48,13 +51,8 @@ void parallel_chunks(int64_t n, int64_t chunks, int threads, const Body &body) {
       errors[t] = std::current_exception();
     }
   };
-  // The calling thread is worker 0 (one thread fewer to start).
-  std::vector<std::thread> pool;
-  for (int t = 1; t < threads; ++t)
-    pool.emplace_back(work, t);
-  work(0);
-  for (auto &th : pool)
-    th.join();
+  // The calling thread is worker 0; the others are the process's kept workers.
+  run_on_workers(threads, work);
   for (auto &e : errors)
     if (e)
       std::rethrow_exception(e);

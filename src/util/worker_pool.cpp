@@ -1,0 +1,103 @@
+#include "util/worker_pool.hpp"
+
+#include <condition_variable>
+#include <cstdint>
+#include <exception>
+#include <mutex>
+#include <thread>
+#include <unistd.h>
+#include <vector>
+
+namespace hoct {
+namespace {
+
+thread_local bool in_worker = false;
+
+class WorkerPool {
+public:
+  WorkerPool() : owner_(getpid()) {}
+
+  void run(int threads, const std::function<void(int)> &work) {
+    std::unique_lock<std::mutex> busy(busy_, std::try_to_lock);
+    if (threads <= 1 || in_worker || !busy.owns_lock() || getpid() != owner_) {
+      for (int t = 0; t < threads; ++t)
+        work(t);
+      return;
+    }
+    std::exception_ptr first;
+    {
+      std::lock_guard<std::mutex> lock(m_);
+      while (static_cast<int>(workers_.size()) < threads - 1) {
+        const int index = static_cast<int>(workers_.size()) + 1;
+        workers_.emplace_back([this, index] { loop(index); });
+      }
+      job_ = &work;
+      job_threads_ = threads;
+      pending_ = threads - 1;
+      errors_.assign(static_cast<std::size_t>(threads), nullptr);
+      ++generation_;
+    }
+    wake_.notify_all();
+    try {
+      work(0);
+    } catch (...) {
+      first = std::current_exception();
+    }
+    std::unique_lock<std::mutex> lock(m_);
+    done_.wait(lock, [&] { return pending_ == 0; });
+    job_ = nullptr;
+    for (const auto &e : errors_)
+      if (!first && e)
+        first = e;
+    lock.unlock();
+    if (first)
+      std::rethrow_exception(first);
+  }
+
+private:
+  void loop(int index) {
+    in_worker = true;
+    uint64_t seen = 0;
+    std::unique_lock<std::mutex> lock(m_);
+    for (;;) {
+      wake_.wait(lock, [&] { return generation_ != seen; });
+      seen = generation_;
+      if (index >= job_threads_)
+        continue;
+      const std::function<void(int)> *job = job_;
+      lock.unlock();
+      std::exception_ptr error;
+      try {
+        (*job)(index);
+      } catch (...) {
+        error = std::current_exception();
+      }
+      lock.lock();
+      errors_[static_cast<std::size_t>(index)] = error;
+      if (--pending_ == 0)
+        done_.notify_one();
+    }
+  }
+
+  const pid_t owner_; // after fork() the workers do not exist in the child
+  std::mutex busy_;   // one loop at a time
+  std::mutex m_;
+  std::condition_variable wake_, done_;
+  std::vector<std::thread> workers_;
+  const std::function<void(int)> *job_ = nullptr;
+  int job_threads_ = 0;
+  int pending_ = 0;
+  uint64_t generation_ = 0;
+  std::vector<std::exception_ptr> errors_;
+};
+
+} // namespace
+
+void run_on_workers(int threads, const std::function<void(int)> &work) {
+  // Never destroyed: the workers wait for work until the process ends (joining them from a
+  // static destructor could run after other statics they use are gone).
+  static WorkerPool *pool = new WorkerPool;
+  pool->run(threads, work);
+}
+
+} // namespace hoct
