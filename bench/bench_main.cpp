@@ -31,7 +31,7 @@ namespace {
 struct Settings {
   int runs = 5;
   bool quick = false;
-  std::vector<std::string> sections = {"datasets", "scaling", "memory", "pl"};
+  std::vector<std::string> sections = {"datasets", "scaling", "density", "memory", "pl"};
   std::vector<int> degrees = {2, 3, 5};
   std::vector<double> sizes = {1e4, 1e5, 1e6, 4e6};
   std::vector<int> threads = {1, 2};
@@ -149,21 +149,31 @@ void datasets_section(const Settings &s) {
               "interleaved, median of the per-run ratios.)\n\n");
 }
 
-// The `random` dataset of about `size` cells of `degree` written to `vtu`; returns its cells.
-long long write_random(const std::string &vtu, double size, int degree) {
+// The `random` dataset of about `size` cells of `degree` (wave numbers times `frequency`) written
+// to `vtu`; returns its cells.
+long long write_random(const std::string &vtu, double size, int degree, double frequency = 1) {
   DatasetOptions o;
   o.cells = static_cast<long long>(size);
   o.degree = degree;
+  o.frequency = frequency;
   const MeshInput in = generate_dataset("random", o);
   write_vtu(vtu, in);
   return static_cast<long long>(in.num_cells());
 }
 
-void scaling_section(const Settings &s) {
-  std::printf("## Scaling on `random` fields: `hoct tree FILE.vtu --json J` phase by phase "
-              "(seconds; medians of %d runs up to 1e5 cells, %d above; 1- and 2-thread runs "
-              "interleaved; the cell phase is edge nodes + cells + graph assembly, its speed-up "
-              "the median of the per-run ratios)\n\n",
+// The scaling tables: one field on ever finer meshes (`scaling`: the smaller meshes hold more of
+// the field per cell), or the field's features refined with the mesh (`density`: wave numbers
+// times sqrt(cells / 1e4), the same features per cell at every size, so that time per cell
+// shows the algorithm's own scaling).
+void scaling_section(const Settings &s, bool constant_density) {
+  if (constant_density)
+    std::printf("## Scaling at constant feature density: `random --frequency F` with F = "
+                "sqrt(cells / 1e4) (the 1e4 row's features per cell at every size)");
+  else
+    std::printf("## Scaling on `random` fields (one field, finer meshes)");
+  std::printf(": `hoct tree FILE.vtu --json J` phase by phase (seconds; medians of %d runs up to "
+              "1e5 cells, %d above; 1- and 2-thread runs interleaved; the cell phase is edge nodes "
+              "+ cells + graph assembly, its speed-up the median of the per-run ratios)\n\n",
               s.runs, std::min(s.runs, 3));
   std::printf(
       "| degree | cells | graph nodes | tree nodes | read | mesh + Bernstein | edge nodes "
@@ -174,7 +184,7 @@ void scaling_section(const Settings &s) {
     for (double size : s.sizes) {
       ScratchDir scratch;
       const std::string vtu = scratch.file("random.vtu");
-      write_random(vtu, size, degree);
+      write_random(vtu, size, degree, constant_density ? std::sqrt(size / 1e4) : 1.0);
       const int runs = size > 1.5e5 ? std::min(s.runs, 3) : s.runs;
       const ThreadRuns tr = interleaved_runs(vtu, s.threads, false, runs, scratch);
       const PipelineResult &m1 = tr.median.front(), &m2 = tr.median.back();
@@ -318,9 +328,11 @@ int main(int argc, char **argv) {
   app.add_option("--runs", s.runs, "Repetitions per measurement (medians are reported)")
       ->check(CLI::Range(1, 1000));
   app.add_flag("--quick", s.quick, "A smoke run: small sizes, few runs");
-  app.add_option("--sections", s.sections, "Sections to run: datasets, scaling, memory, pl")
+  app.add_option("--sections", s.sections,
+                 "Sections to run: datasets, scaling, density, memory, pl")
       ->delimiter(',');
-  app.add_option("--degrees", s.degrees, "Degrees of the scaling section")->delimiter(',');
+  app.add_option("--degrees", s.degrees, "Degrees of the scaling, density and memory sections")
+      ->delimiter(',');
   app.add_option("--sizes", s.sizes, "Cell counts of the scaling section, e.g. 1e4,1e5")
       ->delimiter(',');
   app.add_option("--ttk-ftm", s.ttk_ftm,
@@ -335,7 +347,9 @@ int main(int argc, char **argv) {
   if (wants(s, "datasets"))
     datasets_section(s);
   if (wants(s, "scaling"))
-    scaling_section(s);
+    scaling_section(s, false);
+  if (wants(s, "density"))
+    scaling_section(s, true);
   if (wants(s, "memory"))
     memory_section(s);
   if (wants(s, "pl"))

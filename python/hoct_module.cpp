@@ -285,11 +285,12 @@ PYBIND11_MODULE(_hoct, m) {
   m.def("contour_tree", &compute_tree, py::call_guard<py::gil_scoped_release>());
   m.def(
       "generate",
-      [](const std::string &name, int degree, long long cells, uint64_t seed) {
+      [](const std::string &name, int degree, long long cells, uint64_t seed, double frequency) {
         DatasetOptions o;
         o.degree = degree;
         o.cells = cells;
         o.seed = seed;
+        o.frequency = frequency;
         return make_mesh(generate_dataset(name, o));
       },
       py::call_guard<py::gil_scoped_release>());

@@ -20,6 +20,7 @@ struct GenerateOptions {
   int degree = 0;
   double cells = 0; // a double, so that 1e6 is accepted
   uint64_t seed = 1;
+  double frequency = 1;
   bool list = false;
 };
 
@@ -64,6 +65,7 @@ void run_generate(const GenerateOptions &o) {
   options.degree = o.degree;
   options.cells = static_cast<long long>(o.cells);
   options.seed = o.seed;
+  options.frequency = o.frequency;
   const MeshInput mesh = generate_dataset(o.name, options);
   const auto t1 = std::chrono::steady_clock::now();
   write_vtu(o.output, mesh, encoding);
@@ -93,6 +95,9 @@ void register_generate(CLI::App &app) {
                   "Target number of cells, e.g. 1e6 (default: the dataset's own; the result is "
                   "the nearest size the dataset's mesh family allows)");
   sub->add_option("--seed", o->seed, "Random seed (default 1)");
+  sub->add_option("--frequency", o->frequency,
+                  "random only: multiply the wave numbers (default 1; F^2 times the features; "
+                  "scale it with sqrt(cells) to keep the features per cell)");
   sub->add_option("--encoding", o->encoding,
                   "VTU encoding: ascii, base64, zlib, appended (default), appended-base64")
       ->check(CLI::IsMember({"ascii", "base64", "zlib", "appended", "appended-base64"}));

@@ -61,9 +61,10 @@ def from_arrays(points, cells, values, degree=None, cell_types=None):
     return _hoct.from_arrays(points, cells, values)
 
 
-def generate(name, degree=0, cells=0, seed=1):
-    """A synthetic dataset (hoct.dataset_names()): the same as `hoct generate`."""
-    return _hoct.generate(name, int(degree), int(cells), int(seed))
+def generate(name, degree=0, cells=0, seed=1, frequency=1.0):
+    """A synthetic dataset (hoct.dataset_names()): the same as `hoct generate`
+    (frequency: `random` only, its wave numbers multiplied)."""
+    return _hoct.generate(name, int(degree), int(cells), int(seed), float(frequency))
 
 
 dataset_names = _hoct.dataset_names

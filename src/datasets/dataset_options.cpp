@@ -3,6 +3,8 @@
 #include "error.hpp"
 #include "poly/lattice.hpp"
 
+#include <cstdio>
+
 namespace hoct {
 
 int dataset_degree(const DatasetOptions &o, int default_degree, const std::string &name) {
@@ -28,8 +30,14 @@ long long dataset_cells(const DatasetOptions &o, long long default_cells, long l
 }
 
 std::string dataset_source(const std::string &name, const DatasetOptions &o, int degree) {
-  return "generated:" + name + " seed=" + std::to_string(o.seed) +
-         " degree=" + std::to_string(degree);
+  std::string s = "generated:" + name + " seed=" + std::to_string(o.seed) +
+                  " degree=" + std::to_string(degree);
+  if (o.frequency != 1) {
+    char f[32];
+    std::snprintf(f, sizeof f, " frequency=%g", o.frequency);
+    s += f;
+  }
+  return s;
 }
 
 } // namespace hoct

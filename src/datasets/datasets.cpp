@@ -57,8 +57,11 @@ const std::string &dataset_description(const std::string &name) {
 
 MeshInput generate_dataset(const std::string &name, const DatasetOptions &options) {
   for (const auto &e : registry())
-    if (e.name == name)
+    if (e.name == name) {
+      if (options.frequency != 1 && name != "random")
+        throw Error(name + ": --frequency applies to the random dataset only");
       return e.generate(options);
+    }
   std::string known;
   for (const auto &e : registry())
     known += (known.empty() ? "" : ", ") + e.name;

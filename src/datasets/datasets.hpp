@@ -14,6 +14,9 @@ struct DatasetOptions {
   int degree = 0;      // 0 = the dataset's own default
   long long cells = 0; // target number of cells; 0 = the dataset's own default
   uint64_t seed = 1;
+  // `random` only: its wave numbers times this (features per unit area grow with its square);
+  // with the square root of the cell count's growth, every size has the same features per cell.
+  double frequency = 1;
 };
 
 // Names accepted by generate_dataset, in a stable order.

@@ -97,6 +97,8 @@ def test_numpy_and_meshio_input(tmp):
     (lambda: hoct.from_arrays(np.zeros((3, 2)), [[0, 1, 2]], np.zeros(3), degree=2), "degree 2 needs 6"),
     (lambda: hoct.from_arrays(np.zeros((3, 2)), [[0, 1, 2]], np.zeros(3), cell_types=[22]), "VTK type 22"),
     (lambda: hoct.generate("nope"), "unknown dataset"),
+    (lambda: hoct.generate("random", cells=200, frequency=0), "frequency must be"),
+    (lambda: hoct.generate("gauss", frequency=2), "random dataset only"),
     (lambda: hoct.contour_tree(hoct.generate("gauss"), method="magic"), "method must be"),
 ])
 def test_errors_are_value_errors_with_the_library_message(call, phrase):

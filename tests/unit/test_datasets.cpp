@@ -588,6 +588,31 @@ TEST(Datasets, ExactTreeSeesTheDesignedFeatures) {
   EXPECT_EQ(c.arcs.size() + 1, c.nodes.size());
 }
 
+// --frequency F multiplies the random field's wave numbers: on F^2 times the cells (the same
+// cells per feature) its exact tree has about F^2 times the nodes; F = 1 is the default field.
+TEST(Datasets, RandomFrequencyScalesTheFeatures) {
+  DatasetOptions o;
+  o.cells = 5000;
+  const MeshInput base = generate_dataset("random", o);
+  o.frequency = 1;
+  EXPECT_EQ(generate_dataset("random", o).values, base.values);
+  o.frequency = 2;
+  o.cells = 20000;
+  const MeshInput dense = generate_dataset("random", o);
+  EXPECT_NE(dense.source.find("frequency=2"), std::string::npos) << dense.source;
+  const double n1 = static_cast<double>(exact_contour_tree(build_mesh(base)).nodes.size());
+  const double n2 = static_cast<double>(exact_contour_tree(build_mesh(dense)).nodes.size());
+  EXPECT_GT(n2, 2.5 * n1) << n1 << " -> " << n2;
+  EXPECT_LT(n2, 6.0 * n1) << n1 << " -> " << n2;
+  for (double bad : {0.0, -1.0, 2000.0, std::nan("")}) {
+    o.frequency = bad;
+    EXPECT_THROW(generate_dataset("random", o), Error) << bad;
+  }
+  o.frequency = 2;
+  o.cells = 0;
+  EXPECT_THROW(generate_dataset("gauss", o), Error);
+}
+
 TEST(Datasets, GaussDiskBoundaryStaysOnTheCircle) {
   const MeshInput m = make("gauss");
   std::map<std::pair<int64_t, int64_t>, int> count;
