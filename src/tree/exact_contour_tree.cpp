@@ -4,6 +4,7 @@
 #include "cell/sector_connections.hpp"
 #include "pl/cell_refinement.hpp"
 #include "poly/gradient_zeros.hpp"
+#include "poly/lattice.hpp"
 #include "tree/contour_tree.hpp"
 #include "tree/sweep_contour_tree.hpp"
 #include "util/parallel_for.hpp"
@@ -14,6 +15,7 @@
 #include <cmath>
 #include <map>
 #include <optional>
+#include <tuple>
 
 namespace hoct {
 namespace {
@@ -252,9 +254,23 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
   UninitializedVector<GraphEdge> join_edges, split_edges, common_edges;
   join_edges.resize(cell_join);
   split_edges.resize(cell_split);
-  common_edges.reserve(chain_edges);
-  std::vector<double> values(next);
+
+  // Room for the fallback cells' lattice nodes too (at most lattice_size(K) new ones each), so
+  // that adding them does not reallocate (and copy) arrays of millions of nodes.
+  const int max_degree = std::max(1, field.max_degree());
+  const int K = opt.fallback_refinement > 0 ? opt.fallback_refinement : std::max(4, 2 * max_degree);
+  const std::size_t fallback_room =
+      static_cast<std::size_t>(
+          std::count_if(fallback.begin(), fallback.end(), [](uint8_t f) { return f != 0; })) *
+      static_cast<std::size_t>(lattice_size(K));
+  std::vector<double> values;
+  values.reserve(static_cast<std::size_t>(next) + fallback_room);
+  values.resize(static_cast<std::size_t>(next));
+  // The chains, and each fallback cell's 3 K^2 sub-edges plus the pieces its lattice nodes add.
+  common_edges.reserve(chain_edges + fallback_room / static_cast<std::size_t>(lattice_size(K)) *
+                                         static_cast<std::size_t>(3 * K * K + 3 * K));
   UninitializedVector<NodeSource> source;
+  source.reserve(static_cast<std::size_t>(next) + fallback_room);
   source.resize(static_cast<std::size_t>(next));
   // Sources and values of vertices and edge nodes.
   // Threads for the gathering loops: only where each gets enough items to pay for its start.
@@ -312,8 +328,6 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
 
   // Fallback cells: k x k refinement through the edge nodes, PL rule (all sub-edges in both
   // graphs). Lattice points on an edge are shared by both cells of the edge.
-  const int max_degree = std::max(1, field.max_degree());
-  const int K = opt.fallback_refinement > 0 ? opt.fallback_refinement : std::max(4, 2 * max_degree);
   std::map<std::pair<int64_t, int>, int64_t> lattice_node; // (edge, step from lo) -> id
   auto add_node = [&](double value, int64_t cell, const Vec2 &uv, NodeLocation loc) {
     values.push_back(value);
@@ -394,9 +408,34 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
   }
 
   // Edge chains: consecutive nodes along every edge (vertices, edge nodes, lattice nodes).
-  // Without fallback lattice nodes or geometry, edge e adds count(e) + 1 pieces at a known
-  // offset: written in parallel.
-  if (lattice_node.empty() && !opt.arc_geometry) {
+  // Fallback cells' lattice nodes by edge (edge, position, id), sorted.
+  std::vector<std::tuple<int64_t, double, int64_t>> lattice_on_edge;
+  lattice_on_edge.reserve(lattice_node.size());
+  for (const auto &[key, id] : lattice_node)
+    lattice_on_edge.emplace_back(key.first, static_cast<double>(key.second) / K, id);
+  // The chain of edge e (position along the edge, node id), ascending: its vertices, its edge
+  // nodes (ascending already) and its lattice nodes (from `lattice`, the edge's first entry in
+  // lattice_on_edge, advanced past them).
+  auto chain_of = [&](int64_t e, std::size_t &lattice,
+                      std::vector<std::pair<double, int64_t>> &chain) {
+    chain.clear();
+    chain.push_back({0.0, topo.edge_vertices(e)[0]});
+    for (int64_t i = en.offset[e]; i < en.offset[e + 1]; ++i)
+      chain.push_back({en.nodes[i].t, edge_base + i});
+    chain.push_back({1.0, topo.edge_vertices(e)[1]});
+    bool extra = false;
+    for (; lattice < lattice_on_edge.size() && std::get<0>(lattice_on_edge[lattice]) == e;
+         ++lattice, extra = true)
+      chain.push_back(
+          {std::get<1>(lattice_on_edge[lattice]), std::get<2>(lattice_on_edge[lattice])});
+    if (extra)
+      std::sort(chain.begin(), chain.end());
+  };
+  std::vector<std::pair<double, int64_t>> chain;
+  if (!opt.arc_geometry) {
+    // Edge e adds count(e) + 1 pieces at a known offset: written in parallel. The few edges
+    // with fallback lattice nodes then get their own chain: its first count(e) + 1 pieces in
+    // those slots, the rest appended.
     const std::size_t base = common_edges.size();
     common_edges.resize(base + chain_edges);
     parallel_for(ne, gather_threads(ne), [&](int64_t begin, int64_t end, int) {
@@ -411,24 +450,25 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
         }
       }
     });
-  } else {
-    common_edges.reserve(common_edges.size() + chain_edges);
-    std::vector<std::pair<double, int64_t>> chain;
-    std::map<int64_t, std::vector<std::pair<double, int64_t>>> lattice_by_edge;
-    for (const auto &[key, id] : lattice_node)
-      lattice_by_edge[key.first].push_back({static_cast<double>(key.second) / K, id});
-    for (int64_t e = 0; e < ne; ++e) {
-      chain.clear();
-      chain.push_back({0.0, topo.edge_vertices(e)[0]});
-      for (int64_t i = en.offset[e]; i < en.offset[e + 1]; ++i)
-        chain.push_back({en.nodes[i].t, edge_base + i});
-      chain.push_back({1.0, topo.edge_vertices(e)[1]});
-      // Edge nodes are ascending already; only fallback lattice nodes need sorting in.
-      auto it = lattice_by_edge.empty() ? lattice_by_edge.end() : lattice_by_edge.find(e);
-      if (it != lattice_by_edge.end()) {
-        chain.insert(chain.end(), it->second.begin(), it->second.end());
-        std::sort(chain.begin(), chain.end());
+    for (std::size_t l = 0; l < lattice_on_edge.size();) {
+      const int64_t e = std::get<0>(lattice_on_edge[l]);
+      chain_of(e, l, chain);
+      const std::size_t slots = static_cast<std::size_t>(en.offset[e + 1] - en.offset[e] + 1);
+      const std::size_t slot = base + static_cast<std::size_t>(e + en.offset[e]);
+      for (std::size_t i = 0; i + 1 < chain.size(); ++i) {
+        const GraphEdge piece{chain[i].second, chain[i + 1].second};
+        if (i < slots)
+          common_edges[slot + i] = piece;
+        else
+          common_edges.push_back(piece);
       }
+    }
+  } else {
+    // With geometry: every chain piece with three interior points, edge by edge.
+    common_edges.reserve(common_edges.size() + chain_edges);
+    std::size_t l = 0;
+    for (int64_t e = 0; e < ne; ++e) {
+      chain_of(e, l, chain);
       // Positions along the edge through its first cell (for the geometry of the chain pieces).
       const int64_t ec = topo.edge_cells_begin(e)[0];
       int ek = 0;
@@ -436,15 +476,13 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
         ++ek;
       const bool erev = topo.edge_reversed(ec, ek);
       for (std::size_t i = 0; i + 1 < chain.size(); ++i) {
-        if (opt.arc_geometry) {
-          std::vector<Vec3> inner;
-          for (int j = 1; j < 4; ++j) {
-            const double t = chain[i].first + (chain[i + 1].first - chain[i].first) * j / 4;
-            const Vec2 uv = point_on_edge(ek, erev ? 1 - t : t);
-            inner.push_back(mesh.geometry.position(ec, uv[0], uv[1]));
-          }
-          geo_edges.push_back({chain[i].second, chain[i + 1].second, std::move(inner)});
+        std::vector<Vec3> inner;
+        for (int j = 1; j < 4; ++j) {
+          const double t = chain[i].first + (chain[i + 1].first - chain[i].first) * j / 4;
+          const Vec2 uv = point_on_edge(ek, erev ? 1 - t : t);
+          inner.push_back(mesh.geometry.position(ec, uv[0], uv[1]));
         }
+        geo_edges.push_back({chain[i].second, chain[i + 1].second, std::move(inner)});
         common_edges.push_back({chain[i].second, chain[i + 1].second});
       }
     }
