@@ -281,9 +281,13 @@ GradientScreen screen_gradient(std::span<const double> coefficients, int d,
 }
 
 GradientZeros find_gradient_zeros(const BernsteinTriangle &g, const GradientZeroOptions &opt) {
+  return find_gradient_zeros(g, opt,
+                             screen_gradient(g.coefficients(), g.degree(), opt.constant_tolerance));
+}
+
+GradientZeros find_gradient_zeros(const BernsteinTriangle &g, const GradientZeroOptions &opt,
+                                  const GradientScreen &screen) {
   GradientZeros out;
-  const int d = g.degree();
-  const GradientScreen screen = screen_gradient(g.coefficients(), d, opt.constant_tolerance);
   if (screen.verdict == GradientScreen::kConstant) {
     out.constant = true;
     return out;

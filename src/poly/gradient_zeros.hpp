@@ -65,5 +65,9 @@ GradientScreen screen_gradient(std::span<const double> coefficients, int degree,
 
 GradientZeros find_gradient_zeros(const BernsteinTriangle &g,
                                   const GradientZeroOptions &options = {});
+// The same with g's screen already computed (screen_gradient of g's coefficients with
+// options.constant_tolerance), as the cell loop has it.
+GradientZeros find_gradient_zeros(const BernsteinTriangle &g, const GradientZeroOptions &options,
+                                  const GradientScreen &screen);
 
 } // namespace hoct

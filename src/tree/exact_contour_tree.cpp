@@ -196,13 +196,14 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
       scratch.critical.clear();
       bool have_polynomial = false; // scratch.poly holds cell c's polynomial
       // Most cells: no gradient zero, decided on the stored coefficients.
-      if (screen_gradient(field.coefficients(c), field.degree(c), zero_options.constant_tolerance)
-              .verdict != GradientScreen::kNoZero) {
+      const GradientScreen screen =
+          screen_gradient(field.coefficients(c), field.degree(c), zero_options.constant_tolerance);
+      if (screen.verdict != GradientScreen::kNoZero) {
         scratch.poly.assign(field.degree(c), field.coefficients(c));
         have_polynomial = true;
         const BernsteinTriangle &g = scratch.poly;
         cell = c;
-        const GradientZeros z = find_gradient_zeros(g, zero_options);
+        const GradientZeros z = find_gradient_zeros(g, zero_options, screen);
         if (z.constant)
           why |= kConstantCell;
         if (z.budget_exhausted)
