@@ -16,7 +16,10 @@ std::vector<double> to_monomial(const BernsteinTriangle &p) {
   return mono;
 }
 
-void to_monomial(const double *bernstein, int d, double *mono) {
+namespace {
+
+template <int D> void to_monomial_fixed(const double *bernstein, int d_run, double *mono) {
+  const int d = D >= 0 ? D : d_run;
   // The coefficient of u^i v^j is d! / (i! j! (d-i-j)!) times the forward difference
   // D_u^i D_v^j c_00 (D_u c_ab = c_(a+1)b - c_ab): the Bernstein lattice laid out in `mono`, then
   // differenced in place, first along v (each column a), then along u (each row j).
@@ -38,6 +41,12 @@ void to_monomial(const double *bernstein, int d, double *mono) {
   for (int i = 0; i <= d; ++i)
     for (int j = 0; i + j <= d; ++j)
       mono[i * w + j] *= trinomial(d - i - j, i, j);
+}
+
+} // namespace
+
+void to_monomial(const double *bernstein, int d, double *mono) {
+  dispatch_degree(d, [&](auto D) { to_monomial_fixed<D.value>(bernstein, d, mono); });
 }
 
 void compose_affine(const double *mono, int d, const Mat2 &b, const Vec2 &c, double *out,

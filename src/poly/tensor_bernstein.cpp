@@ -1,6 +1,7 @@
 #include "poly/tensor_bernstein.hpp"
 
 #include "poly/binomial.hpp"
+#include "poly/degree_dispatch.hpp"
 #include "poly/lattice.hpp"
 #include "poly/monomial.hpp"
 
@@ -37,15 +38,19 @@ TensorBernstein::TensorBernstein(int m, int n, std::vector<double> c)
     throw std::invalid_argument("TensorBernstein: bad degree or coefficient count");
 }
 
-void TensorBernstein::from_monomial(const double *mono, int d, double *out) {
+namespace {
+
+template <int D> void from_monomial_fixed(const double *mono, int d_run, double *out) {
   // u^a = sum_{i>=a} C(i,a)/C(d,a) B_i^d(u), likewise in v: out = W mono W^T with
   // W[i][a] = C(i,a)/C(d,a) (a <= i), in two passes (along v into `out`, then along u in place,
   // each row i from the rows a <= i not yet overwritten: i descending).
+  const int d = D >= 0 ? D : d_run;
   const int w = d + 1;
-  double weights[64 * 64];
+  constexpr int kStack = D >= 0 ? (D + 1) * (D + 1) : 16 * 16;
+  double weights[kStack];
   std::vector<double> heap;
   double *W = weights;
-  if (w > 64) {
+  if (w * w > kStack) {
     heap.resize(static_cast<std::size_t>(w) * w);
     W = heap.data();
   }
@@ -66,6 +71,12 @@ void TensorBernstein::from_monomial(const double *mono, int d, double *out) {
         s += W[i * w + a] * out[a * w + j];
       out[i * w + j] = s;
     }
+}
+
+} // namespace
+
+void TensorBernstein::from_monomial(const double *mono, int d, double *out) {
+  dispatch_degree(d, [&](auto D) { from_monomial_fixed<D.value>(mono, d, out); });
 }
 
 TensorBernstein TensorBernstein::from_triangle(const BernsteinTriangle &p) {
