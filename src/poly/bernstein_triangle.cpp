@@ -1,6 +1,7 @@
 #include "poly/bernstein_triangle.hpp"
 
 #include "poly/binomial.hpp"
+#include "poly/degree_dispatch.hpp"
 #include "poly/lagrange_to_bernstein.hpp"
 #include "poly/lattice.hpp"
 
@@ -74,22 +75,16 @@ template <int N> void casteljau_fixed_down(double *w, int to, const std::array<d
 }
 
 void casteljau_down(double *w, int from, int to, const std::array<double, 3> &l) {
-  switch (from) { // the usual degrees, unrolled
-  case 1:
-    return casteljau_fixed_down<1>(w, to, l);
-  case 2:
-    return casteljau_fixed_down<2>(w, to, l);
-  case 3:
-    return casteljau_fixed_down<3>(w, to, l);
-  case 4:
-    return casteljau_fixed_down<4>(w, to, l);
-  case 5:
-    return casteljau_fixed_down<5>(w, to, l);
-  case 6:
-    return casteljau_fixed_down<6>(w, to, l);
-  default:
-    break;
-  }
+  // The usual degrees (1 to 6), unrolled.
+  const bool fixed = dispatch_degree(from, [&](auto D) {
+    if constexpr (D.value >= 1 && D.value <= 6) {
+      casteljau_fixed_down<D.value>(w, to, l);
+      return true;
+    }
+    return false;
+  });
+  if (fixed)
+    return;
   for (int n = from; n > to; --n)
     for (int b = 0; b <= n - 1; ++b)
       for (int a = 0; a <= n - 1 - b; ++a)
@@ -270,22 +265,16 @@ void BernsteinTriangle::restrict_to_segment(const Vec2 &p, const Vec2 &q, double
   // coefficient d-k.
   const auto lp = barycentric(p[0], p[1]);
   const auto lq = barycentric(q[0], q[1]);
-  switch (d_) { // the usual degrees, unrolled
-  case 1:
-    return restrict_fixed<1>(c_, lp, lq, out);
-  case 2:
-    return restrict_fixed<2>(c_, lp, lq, out);
-  case 3:
-    return restrict_fixed<3>(c_, lp, lq, out);
-  case 4:
-    return restrict_fixed<4>(c_, lp, lq, out);
-  case 5:
-    return restrict_fixed<5>(c_, lp, lq, out);
-  case 6:
-    return restrict_fixed<6>(c_, lp, lq, out);
-  default:
-    break;
-  }
+  // The usual degrees (1 to 6), unrolled.
+  const bool fixed = dispatch_degree(d_, [&](auto D) {
+    if constexpr (D.value >= 1 && D.value <= 6) {
+      restrict_fixed<D.value>(c_, lp, lq, out);
+      return true;
+    }
+    return false;
+  });
+  if (fixed)
+    return;
   constexpr int kStack = 91; // lattice_size(12)
   double level_buf[kStack], work_buf[kStack];
   std::vector<double> heap;

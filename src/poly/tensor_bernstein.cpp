@@ -155,28 +155,14 @@ template <int M> void split_quarters_fixed(const double *b, double *const q[4]) 
 
 void TensorBernstein::split_quarters(const double *b, int m, int n, double *const q[4]) {
   // Equal small degrees (the gradient of cells up to degree 9): unrolled versions.
-  if (m == n) {
-    switch (m) {
-    case 1:
-      return split_quarters_fixed<1>(b, q);
-    case 2:
-      return split_quarters_fixed<2>(b, q);
-    case 3:
-      return split_quarters_fixed<3>(b, q);
-    case 4:
-      return split_quarters_fixed<4>(b, q);
-    case 5:
-      return split_quarters_fixed<5>(b, q);
-    case 6:
-      return split_quarters_fixed<6>(b, q);
-    case 7:
-      return split_quarters_fixed<7>(b, q);
-    case 8:
-      return split_quarters_fixed<8>(b, q);
-    default:
-      break;
-    }
-  }
+  if (m == n && dispatch_degree(m, [&](auto D) {
+        if constexpr (D.value >= 1) {
+          split_quarters_fixed<D.value>(b, q);
+          return true;
+        }
+        return false;
+      }))
+    return;
   // Split along s into q[0] (s low) and q[1] (s high), then each along t in place into
   // (q[0], q[2]) and (q[1], q[3]).
   const int w = n + 1;
