@@ -79,13 +79,6 @@ double edge_parameter(int k, const Vec2 &p) {
 
 } // namespace
 
-PathField::PathField(BernsteinTriangle poly) : g(std::move(poly)) {
-  double scale = 0;
-  for (double c : g.coefficients())
-    scale = std::max(scale, std::abs(c));
-  margin = 1e-12 * std::max(scale, 1e-300);
-}
-
 void PathField::assign(const BernsteinTriangle &poly, bool negate) {
   g.assign(poly.degree(), poly.coefficients());
   double scale = 0;
@@ -95,13 +88,6 @@ void PathField::assign(const BernsteinTriangle &poly, bool negate) {
       c = -c;
   }
   margin = 1e-12 * std::max(scale, 1e-300);
-}
-
-PathField PathField::negated() const {
-  PathField f = *this;
-  for (double &c : f.g.coefficients())
-    c = -c;
-  return f;
 }
 
 bool certify_below(const BernsteinTriangle &g, const Vec2 &p, const Vec2 &q, double threshold,

@@ -24,11 +24,7 @@ struct PathCounters {
 // The cell's field prepared for path computations (g and its gradient), in one orientation:
 // for upper connections pass -g and negated node values.
 struct PathField {
-  PathField() = default;
-  explicit PathField(BernsteinTriangle g);
-  // The field -g (for ascending paths).
-  PathField negated() const;
-  // This field made g (or -g), reusing its storage.
+  // This field made g, or -g for ascending paths (reusing its storage).
   void assign(const BernsteinTriangle &poly, bool negate);
   BernsteinTriangle g; // its gradient, where descent steps need it, from g.jet()
   double margin = 0;   // certified strict inequalities use level - margin

@@ -39,10 +39,8 @@ uint8_t edge_nodes_of(std::span<const double> p, double value_scale, const EdgeN
   // A constant edge (derivative zero up to rounding of the values).
   if (dscale <= 1e-12 * pscale)
     return deg | kEdgeConstant;
-  // Strictly monotone beyond find_roots' tangency threshold (certainly_rootless on the
-  // derivative).
-  const double level = std::max(RootOptions{}.near_zero, 0.0) * dscale;
-  if (dlo > level || dhi < -level)
+  // Strictly monotone beyond find_roots' tangency threshold.
+  if (certainly_rootless(dlo, dhi, dscale))
     return deg;
   thread_local std::vector<double> dp, ddp;
   thread_local std::vector<Root> roots;

@@ -204,6 +204,10 @@ bool certainly_rootless(std::span<const double> c, const RootOptions &opt) {
     lo = std::min(lo, x);
     hi = std::max(hi, x);
   }
+  return certainly_rootless(lo, hi, scale, opt);
+}
+
+bool certainly_rootless(double lo, double hi, double scale, const RootOptions &opt) {
   const double level = std::max(opt.near_zero, 0.0) * scale;
   return scale > 0 && (lo > level || hi < -level);
 }

@@ -47,5 +47,8 @@ void find_roots(std::span<const double> c, std::vector<Root> &roots,
 // [0, 1]: all above near_zero * max|c|, or all below its negative. find_roots then returns no
 // root; callers use it to skip building a polynomial.
 bool certainly_rootless(std::span<const double> c, const RootOptions &options = {});
+// The same from the coefficients' smallest and largest value and largest magnitude (for callers
+// that have them from a pass of their own).
+bool certainly_rootless(double lo, double hi, double scale, const RootOptions &options = {});
 
 } // namespace hoct

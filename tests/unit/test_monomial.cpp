@@ -1,6 +1,7 @@
 // Monomial form: conversion from Bernstein form and Taylor expansions, against direct evaluation.
 #include "poly/monomial.hpp"
 
+#include "poly/binomial.hpp"
 #include "poly/lattice.hpp"
 
 #include <gtest/gtest.h>
@@ -58,6 +59,19 @@ TEST(Monomial, TaylorExpansionReproducesThePolynomialAroundItsCentre) {
       std::vector<double> e((d + 1) * (d + 1), 99.0);
       const double magnitude = taylor_expansion(a.data(), d, x, y, e.data());
       EXPECT_GE(magnitude, std::abs(e[0]));
+      // The magnitude bounds the rounding: at least the sum over all Taylor coefficients of the
+      // magnitudes of their terms m_ij C(i,a) C(j,b) x^(i-a) y^(j-b), summed term by term here,
+      // and at most that times the documented widening max(1, (4d + 4) / 60).
+      double terms = 0;
+      for (int ta = 0; ta <= d; ++ta)
+        for (int tb = 0; ta + tb <= d; ++tb)
+          for (int i = ta; i <= d; ++i)
+            for (int j = tb; i + j <= d; ++j)
+              terms += std::abs(a[i * (d + 1) + j] * binomial(i, ta) * binomial(j, tb) *
+                                std::pow(x, i - ta) * std::pow(y, j - tb));
+      EXPECT_GE(magnitude, terms * (1 - 1e-12)) << "degree " << d;
+      EXPECT_LE(magnitude, terms * std::max(1.0, (4.0 * d + 4) / 60) * (1 + 1e-12) + 1e-300)
+          << "degree " << d;
       for (int k = 0; k < 10; ++k) {
         const double s = 0.5 * U(rng), t = 0.5 * U(rng);
         double scale = 0;
