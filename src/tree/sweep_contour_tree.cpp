@@ -24,12 +24,26 @@ template <class I> struct RankTree {
   std::vector<int32_t> children;
 };
 
+// Scratch memory of a sweep, kept for the next sweep on the same thread: on large graphs, first
+// touching fresh pages costs about as much as the work done in them.
+template <class I> struct SweepScratch {
+  // (higher, lower) rank pairs by window during the CSR build; the union-find's three arrays
+  // after it.
+  UninitializedVector<I> pairs;
+  UninitializedVector<I> start, lower; // CSR of the lower neighbours
+  void reserve(int64_t n, std::size_t edges) {
+    pairs.reserve(std::max(2 * edges, 3 * static_cast<std::size_t>(n)));
+    start.reserve(static_cast<std::size_t>(n) + 1);
+    lower.reserve(edges);
+  }
+};
+
 // The sweep upwards over ranks 0..n-1 of the graph whose edges (all lists), mapped to ranks by
 // `to_rank`, connect each rank to its lower neighbours: when a component meets the current rank,
 // the component's highest node so far gets the current rank as its parent.
 template <class I, class ToRank>
 RankTree<I> sweep_up(int64_t n, std::initializer_list<std::span<const GraphEdge>> lists,
-                     const ToRank &to_rank) {
+                     const ToRank &to_rank, SweepScratch<I> &scratch) {
   // Lower neighbours of every rank (CSR). Ranks are scattered at random over the mesh, so the
   // edges are first distributed (as (higher, lower) rank pairs) into windows of 4096 ranks, then
   // each window's part of the CSR is built with its counters in cache.
@@ -44,28 +58,28 @@ RankTree<I> sweep_up(int64_t n, std::initializer_list<std::span<const GraphEdge>
     }
   for (int64_t w = 1; w <= windows; ++w)
     window_start[w] += window_start[w - 1];
-  struct Pair {
-    I hi, lo;
-  };
-  UninitializedVector<Pair> pairs;
-  pairs.resize(static_cast<std::size_t>(window_start[windows]));
+  const std::size_t m = static_cast<std::size_t>(window_start[windows]);
+  auto &pairs = scratch.pairs, &start = scratch.start, &lower = scratch.lower;
+  pairs.resize(std::max(2 * m, 3 * static_cast<std::size_t>(n)));
   {
     std::vector<int64_t> fill(window_start.begin(), window_start.end() - 1);
     for (std::span<const GraphEdge> edges : lists)
       for (const GraphEdge &e : edges) {
         const I ra = to_rank(e.a), rb = to_rank(e.b);
-        if (ra != rb)
-          pairs[fill[std::max(ra, rb) >> kWindowBits]++] = {std::max(ra, rb), std::min(ra, rb)};
+        if (ra != rb) {
+          I *p = &pairs[2 * fill[std::max(ra, rb) >> kWindowBits]++];
+          p[0] = std::max(ra, rb);
+          p[1] = std::min(ra, rb);
+        }
       }
   }
-  UninitializedVector<I> start, lower;
   start.resize(static_cast<std::size_t>(n + 1));
-  lower.resize(pairs.size());
+  lower.resize(m);
   for (int64_t w = 0; w < windows; ++w) {
     const int64_t r0 = w << kWindowBits, r1 = std::min(n, (w + 1) << kWindowBits);
     std::fill(start.begin() + r0, start.begin() + r1, I{0});
     for (int64_t k = window_start[w]; k < window_start[w + 1]; ++k)
-      ++start[pairs[k].hi];
+      ++start[pairs[2 * k]];
     // End offsets, then filled backwards so that they become the start offsets.
     I end = static_cast<I>(window_start[w]);
     for (int64_t r = r0; r < r1; ++r) {
@@ -73,20 +87,17 @@ RankTree<I> sweep_up(int64_t n, std::initializer_list<std::span<const GraphEdge>
       start[r] = end;
     }
     for (int64_t k = window_start[w]; k < window_start[w + 1]; ++k)
-      lower[--start[pairs[k].hi]] = pairs[k].lo;
+      lower[--start[pairs[2 * k]]] = pairs[2 * k + 1];
   }
-  start[n] = static_cast<I>(pairs.size());
-  pairs = {};
+  start[n] = static_cast<I>(m);
   RankTree<I> t;
   t.parent.resize(static_cast<std::size_t>(n));
   std::fill(t.parent.begin(), t.parent.end(), I{-1});
   t.children.assign(n, 0);
   // Union by size with path halving; top[root] is the highest rank of the root's component so
-  // far (the node whose parent the current rank becomes when that component joins it).
-  UninitializedVector<I> uf, size, top;
-  uf.resize(static_cast<std::size_t>(n));
-  size.resize(static_cast<std::size_t>(n));
-  top.resize(static_cast<std::size_t>(n));
+  // far (the node whose parent the current rank becomes when that component joins it). The
+  // three arrays reuse the pairs' memory.
+  I *uf = pairs.data(), *size = uf + n, *top = size + n;
   auto find = [&](I x) {
     while (uf[x] != x) {
       uf[x] = uf[uf[x]];
@@ -139,14 +150,24 @@ ContourTree sweep_ranked(std::span<const double> values, const SweepEdges &edges
   // The split sweep runs upwards over mirrored ranks n - 1 - r.
   const I last = static_cast<I>(n - 1);
   RankTree<I> join, split;
-  parallel_for(2, std::min(threads, 2), [&](int64_t begin, int64_t end, int) {
+  // One scratch per thread: the second sweep on a thread reuses the first one's memory.
+  const int sweep_threads = std::min(threads, 2);
+  std::vector<SweepScratch<I>> scratch(static_cast<std::size_t>(std::max(sweep_threads, 1)));
+  const std::size_t max_edges =
+      edges.common.size() + std::max(edges.join_only.size(), edges.split_only.size());
+  parallel_for(2, sweep_threads, [&](int64_t begin, int64_t end, int worker) {
+    SweepScratch<I> &s = scratch[static_cast<std::size_t>(worker)];
+    s.reserve(n, max_edges);
     for (int64_t k = begin; k < end; ++k)
       if (k == 0)
-        join = sweep_up<I>(n, {edges.common, edges.join_only}, [&](int64_t v) { return rank[v]; });
+        join = sweep_up<I>(
+            n, {edges.common, edges.join_only}, [&](int64_t v) { return rank[v]; }, s);
       else
-        split = sweep_up<I>(n, {edges.common, edges.split_only},
-                            [&](int64_t v) { return static_cast<I>(last - rank[v]); });
+        split = sweep_up<I>(
+            n, {edges.common, edges.split_only},
+            [&](int64_t v) { return static_cast<I>(last - rank[v]); }, s);
   });
+  scratch = {};
   rank = {};
   const auto t2 = clock_type::now();
   // Both trees in ascending ranks: join parents above, split parents below.
