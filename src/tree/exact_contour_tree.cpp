@@ -270,34 +270,24 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
   // The chains, and each fallback cell's 3 K^2 sub-edges plus the pieces its lattice nodes add.
   common_edges.reserve(chain_edges + fallback_room / static_cast<std::size_t>(lattice_size(K)) *
                                          static_cast<std::size_t>(3 * K * K + 3 * K));
-  UninitializedVector<NodeSource> source;
-  source.reserve(static_cast<std::size_t>(next) + fallback_room);
-  source.resize(static_cast<std::size_t>(next));
-  // Sources and values of vertices and edge nodes.
+  // Where each node lies: vertices and edge nodes are looked up from the mesh and the edge
+  // nodes when asked for (a tree has few nodes; an array for millions of graph nodes costs more
+  // to fill than the sweeps save), the interior and fallback nodes after them are stored.
+  const int64_t tail_base = edge_base + static_cast<int64_t>(en.nodes.size());
+  std::vector<NodeSource> tail_source;
+  tail_source.reserve(static_cast<std::size_t>(next - tail_base) + fallback_room);
+  tail_source.resize(static_cast<std::size_t>(next - tail_base));
+  std::vector<int64_t> fallback_marked; // vertices and edge nodes of fallback cells
+  // Values of vertices and edge nodes.
   // Threads for the gathering loops: only where each gets enough items to pay for its start.
   auto gather_threads = [&](int64_t items) { return threads_for(items, threads, 32768); };
   parallel_for(nv, gather_threads(nv), [&](int64_t begin, int64_t end, int) {
     for (int64_t v = begin; v < end; ++v) {
       values[v] = field.vertex_value(v);
-      source[v] = {topo.vertex_cell(v), point_on_edge(topo.vertex_corner(v), 0.0),
-                   NodeLocation::Vertex, false};
     }
   });
-  parallel_for(ne, gather_threads(ne), [&](int64_t begin, int64_t end, int) {
-    for (int64_t e = begin; e < end; ++e) {
-      if (en.offset[e] == en.offset[e + 1])
-        continue;
-      const int64_t c = topo.edge_cells_begin(e)[0];
-      int k = 0;
-      while (topo.cell_edge(c, k) != e)
-        ++k;
-      for (int64_t i = en.offset[e]; i < en.offset[e + 1]; ++i) {
-        const double s = topo.edge_reversed(c, k) ? 1 - en.nodes[i].t : en.nodes[i].t;
-        values[edge_base + i] = en.nodes[i].value;
-        source[edge_base + i] = {c, point_on_edge(k, s), NodeLocation::Edge, false};
-      }
-    }
-  });
+  for (std::size_t i = 0; i < en.nodes.size(); ++i)
+    values[edge_base + static_cast<int64_t>(i)] = en.nodes[i].value;
   // Interior nodes and the cells' connections in global ids, each chunk into its own slots.
   const int64_t gathered = next - edge_base + static_cast<int64_t>(cell_join + cell_split);
   parallel_for(chunks, gather_threads(gathered), [&](int64_t begin, int64_t end, int) {
@@ -306,7 +296,8 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
       const int64_t base = node_base[k];
       for (std::size_t i = 0; i < ch.nodes.size(); ++i) {
         values[base + i] = ch.nodes[i].value;
-        source[base + i] = {ch.nodes[i].cell, ch.nodes[i].uv, NodeLocation::Interior, false};
+        tail_source[base - tail_base + i] = {ch.nodes[i].cell, ch.nodes[i].uv,
+                                             NodeLocation::Interior, false};
       }
       auto resolve = [&](const GraphEdge &e) {
         return GraphEdge{e.a >= 0 ? e.a : base + (-1 - e.a), e.b >= 0 ? e.b : base + (-1 - e.b)};
@@ -332,7 +323,7 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
   std::map<std::pair<int64_t, int>, int64_t> lattice_node; // (edge, step from lo) -> id
   auto add_node = [&](double value, int64_t cell, const Vec2 &uv, NodeLocation loc) {
     values.push_back(value);
-    source.push_back({cell, uv, loc, true});
+    tail_source.push_back({cell, uv, loc, true});
     return next++;
   };
   std::array<int64_t, 8> reason_count{};
@@ -399,7 +390,10 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
       }
     }
     for (int64_t id : ids)
-      source[id].fallback = true;
+      if (id >= tail_base)
+        tail_source[id - tail_base].fallback = true;
+      else
+        fallback_marked.push_back(id);
     for (const auto &t : cr.triangles)
       for (int j = 0; j < 3; ++j) {
         common_edges.push_back({ids[t[j]], ids[t[(j + 1) % 3]]});
@@ -488,6 +482,25 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
       }
     }
   }
+  std::sort(fallback_marked.begin(), fallback_marked.end());
+  auto source_of = [&](int64_t id) -> NodeSource {
+    if (id >= tail_base)
+      return tail_source[id - tail_base];
+    const bool marked = std::binary_search(fallback_marked.begin(), fallback_marked.end(), id);
+    if (id < nv)
+      return {topo.vertex_cell(id), point_on_edge(topo.vertex_corner(id), 0.0),
+              NodeLocation::Vertex, marked};
+    // Edge node i of edge e, placed in the edge's first cell.
+    const int64_t i = id - edge_base;
+    const int64_t e =
+        std::upper_bound(en.offset.begin(), en.offset.begin() + ne + 1, i) - en.offset.begin() - 1;
+    const int64_t c = topo.edge_cells_begin(e)[0];
+    int k = 0;
+    while (topo.cell_edge(c, k) != e)
+      ++k;
+    const double s = topo.edge_reversed(c, k) ? 1 - en.nodes[i].t : en.nodes[i].t;
+    return {c, point_on_edge(k, s), NodeLocation::Edge, marked};
+  };
   const auto t4 = clock_type::now();
   report("graph assembly: fallback cells and edge chains", t3, t4);
 
@@ -515,10 +528,11 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
     TreeNode &n = r.nodes[i];
     n.type = types[i];
     n.value = ct.values[i];
-    n.cell = source[id].cell;
-    n.uv = source[id].uv;
-    n.location = source[id].location;
-    n.fallback = source[id].fallback;
+    const NodeSource where = source_of(id);
+    n.cell = where.cell;
+    n.uv = where.uv;
+    n.location = where.location;
+    n.fallback = where.fallback;
     n.graph_node = id;
     n.position = mesh.geometry.position(n.cell, n.uv[0], n.uv[1]);
     n.up = deg[i][0];
@@ -528,8 +542,10 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
   r.pairs = tree_pairs(ct);
   if (opt.arc_geometry) {
     std::vector<Vec3> positions(values.size());
-    for (std::size_t v = 0; v < values.size(); ++v)
-      positions[v] = mesh.geometry.position(source[v].cell, source[v].uv[0], source[v].uv[1]);
+    for (std::size_t v = 0; v < values.size(); ++v) {
+      const NodeSource where = source_of(static_cast<int64_t>(v));
+      positions[v] = mesh.geometry.position(where.cell, where.uv[0], where.uv[1]);
+    }
     auto graph = std::make_shared<GeometricGraph>(std::move(positions), values);
     for (const auto &e : geo_edges)
       graph->add_edge(e.a, e.b, e.inner);
