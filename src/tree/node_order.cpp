@@ -3,6 +3,7 @@
 #include "util/uninitialized_vector.hpp"
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cstring>
 
@@ -27,13 +28,17 @@ bool item_less(const Item &a, const Item &b) {
   return a.key < b.key || (a.key == b.key && a.id < b.id);
 }
 
-// Sorts a[0, n) by (key, id), with scratch b of the same size: small ranges by comparison, large
-// ones partitioned (stably) on the 12 highest bits in which their keys differ, each part then
-// sorted the same way. Floating-point keys share their leading (exponent) bits in clusters, so a
-// fixed digit would leave most keys in a few buckets; this adapts to every range's own prefix.
-void sort_items(Item *a, Item *b, std::size_t n) {
-  if (n <= 2048) {
+// Sorts a[0, n) by (key, id) into a (to_b false) or b (to_b true), using the other array as
+// scratch: small ranges by comparison, larger ones partitioned (stably, from one array into the
+// other) on the highest bits in which their keys differ, up to 11 bits and fewer for smaller
+// ranges (about 8 keys per part), each part then sorted the same way with the arrays' roles
+// swapped. Floating-point keys share their leading (exponent) bits in clusters, so a fixed digit
+// would leave most keys in a few buckets; this adapts to every range's own prefix.
+void sort_items(Item *a, Item *b, std::size_t n, bool to_b) {
+  if (n <= 48) {
     std::sort(a, a + n, item_less);
+    if (to_b)
+      std::copy(a, a + n, b);
     return;
   }
   uint64_t lo = a[0].key, hi = a[0].key;
@@ -41,24 +46,30 @@ void sort_items(Item *a, Item *b, std::size_t n) {
     lo = std::min(lo, a[i].key);
     hi = std::max(hi, a[i].key);
   }
-  if (lo == hi)
-    return; // equal keys, still in id order (every partition is stable, the input is by id)
-  constexpr int kBits = 12;
-  constexpr std::size_t kBuckets = std::size_t{1} << kBits;
-  const int shift = std::max(64 - std::countl_zero(hi ^ lo) - kBits, 0);
+  if (lo == hi) {
+    // Equal keys, still in id order (every partition is stable, the input is by id).
+    if (to_b)
+      std::copy(a, a + n, b);
+    return;
+  }
+  constexpr int kMaxBits = 11;
+  const int bits = std::clamp(static_cast<int>(std::bit_width(n)) - 3, 3, kMaxBits);
+  const std::size_t buckets = std::size_t{1} << bits;
+  const int shift = std::max(64 - std::countl_zero(hi ^ lo) - bits, 0);
   const uint64_t base = lo >> shift;
-  std::vector<std::size_t> start(kBuckets + 1, 0);
+  std::array<uint32_t, (std::size_t{1} << kMaxBits) + 1> start; // n < 2^32 (ascending_order)
+  std::fill(start.begin(), start.begin() + buckets + 1, 0u);
   for (std::size_t i = 0; i < n; ++i)
     ++start[(a[i].key >> shift) - base + 1];
-  for (std::size_t k = 1; k <= kBuckets; ++k)
+  for (std::size_t k = 1; k <= buckets; ++k)
     start[k] += start[k - 1];
-  std::vector<std::size_t> fill(start.begin(), start.end() - 1);
+  std::array<uint32_t, std::size_t{1} << kMaxBits> fill;
+  std::copy(start.begin(), start.begin() + buckets, fill.begin());
   for (std::size_t i = 0; i < n; ++i)
     b[fill[(a[i].key >> shift) - base]++] = a[i];
-  std::copy(b, b + n, a);
-  for (std::size_t k = 0; k < kBuckets; ++k)
-    if (start[k + 1] - start[k] > 1)
-      sort_items(a + start[k], b + start[k], start[k + 1] - start[k]);
+  for (std::size_t k = 0; k < buckets; ++k)
+    if (start[k + 1] > start[k])
+      sort_items(b + start[k], a + start[k], start[k + 1] - start[k], !to_b);
 }
 
 } // namespace
@@ -70,7 +81,10 @@ std::vector<int64_t> ascending_order(std::span<const double> values) {
   b.resize(n);
   for (std::size_t i = 0; i < n; ++i)
     a[i] = {order_key(values[i]), static_cast<int64_t>(i)};
-  sort_items(a.data(), b.data(), n);
+  if (n < (std::size_t{1} << 32))
+    sort_items(a.data(), b.data(), n, false);
+  else
+    std::sort(a.begin(), a.end(), item_less);
   std::vector<int64_t> order(n);
   for (std::size_t i = 0; i < n; ++i)
     order[i] = a[i].id;
