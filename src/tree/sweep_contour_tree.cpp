@@ -4,6 +4,7 @@
 #include "util/uninitialized_vector.hpp"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <initializer_list>
 #include <stdexcept>
@@ -27,14 +28,12 @@ template <class I> struct RankTree {
 // Scratch memory of a sweep, kept for the next sweep on the same thread: on large graphs, first
 // touching fresh pages costs about as much as the work done in them.
 template <class I> struct SweepScratch {
-  // (higher, lower) rank pairs by window during the CSR build; the union-find's three arrays
-  // after it.
-  UninitializedVector<I> pairs;
-  UninitializedVector<I> start, lower; // CSR of the lower neighbours
+  UninitializedVector<I> pairs; // (higher, lower) rank pairs, by window of higher ranks
+  UninitializedVector<I> sets;  // the union-find's parent, size and top arrays
+  UninitializedVector<I> lower; // one window's lower neighbours, by higher rank
   void reserve(int64_t n, std::size_t edges) {
-    pairs.reserve(std::max(2 * edges, 3 * static_cast<std::size_t>(n)));
-    start.reserve(static_cast<std::size_t>(n) + 1);
-    lower.reserve(edges);
+    pairs.reserve(2 * edges);
+    sets.reserve(3 * static_cast<std::size_t>(n));
   }
 };
 
@@ -44,9 +43,9 @@ template <class I> struct SweepScratch {
 template <class I, class ToRank>
 RankTree<I> sweep_up(int64_t n, std::initializer_list<std::span<const GraphEdge>> lists,
                      const ToRank &to_rank, SweepScratch<I> &scratch) {
-  // Lower neighbours of every rank (CSR). Ranks are scattered at random over the mesh, so the
-  // edges are first distributed (as (higher, lower) rank pairs) into windows of 4096 ranks, then
-  // each window's part of the CSR is built with its counters in cache.
+  // Ranks are scattered at random over the mesh, so the edges are first distributed (as
+  // (higher, lower) rank pairs) into windows of 4096 ranks; each window's pairs are then sorted
+  // by higher rank with their counters in cache, and its ranks swept.
   constexpr int kWindowBits = 12;
   const int64_t windows = (n >> kWindowBits) + 1;
   std::vector<int64_t> window_start(windows + 1, 0);
@@ -59,8 +58,8 @@ RankTree<I> sweep_up(int64_t n, std::initializer_list<std::span<const GraphEdge>
   for (int64_t w = 1; w <= windows; ++w)
     window_start[w] += window_start[w - 1];
   const std::size_t m = static_cast<std::size_t>(window_start[windows]);
-  auto &pairs = scratch.pairs, &start = scratch.start, &lower = scratch.lower;
-  pairs.resize(std::max(2 * m, 3 * static_cast<std::size_t>(n)));
+  auto &pairs = scratch.pairs, &lower = scratch.lower;
+  pairs.resize(2 * m);
   {
     std::vector<int64_t> fill(window_start.begin(), window_start.end() - 1);
     for (std::span<const GraphEdge> edges : lists)
@@ -73,31 +72,14 @@ RankTree<I> sweep_up(int64_t n, std::initializer_list<std::span<const GraphEdge>
         }
       }
   }
-  start.resize(static_cast<std::size_t>(n + 1));
-  lower.resize(m);
-  for (int64_t w = 0; w < windows; ++w) {
-    const int64_t r0 = w << kWindowBits, r1 = std::min(n, (w + 1) << kWindowBits);
-    std::fill(start.begin() + r0, start.begin() + r1, I{0});
-    for (int64_t k = window_start[w]; k < window_start[w + 1]; ++k)
-      ++start[pairs[2 * k]];
-    // End offsets, then filled backwards so that they become the start offsets.
-    I end = static_cast<I>(window_start[w]);
-    for (int64_t r = r0; r < r1; ++r) {
-      end += start[r];
-      start[r] = end;
-    }
-    for (int64_t k = window_start[w]; k < window_start[w + 1]; ++k)
-      lower[--start[pairs[2 * k]]] = pairs[2 * k + 1];
-  }
-  start[n] = static_cast<I>(m);
   RankTree<I> t;
   t.parent.resize(static_cast<std::size_t>(n));
   std::fill(t.parent.begin(), t.parent.end(), I{-1});
   t.children.assign(n, 0);
   // Union by size with path halving; top[root] is the highest rank of the root's component so
-  // far (the node whose parent the current rank becomes when that component joins it). The
-  // three arrays reuse the pairs' memory.
-  I *uf = pairs.data(), *size = uf + n, *top = size + n;
+  // far (the node whose parent the current rank becomes when that component joins it).
+  scratch.sets.resize(3 * static_cast<std::size_t>(n));
+  I *uf = scratch.sets.data(), *size = uf + n, *top = size + n;
   auto find = [&](I x) {
     while (uf[x] != x) {
       uf[x] = uf[uf[x]];
@@ -105,22 +87,39 @@ RankTree<I> sweep_up(int64_t n, std::initializer_list<std::span<const GraphEdge>
     }
     return x;
   };
-  for (I v = 0; v < static_cast<I>(n); ++v) {
-    uf[v] = v;
-    size[v] = 1;
-    top[v] = v;
-    I rv = v; // v's root
-    for (I k = start[v]; k < start[v + 1]; ++k) {
-      const I r = find(lower[k]);
-      if (r == rv)
-        continue;
-      t.parent[top[r]] = v;
-      ++t.children[v];
-      const I big = size[r] > size[rv] ? r : rv, small = big == r ? rv : r;
-      uf[small] = big;
-      size[big] += size[small];
-      rv = big;
-      top[rv] = v;
+  std::array<I, (std::size_t{1} << kWindowBits) + 1> bound;
+  for (int64_t w = 0; w < windows; ++w) {
+    const int64_t r0 = w << kWindowBits, r1 = std::min(n, (w + 1) << kWindowBits);
+    const int64_t k0 = window_start[w], k1 = window_start[w + 1];
+    std::fill(bound.begin(), bound.begin() + (r1 - r0) + 1, I{0});
+    for (int64_t k = k0; k < k1; ++k)
+      ++bound[pairs[2 * k] - r0 + 1];
+    for (int64_t j = 1; j <= r1 - r0; ++j)
+      bound[j] += bound[j - 1];
+    lower.resize(static_cast<std::size_t>(k1 - k0));
+    for (int64_t k = k0; k < k1; ++k)
+      lower[bound[pairs[2 * k] - r0]++] = pairs[2 * k + 1];
+    // bound[j] is now the end of rank r0 + j's lower neighbours, bound[j - 1] their start.
+    I begin = 0;
+    for (I v = static_cast<I>(r0); v < static_cast<I>(r1); ++v) {
+      uf[v] = v;
+      size[v] = 1;
+      top[v] = v;
+      I rv = v; // v's root
+      const I end = bound[v - r0];
+      for (I k = begin; k < end; ++k) {
+        const I r = find(lower[k]);
+        if (r == rv)
+          continue;
+        t.parent[top[r]] = v;
+        ++t.children[v];
+        const I big = size[r] > size[rv] ? r : rv, small = big == r ? rv : r;
+        uf[small] = big;
+        size[big] += size[small];
+        rv = big;
+        top[rv] = v;
+      }
+      begin = end;
     }
   }
   return t;
