@@ -25,8 +25,10 @@ template <class I> struct RankTree {
   std::vector<int32_t> children;
 };
 
-// Scratch memory of a sweep, kept for the next sweep on the same thread: on large graphs, first
-// touching fresh pages costs about as much as the work done in them.
+// Scratch memory of the sweeps on one thread, kept for its next sweep: first touching fresh
+// pages costs about as much as the work done in them. Kept between calls too, up to
+// kKeptScratchBytes (on graphs of thousands of nodes the allocator would otherwise return the
+// pages at the end of every call and fault them in again at the next).
 template <class I> struct SweepScratch {
   UninitializedVector<I> pairs; // (higher, lower) rank pairs, by window of higher ranks
   UninitializedVector<I> sets;  // the union-find's parent, size and top arrays
@@ -35,7 +37,15 @@ template <class I> struct SweepScratch {
     pairs.reserve(2 * edges);
     sets.reserve(3 * static_cast<std::size_t>(n));
   }
+  std::size_t bytes() const {
+    return (pairs.capacity() + sets.capacity() + lower.capacity()) * sizeof(I);
+  }
 };
+constexpr std::size_t kKeptScratchBytes = std::size_t{16} << 20;
+template <class I> SweepScratch<I> &thread_scratch() {
+  thread_local SweepScratch<I> scratch;
+  return scratch;
+}
 
 // The sweep upwards over ranks 0..n-1 of the graph whose edges (all lists), mapped to ranks by
 // `to_rank`, connect each rank to its lower neighbours: when a component meets the current rank,
@@ -149,13 +159,11 @@ ContourTree sweep_ranked(std::span<const double> values, const SweepEdges &edges
   // The split sweep runs upwards over mirrored ranks n - 1 - r.
   const I last = static_cast<I>(n - 1);
   RankTree<I> join, split;
-  // One scratch per thread: the second sweep on a thread reuses the first one's memory.
   const int sweep_threads = std::min(threads, 2);
-  std::vector<SweepScratch<I>> scratch(static_cast<std::size_t>(std::max(sweep_threads, 1)));
   const std::size_t max_edges =
       edges.common.size() + std::max(edges.join_only.size(), edges.split_only.size());
-  parallel_for(2, sweep_threads, [&](int64_t begin, int64_t end, int worker) {
-    SweepScratch<I> &s = scratch[static_cast<std::size_t>(worker)];
+  parallel_for(2, sweep_threads, [&](int64_t begin, int64_t end, int) {
+    SweepScratch<I> &s = thread_scratch<I>();
     s.reserve(n, max_edges);
     for (int64_t k = begin; k < end; ++k)
       if (k == 0)
@@ -165,8 +173,9 @@ ContourTree sweep_ranked(std::span<const double> values, const SweepEdges &edges
         split = sweep_up<I>(
             n, {edges.common, edges.split_only},
             [&](int64_t v) { return static_cast<I>(last - rank[v]); }, s);
+    if (s.bytes() > kKeptScratchBytes)
+      s = {};
   });
-  scratch = {};
   rank = {};
   const auto t2 = clock_type::now();
   // Both trees in ascending ranks: join parents above, split parents below.
