@@ -49,8 +49,9 @@ struct GeoEdge {
   std::vector<Vec3> inner;
 };
 
-// What the cells of one chunk contribute to the graph.
-struct CellChunk {
+// What the cells of one chunk contribute to the graph. Chunks start on their own cache line:
+// neighbouring chunks run on different threads, and their vectors and counters change per cell.
+struct alignas(64) CellChunk {
   struct Node {
     int64_t cell;
     Vec2 uv;
