@@ -34,6 +34,8 @@ template <class I> struct SweepScratch {
   UninitializedVector<I> sets;  // the union-find's parent, size and top arrays
   UninitializedVector<I> lower; // one window's lower neighbours, by higher rank
   void reserve(int64_t n, std::size_t edges) {
+    pairs.clear(); // nothing of the last sweep to keep (reserve would copy it)
+    sets.clear();
     pairs.reserve(2 * edges);
     sets.reserve(3 * static_cast<std::size_t>(n));
   }
