@@ -272,8 +272,9 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
   common_edges.reserve(chain_edges + fallback_room / static_cast<std::size_t>(lattice_size(K)) *
                                          static_cast<std::size_t>(3 * K * K + 3 * K));
   // Where each node lies: vertices and edge nodes are looked up from the mesh and the edge
-  // nodes when asked for (a tree has few nodes; an array for millions of graph nodes costs more
-  // to fill than the sweeps save), the interior and fallback nodes after them are stored.
+  // nodes when asked for (only tree nodes, and graph nodes with arc geometry, ask; an array for
+  // millions of graph nodes cost more to fill than its few lookups save), the interior and
+  // fallback nodes after them are stored.
   const int64_t tail_base = edge_base + static_cast<int64_t>(en.nodes.size());
   std::vector<NodeSource> tail_source;
   tail_source.reserve(static_cast<std::size_t>(next - tail_base) + fallback_room);
