@@ -133,13 +133,11 @@ BernsteinTriangle::Jet BernsteinTriangle::jet(double u, double v) const {
   return jet_of(c_, d_, u, v);
 }
 
-BernsteinTriangle::Jet BernsteinTriangle::jet_of(std::span<const double> c, int deg, double u,
-                                                 double v) {
-  Jet j{0, {0, 0}, {{{0, 0}, {0, 0}}}};
-  const auto l = barycentric(u, v);
-  WorkCopy work(c);
-  double *w = work.w;
-  casteljau_down(w, deg, 2, l); // to degree 2: its coefficients give the Hessian
+namespace {
+
+// The jet from the degree-2 de Casteljau level w at barycentric l (w overwritten).
+BernsteinTriangle::Jet jet_from_level(double *w, int deg, const std::array<double, 3> &l) {
+  BernsteinTriangle::Jet j{0, {0, 0}, {{{0, 0}, {0, 0}}}};
   const double d = deg;
   if (deg >= 2) {
     auto q = [&](int a, int b) { return w[lattice_index(2, a, b)]; };
@@ -160,6 +158,27 @@ BernsteinTriangle::Jet BernsteinTriangle::jet_of(std::span<const double> c, int 
     j.value = w[0];
   }
   return j;
+}
+
+} // namespace
+
+BernsteinTriangle::Jet BernsteinTriangle::jet_of(std::span<const double> c, int deg, double u,
+                                                 double v) {
+  const auto l = barycentric(u, v);
+  // The usual degrees (1 to 6): the copy and the steps to degree 2 unrolled, in registers.
+  return dispatch_degree(deg, [&](auto D) {
+    if constexpr (D.value >= 1 && D.value <= 6) {
+      double w[lattice_size(D.value)];
+      for (int i = 0; i < lattice_size(D.value); ++i)
+        w[i] = c[i];
+      casteljau_fixed_down<D.value>(w, 2, l);
+      return jet_from_level(w, deg, l);
+    } else {
+      WorkCopy work(c);
+      casteljau_down(work.w, deg, 2, l); // to degree 2: its coefficients give the Hessian
+      return jet_from_level(work.w, deg, l);
+    }
+  });
 }
 
 Vec2 BernsteinTriangle::gradient(double u, double v) const { return {du()(u, v), dv()(u, v)}; }
@@ -254,7 +273,8 @@ template <int D>
 void restrict_fixed(const std::vector<double> &c, const std::array<double, 3> &lp,
                     const std::array<double, 3> &lq, double *out) {
   double level[lattice_size(D)];
-  std::copy(c.begin(), c.end(), level);
+  for (int i = 0; i < lattice_size(D); ++i)
+    level[i] = c[i];
   restrict_fixed<D, 0>(level, lp, lq, out);
 }
 

@@ -1,6 +1,7 @@
 #include "poly/bernstein_univariate.hpp"
 
 #include "poly/binomial.hpp"
+#include "poly/degree_dispatch.hpp"
 #include "poly/lagrange_to_bernstein.hpp"
 
 #include <algorithm>
@@ -11,21 +12,25 @@ double bernstein_value(std::span<const double> c, double t) {
   if (c.empty())
     return 0.0;
   const int n = static_cast<int>(c.size()) - 1;
-  // Small fixed buffer for the usual degrees; heap only above.
-  double stack_buf[32];
-  std::vector<double> heap;
-  double *w = stack_buf;
-  if (n + 1 > 32) {
-    heap.assign(c.begin(), c.end());
-    w = heap.data();
-  } else {
-    std::copy(c.begin(), c.end(), w);
-  }
   const double s = 1.0 - t;
-  for (int r = 1; r <= n; ++r)
-    for (int i = 0; i <= n - r; ++i)
-      w[i] = s * w[i] + t * w[i + 1];
-  return w[0];
+  // de Casteljau in registers for the usual degrees (the same operations as the loop below).
+  return dispatch_degree(n, [&](auto D) {
+    if constexpr (D.value >= 0) {
+      double w[D.value + 1];
+      for (int i = 0; i <= D.value; ++i)
+        w[i] = c[i];
+      for (int r = 1; r <= D.value; ++r)
+        for (int i = 0; i <= D.value - r; ++i)
+          w[i] = s * w[i] + t * w[i + 1];
+      return w[0];
+    } else {
+      std::vector<double> w(c.begin(), c.end());
+      for (int r = 1; r <= n; ++r)
+        for (int i = 0; i <= n - r; ++i)
+          w[i] = s * w[i] + t * w[i + 1];
+      return w[0];
+    }
+  });
 }
 
 void bernstein_derivative(std::span<const double> c, double *out) {

@@ -1,5 +1,7 @@
 #include "poly/root_isolation.hpp"
 
+#include "poly/degree_dispatch.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -29,34 +31,59 @@ int end_sign(const double *c, int n, bool left) {
 }
 
 // p(t) and p'(t) in one de Casteljau pass: the last two intermediate values give the derivative.
+// In registers for the usual degrees (the same operations as the run-time loop).
 void value_and_slope(const double *c, int n, double t, double &value, double &slope) {
   if (n == 0) {
     value = c[0];
     slope = 0;
     return;
   }
-  double stack_buf[32];
-  std::vector<double> heap;
-  double *w = stack_buf;
-  if (n + 1 > 32) {
-    heap.assign(c, c + n + 1);
-    w = heap.data();
-  } else {
-    std::copy(c, c + n + 1, w);
-  }
   const double s = 1.0 - t;
-  for (int r = 1; r < n; ++r)
-    for (int i = 0; i <= n - r; ++i)
-      w[i] = s * w[i] + t * w[i + 1];
-  value = s * w[0] + t * w[1];
-  slope = n * (w[1] - w[0]);
+  dispatch_degree(n, [&](auto D) {
+    if constexpr (D.value >= 1) {
+      constexpr int m = D.value;
+      double w[m + 1];
+      for (int i = 0; i <= m; ++i)
+        w[i] = c[i];
+      for (int r = 1; r < m; ++r)
+        for (int i = 0; i <= m - r; ++i)
+          w[i] = s * w[i] + t * w[i + 1];
+      value = s * w[0] + t * w[1];
+      slope = m * (w[1] - w[0]);
+    } else {
+      std::vector<double> w(c, c + n + 1);
+      for (int r = 1; r < n; ++r)
+        for (int i = 0; i <= n - r; ++i)
+          w[i] = s * w[i] + t * w[i + 1];
+      value = s * w[0] + t * w[1];
+      slope = n * (w[1] - w[0]);
+    }
+  });
 }
 
 // The single root of p in (lo, hi), with p of sign `slo` just right of lo: safeguarded Newton
 // (bisection whenever a step leaves the bracket).
 double refine_simple(const double *c, int n, double lo, double hi, int slo) {
   double x = 0.5 * (lo + hi);
-  if (lo == 0.0 && hi == 1.0) {
+  if (n <= 2) {
+    // Linear and quadratic (the edge derivatives of quadratic and cubic fields): the root in
+    // closed form (the quadratic by the cancellation-free formula), which Newton then confirms
+    // in a step or two. A start outside the bracket (rounding at its ends) is not taken.
+    const double a = n == 2 ? c[0] - 2 * c[1] + c[2] : 0.0;
+    const double b = n == 2 ? 2 * (c[1] - c[0]) : c[1] - c[0];
+    double r[2] = {-c[0] / b, -c[0] / b};
+    if (a != 0) {
+      const double disc = b * b - 4 * a * c[0];
+      const double q = -0.5 * (b + std::copysign(std::sqrt(std::max(disc, 0.0)), b));
+      r[0] = q / a;
+      r[1] = c[0] / q;
+    }
+    for (double t : r)
+      if (t > lo && t < hi) {
+        x = t;
+        break;
+      }
+  } else if (lo == 0.0 && hi == 1.0) {
     // Start where the control polygon crosses zero (its first sign change): close to the root,
     // so Newton needs few steps.
     for (int i = 0; i < n; ++i)
@@ -236,6 +263,10 @@ void find_roots(std::span<const double> c, std::vector<Root> &roots, const RootO
   const int n = static_cast<int>(c.size()) - 1;
   sign_change_roots(c.data(), n, opt, identically_zero, roots);
   if (opt.near_zero <= 0 || n < 2 || (identically_zero && *identically_zero))
+    return;
+  // One sign change over all of [0, 1]: by Descartes exactly one root there, simple, and every
+  // tangency the check below could find lies in its interval (it would add nothing).
+  if (roots.size() == 1 && roots[0].lo == 0.0 && roots[0].hi == 1.0 && roots[0].simple)
     return;
   double scale = 0, lo = c[0], hi = c[0];
   for (double x : c) {

@@ -59,6 +59,39 @@ TEST(RootIsolation, FindsEveryRootOfRandomPolynomials) {
   }
 }
 
+TEST(RootIsolation, LinearAndQuadraticRootsToFullPrecision) {
+  // Degrees 1 and 2 start Newton at the closed-form root: every root in [0, 1] found once, in
+  // its interval, to the precision its conditioning allows (one root or two, in the whole
+  // interval or in subdivided ones, including roots just inside the ends).
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> U(-0.3, 1.3);
+  int checked = 0;
+  for (int trial = 0; trial < 4000; ++trial) {
+    const int deg = 1 + trial % 2;
+    std::vector<double> r;
+    for (int i = 0; i < deg; ++i)
+      r.push_back(trial % 7 == 0 ? (i == 0 ? 1e-9 : 1 - 1e-9) : U(rng));
+    std::sort(r.begin(), r.end());
+    if (deg == 2 && r[1] - r[0] < 1e-3)
+      continue;
+    const double scale = trial % 3 == 0 ? -1e-6 : 2.5;
+    const auto roots = find_roots(from_roots(r, scale));
+    std::vector<double> inside;
+    for (double x : r)
+      if (x >= 0 && x <= 1)
+        inside.push_back(x);
+    ASSERT_EQ(roots.size(), inside.size()) << "trial " << trial;
+    for (std::size_t i = 0; i < inside.size(); ++i) {
+      EXPECT_NEAR(roots[i].t, inside[i], 1e-12) << "trial " << trial;
+      EXPECT_TRUE(roots[i].simple) << "trial " << trial;
+      EXPECT_LE(roots[i].lo, roots[i].t);
+      EXPECT_GE(roots[i].hi, roots[i].t);
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 3000);
+}
+
 TEST(RootIsolation, EndsMidpointsMultipleAndZero) {
   auto r = find_roots(from_roots({0.0, 0.5, 1.0}));
   ASSERT_EQ(r.size(), 3u);
