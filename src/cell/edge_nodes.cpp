@@ -79,24 +79,34 @@ EdgeNodes find_edge_nodes(const Topology &topo, const Field &field, const EdgeNo
   out.degeneracy.resize(ne);
   const double value_scale = std::max({std::abs(field.min_value()), std::abs(field.max_value()),
                                        field.max_value() - field.min_value(), 1e-300});
-  // Fixed blocks of edges, each collecting its own nodes (counts first in offset[e + 1]); then
-  // every block's offsets and nodes placed by prefix sums over the blocks, in parallel: the
-  // result does not depend on the thread count.
+  // Fixed blocks of edges; each worker appends its blocks' nodes to a buffer of its own (counts
+  // first in offset[e + 1], and where each block's nodes start); then every block's offsets and
+  // nodes are placed by prefix sums over the blocks, in parallel: the result does not depend on
+  // the thread count, and there are a few growing buffers instead of one per block.
   const int64_t blocks = std::max<int64_t>(1, std::min<int64_t>(ne, 256));
-  std::vector<std::vector<EdgeNode>> block_nodes(blocks);
+  const int threads = std::max(1, opt.threads);
+  std::vector<std::vector<EdgeNode>> worker_nodes(static_cast<std::size_t>(threads));
+  struct BlockSource {
+    int worker;
+    std::size_t begin, count;
+  };
+  std::vector<BlockSource> source(static_cast<std::size_t>(blocks));
   out.offset[0] = 0;
-  parallel_for(blocks, opt.threads, [&](int64_t b0, int64_t b1, int) {
-    for (int64_t b = b0; b < b1; ++b)
+  parallel_for(blocks, threads, [&](int64_t b0, int64_t b1, int worker) {
+    std::vector<EdgeNode> &nodes = worker_nodes[static_cast<std::size_t>(worker)];
+    for (int64_t b = b0; b < b1; ++b) {
+      const std::size_t begin = nodes.size();
       for (int64_t e = ne * b / blocks; e < ne * (b + 1) / blocks; ++e) {
-        const std::size_t before = block_nodes[b].size();
-        out.degeneracy[e] =
-            edge_nodes_of(field.edge_coefficients(e), value_scale, opt, block_nodes[b]);
-        out.offset[e + 1] = static_cast<int64_t>(block_nodes[b].size() - before);
+        const std::size_t before = nodes.size();
+        out.degeneracy[e] = edge_nodes_of(field.edge_coefficients(e), value_scale, opt, nodes);
+        out.offset[e + 1] = static_cast<int64_t>(nodes.size() - before);
       }
+      source[b] = {worker, begin, nodes.size() - begin};
+    }
   });
   std::vector<int64_t> block_base(blocks + 1, 0);
   for (int64_t b = 0; b < blocks; ++b)
-    block_base[b + 1] = block_base[b] + static_cast<int64_t>(block_nodes[b].size());
+    block_base[b + 1] = block_base[b] + static_cast<int64_t>(source[b].count);
   out.nodes.resize(static_cast<std::size_t>(block_base[blocks]));
   parallel_for(blocks, threads_for(ne, opt.threads, 65536), [&](int64_t b0, int64_t b1, int) {
     for (int64_t b = b0; b < b1; ++b) {
@@ -105,7 +115,10 @@ EdgeNodes find_edge_nodes(const Topology &topo, const Field &field, const EdgeNo
         sum += out.offset[e + 1];
         out.offset[e + 1] = sum;
       }
-      std::copy(block_nodes[b].begin(), block_nodes[b].end(),
+      const BlockSource &src = source[b];
+      const auto from = worker_nodes[static_cast<std::size_t>(src.worker)].begin() +
+                        static_cast<std::ptrdiff_t>(src.begin);
+      std::copy(from, from + static_cast<std::ptrdiff_t>(src.count),
                 out.nodes.begin() + static_cast<std::ptrdiff_t>(block_base[b]));
     }
   });

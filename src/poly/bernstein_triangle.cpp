@@ -135,9 +135,13 @@ BernsteinTriangle::Jet BernsteinTriangle::jet(double u, double v) const {
 
 namespace {
 
-// The jet from the degree-2 de Casteljau level w at barycentric l (w overwritten).
-BernsteinTriangle::Jet jet_from_level(double *w, int deg, const std::array<double, 3> &l) {
+// The jet from the degree-2 de Casteljau level w at barycentric l (w overwritten); Deg is the
+// degree when known at compile time, else -1.
+template <int Deg>
+inline BernsteinTriangle::Jet jet_from_level(double *w, int run_time_degree,
+                                             const std::array<double, 3> &l) {
   BernsteinTriangle::Jet j{0, {0, 0}, {{{0, 0}, {0, 0}}}};
+  const int deg = Deg >= 0 ? Deg : run_time_degree;
   const double d = deg;
   if (deg >= 2) {
     auto q = [&](int a, int b) { return w[lattice_index(2, a, b)]; };
@@ -172,11 +176,11 @@ BernsteinTriangle::Jet BernsteinTriangle::jet_of(std::span<const double> c, int 
       for (int i = 0; i < lattice_size(D.value); ++i)
         w[i] = c[i];
       casteljau_fixed_down<D.value>(w, 2, l);
-      return jet_from_level(w, deg, l);
+      return jet_from_level<D.value>(w, deg, l);
     } else {
       WorkCopy work(c);
       casteljau_down(work.w, deg, 2, l); // to degree 2: its coefficients give the Hessian
-      return jet_from_level(work.w, deg, l);
+      return jet_from_level<-1>(work.w, deg, l);
     }
   });
 }
