@@ -6,8 +6,8 @@
 
 namespace hoct {
 
-VtkCellResult add_vtk_cell(MeshInput &m, int64_t type, const int64_t *ids, int64_t n,
-                           int64_t num_points, int64_t base, std::string *problem) {
+VtkCellResult vtk_cell_nodes(int64_t type, const int64_t *ids, int64_t n, int64_t num_points,
+                             int64_t base, int64_t *out, int *degree_out, std::string *problem) {
   auto invalid = [&](std::string what) {
     *problem = std::move(what);
     return VtkCellResult::Invalid;
@@ -24,20 +24,36 @@ VtkCellResult add_vtk_cell(MeshInput &m, int64_t type, const int64_t *ids, int64
                    (type == 69 && n == 7 ? " (the 7-node 'bubble' triangle is not a complete "
                                            "polynomial space and is not supported)"
                                          : ", not a complete triangle"));
-  if (degree > 20)
-    return invalid(" has degree " + std::to_string(degree) + " (at most 20 supported)");
-  const auto &perm = node_order_to_lattice(NodeOrdering::Vtk, degree);
-  thread_local std::vector<int64_t> nodes;
-  nodes.assign(static_cast<std::size_t>(n), -1);
+  if (degree > kMaxVtkCellDegree)
+    return invalid(" has degree " + std::to_string(degree) + " (at most " +
+                   std::to_string(kMaxVtkCellDegree) + " supported)");
+  // The permutation of the previous cell's degree, kept (meshes have one degree or few).
+  thread_local int cached_degree = 0;
+  thread_local const std::vector<int> *cached_perm = nullptr;
+  if (degree != cached_degree) {
+    cached_perm = &node_order_to_lattice(NodeOrdering::Vtk, degree);
+    cached_degree = degree;
+  }
+  const int *perm = cached_perm->data();
   for (int64_t i = 0; i < n; ++i) {
     const int64_t id = ids[i];
     if (id < 0 || id >= num_points)
       return invalid(" refers to point " + std::to_string(id) + ", but the piece has " +
                      std::to_string(num_points) + " points");
-    nodes[perm[i]] = base + id;
+    out[perm[i]] = base + id;
   }
-  m.add_cell(degree, nodes.data());
+  *degree_out = degree;
   return VtkCellResult::Added;
+}
+
+VtkCellResult add_vtk_cell(MeshInput &m, int64_t type, const int64_t *ids, int64_t n,
+                           int64_t num_points, int64_t base, std::string *problem) {
+  int64_t nodes[kMaxVtkCellNodes];
+  int degree = 0;
+  const VtkCellResult r = vtk_cell_nodes(type, ids, n, num_points, base, nodes, &degree, problem);
+  if (r == VtkCellResult::Added)
+    m.add_cell(degree, nodes);
+  return r;
 }
 
 } // namespace hoct

@@ -12,6 +12,10 @@ namespace hoct {
 
 enum class VtkCellResult { Added, Skipped, Invalid };
 
+// The largest degree read, and its node count.
+constexpr int kMaxVtkCellDegree = 20;
+constexpr int kMaxVtkCellNodes = (kMaxVtkCellDegree + 1) * (kMaxVtkCellDegree + 2) / 2;
+
 // Appends the VTK cell of type `type` whose n point ids (VTK node order, relative to `base`) are
 // `ids` to m, its nodes converted to canonical lattice order. VTK_TRIANGLE (5),
 // VTK_QUADRATIC_TRIANGLE (22) and VTK_LAGRANGE_TRIANGLE (69) of degree up to 20 are Added;
@@ -20,5 +24,11 @@ enum class VtkCellResult { Added, Skipped, Invalid };
 // 9, which is not a triangle (...)"). Point ids must lie in [0, num_points).
 VtkCellResult add_vtk_cell(MeshInput &m, int64_t type, const int64_t *ids, int64_t n,
                            int64_t num_points, int64_t base, std::string *problem);
+
+// The same without a MeshInput: an Added cell's nodes in lattice order into out[0 .. n) (room
+// for kMaxVtkCellNodes; out must not overlap ids) and its degree into *degree; out is not
+// meaningful for a Skipped or Invalid cell.
+VtkCellResult vtk_cell_nodes(int64_t type, const int64_t *ids, int64_t n, int64_t num_points,
+                             int64_t base, int64_t *out, int *degree, std::string *problem);
 
 } // namespace hoct

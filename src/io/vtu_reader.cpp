@@ -2,17 +2,17 @@
 
 #include "error.hpp"
 #include "io/base64.hpp"
+#include "io/file_bytes.hpp"
 #include "io/vtk_cells.hpp"
 
 #include <pugixml.hpp>
 #include <zlib.h>
 
 #include <algorithm>
+#include <bit>
 #include <charconv>
 #include <cmath>
 #include <cstring>
-#include <filesystem>
-#include <fstream>
 #include <limits>
 #include <sstream>
 
@@ -35,13 +35,21 @@ constexpr TypeInfo kTypes[] = {
     {"Int32", Scalar::I32, 4},   {"UInt32", Scalar::U32, 4},  {"Int64", Scalar::I64, 8},
     {"UInt64", Scalar::U64, 8},  {"Float", Scalar::F32, 4},   {"Double", Scalar::F64, 8}};
 
+// A binary array's bytes: in the file's buffer (raw appended data, read in place) or decoded
+// into a buffer of its own (base64, zlib).
+struct Payload {
+  std::vector<uint8_t> owned;
+  const uint8_t *data = nullptr;
+  std::size_t size = 0;
+};
+
 class VtuFile {
 public:
   VtuFile(std::string path, std::string scalar, const ReadLimits &limits)
       : path_(std::move(path)), scalar_(std::move(scalar)), limits_(limits) {}
   // Reads the file at path_ into bytes_.
   void read_file();
-  void set_bytes(std::string bytes) { bytes_ = std::move(bytes); }
+  void set_bytes(std::string bytes) { bytes_ = FileBytes(std::move(bytes)); }
   MeshInput read();
 
 private:
@@ -49,16 +57,21 @@ private:
   void load();
   const TypeInfo &type_of(const pugi::xml_node &a) const;
   std::string describe(const pugi::xml_node &a) const;
-  std::vector<uint8_t> binary_payload(const pugi::xml_node &a) const;
-  std::vector<uint8_t> decode_blocks(const uint8_t *p, std::size_t avail, const pugi::xml_node &a,
-                                     std::size_t *consumed) const;
+  Payload binary_payload(const pugi::xml_node &a) const;
+  Payload decode_blocks(const uint8_t *p, std::size_t avail, const pugi::xml_node &a) const;
+  Payload decode_owned(std::vector<uint8_t> buffer, const pugi::xml_node &a) const;
+  template <class S, class T>
+  void convert_binary(const Payload &raw, const pugi::xml_node &a, std::vector<T> &out) const;
+  // Copies a binary array stored as `type` in the machine's byte order straight into dst (room
+  // for `expected` values of it); false, with nothing read, for any other array.
+  bool read_native(const pugi::xml_node &a, Scalar type, void *dst, std::size_t expected) const;
   std::vector<double> read_doubles(const pugi::xml_node &a, std::size_t expected) const;
   std::vector<int64_t> read_ints(const pugi::xml_node &a, std::size_t expected) const;
   template <class T> std::vector<T> read_array(const pugi::xml_node &a, std::size_t expected) const;
 
   std::string path_, scalar_;
   ReadLimits limits_;
-  std::string bytes_;         // the file
+  FileBytes bytes_;           // the file
   std::string xml_;           // the file without the appended payload
   std::string_view appended_; // appended payload (after '_')
   bool appended_base64_ = false;
@@ -68,48 +81,40 @@ private:
 };
 
 void VtuFile::read_file() {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path_, ec))
-    fail("is a directory, not a .vtu file");
-  std::ifstream in(path_, std::ios::binary);
-  if (!in)
-    fail("cannot open (" + std::string(std::strerror(errno)) + ")");
-  // One read into one buffer (a 2 GB file is not copied through a stream and a string).
-  in.seekg(0, std::ios::end);
-  const std::streamoff size = in.tellg();
-  in.seekg(0, std::ios::beg);
-  if (size < 0 || !in)
-    fail("cannot read (" + std::string(std::strerror(errno)) + ")");
-  bytes_.resize(static_cast<std::size_t>(size));
-  in.read(bytes_.data(), size);
-  if (in.gcount() != size)
-    fail("cannot read: got " + std::to_string(in.gcount()) + " of " + std::to_string(size) +
-         " bytes");
+  std::string error;
+  if (!bytes_.read(path_, error))
+    fail(error == "is a directory" ? std::string("is a directory, not a .vtu file") : error);
 }
 
 void VtuFile::load() {
   if (bytes_.empty())
     fail("the file is empty");
   // Cut the appended payload out before XML parsing: raw bytes may contain anything.
-  const std::size_t tag = bytes_.find("<AppendedData");
-  std::string_view xml = bytes_; // the whole file, unless the payload is cut out below
+  const std::string_view bytes = bytes_.view();
+  const std::size_t tag = bytes.find("<AppendedData");
+  // Parsed in place (pugixml writes into the text it parses): the whole file, unless the
+  // payload is cut out below.
+  char *xml = bytes_.data();
+  std::size_t xml_size = bytes_.size();
   if (tag != std::string::npos) {
-    const std::size_t close = bytes_.find('>', tag);
-    const std::size_t underscore = close == std::string::npos ? close : bytes_.find('_', close);
-    const std::size_t end = bytes_.rfind("</AppendedData>");
+    const std::size_t close = bytes.find('>', tag);
+    const std::size_t underscore = close == std::string::npos ? close : bytes.find('_', close);
+    const std::size_t end = bytes.rfind("</AppendedData>");
     if (close == std::string::npos || underscore == std::string::npos || end == std::string::npos ||
         end < underscore)
       fail("truncated or malformed <AppendedData> section (missing '_' marker or "
            "</AppendedData>)");
-    const std::string head = bytes_.substr(tag, close - tag);
+    const std::string_view head = bytes.substr(tag, close - tag);
     appended_base64_ = head.find("\"base64\"") != std::string::npos;
     if (!appended_base64_ && head.find("\"raw\"") == std::string::npos)
       fail("<AppendedData> has an unknown encoding (expected raw or base64)");
-    appended_ = std::string_view(bytes_).substr(underscore + 1, end - underscore - 1);
-    xml_ = bytes_.substr(0, close + 1) + bytes_.substr(end);
-    xml = xml_;
+    appended_ = bytes.substr(underscore + 1, end - underscore - 1);
+    xml_.reserve(close + 1 + (bytes.size() - end));
+    xml_.append(bytes.substr(0, close + 1)).append(bytes.substr(end));
+    xml = xml_.data();
+    xml_size = xml_.size();
   }
-  const pugi::xml_parse_result r = doc_.load_buffer(xml.data(), xml.size());
+  const pugi::xml_parse_result r = doc_.load_buffer_inplace(xml, xml_size);
   if (!r)
     fail(std::string("not valid XML: ") + r.description() + " at byte " + std::to_string(r.offset));
   const pugi::xml_node root = doc_.child("VTKFile");
@@ -158,8 +163,7 @@ uint64_t read_uint(const uint8_t *p, int size, bool big) {
 }
 
 // Decodes a (possibly compressed) binary array starting at p: the header, then the data.
-std::vector<uint8_t> VtuFile::decode_blocks(const uint8_t *p, std::size_t avail,
-                                            const pugi::xml_node &a, std::size_t *consumed) const {
+Payload VtuFile::decode_blocks(const uint8_t *p, std::size_t avail, const pugi::xml_node &a) const {
   const int hs = header_size_;
   auto need = [&](std::size_t n, const char *what) {
     if (n > avail)
@@ -172,9 +176,7 @@ std::vector<uint8_t> VtuFile::decode_blocks(const uint8_t *p, std::size_t avail,
     if (n > avail - hs) // not need(hs + n): a hostile n makes the sum wrap around
       fail(describe(a) + ": truncated binary data (the header claims " + std::to_string(n) +
            " bytes, " + std::to_string(avail - hs) + " available)");
-    if (consumed)
-      *consumed = hs + n;
-    return std::vector<uint8_t>(p + hs, p + hs + n);
+    return Payload{{}, p + hs, static_cast<std::size_t>(n)}; // read in place
   }
   need(3 * hs, "the compression header");
   const uint64_t nb = read_uint(p, hs, big_endian_), bs = read_uint(p + hs, hs, big_endian_),
@@ -206,25 +208,38 @@ std::vector<uint8_t> VtuFile::decode_blocks(const uint8_t *p, std::size_t avail,
            " bytes the header claims");
     out_size += want;
   }
-  std::vector<uint8_t> out;
-  out.reserve(out_size);
+  Payload r;
+  std::vector<uint8_t> &out = r.owned;
+  out.resize(out_size);
+  std::size_t at = 0;
   for (uint64_t b = 0; b < nb; ++b) {
     const uint64_t want = (b + 1 == nb && last) ? last : bs;
-    const std::size_t at = out.size();
-    out.resize(at + want);
     uLongf got = static_cast<uLongf>(want);
     const int rc = uncompress(out.data() + at, &got, p + pos, static_cast<uLong>(csize[b]));
     if (rc != Z_OK || got != want)
       fail(describe(a) + ": zlib error in block " + std::to_string(b) + " (" +
            (rc == Z_OK ? "wrong size" : zError(rc)) + ")");
     pos += csize[b];
+    at += want;
   }
-  if (consumed)
-    *consumed = pos;
-  return out;
+  r.data = out.data();
+  r.size = out.size();
+  return r;
 }
 
-std::vector<uint8_t> VtuFile::binary_payload(const pugi::xml_node &a) const {
+// decode_blocks on a buffer of our own (decoded base64), which the result then keeps when it
+// points into it.
+Payload VtuFile::decode_owned(std::vector<uint8_t> buffer, const pugi::xml_node &a) const {
+  Payload r = decode_blocks(buffer.data(), buffer.size(), a);
+  if (r.owned.empty()) {
+    const std::size_t at = r.size == 0 ? 0 : static_cast<std::size_t>(r.data - buffer.data());
+    r.owned = std::move(buffer);
+    r.data = r.owned.data() + at;
+  }
+  return r;
+}
+
+Payload VtuFile::binary_payload(const pugi::xml_node &a) const {
   const std::string format = a.attribute("format").as_string();
   if (format == "binary") {
     std::vector<uint8_t> raw;
@@ -233,7 +248,7 @@ std::vector<uint8_t> VtuFile::binary_payload(const pugi::xml_node &a) const {
     } catch (const std::invalid_argument &e) {
       fail(describe(a) + ": bad base64 data (" + e.what() + ")");
     }
-    return decode_blocks(raw.data(), raw.size(), a, nullptr);
+    return decode_owned(std::move(raw), a);
   }
   // appended
   if (appended_.data() == nullptr)
@@ -247,7 +262,7 @@ std::vector<uint8_t> VtuFile::binary_payload(const pugi::xml_node &a) const {
          std::to_string(appended_.size()) + " bytes)");
   const std::string_view rest = appended_.substr(static_cast<std::size_t>(offset));
   if (!appended_base64_)
-    return decode_blocks(reinterpret_cast<const uint8_t *>(rest.data()), rest.size(), a, nullptr);
+    return decode_blocks(reinterpret_cast<const uint8_t *>(rest.data()), rest.size(), a);
   // Appended base64: decode just this array's streams. The header is its own stream (VTK) or
   // shares one with the data; the padding of the first group tells which.
   try {
@@ -268,7 +283,7 @@ std::vector<uint8_t> VtuFile::binary_payload(const pugi::xml_node &a) const {
       const bool separate = rest.substr(0, hchars).find('=') != std::string_view::npos;
       const std::size_t chars = separate ? hchars + base64_length(n) : base64_length(hs + n);
       std::vector<uint8_t> all = decode(chars);
-      return decode_blocks(all.data(), all.size(), a, nullptr);
+      return decode_owned(std::move(all), a);
     }
     const std::vector<uint8_t> h3 = decode(base64_length(3 * hs));
     if (h3.size() < 3 * static_cast<std::size_t>(hs))
@@ -287,10 +302,65 @@ std::vector<uint8_t> VtuFile::binary_payload(const pugi::xml_node &a) const {
     if (total > rest.size())
       fail(describe(a) + ": compressed sizes exceed the appended data");
     std::vector<uint8_t> all = decode(hchars + base64_length(total));
-    return decode_blocks(all.data(), all.size(), a, nullptr);
+    return decode_owned(std::move(all), a);
   } catch (const std::invalid_argument &e) {
     fail(describe(a) + ": bad base64 data (" + e.what() + ")");
   }
+}
+
+// The values of a binary array stored as S (in the file's byte order), as T: one copy when S is T
+// in the machine's order, else value by value. Floating-point values read as integers must be
+// integral, and unsigned 64-bit ones must fit a signed one.
+template <class S, class T>
+void VtuFile::convert_binary(const Payload &raw, const pugi::xml_node &a,
+                             std::vector<T> &out) const {
+  const std::size_t n = raw.size / sizeof(S);
+  out.resize(n);
+  const bool swap = big_endian_ != (std::endian::native == std::endian::big);
+  if constexpr (std::is_same_v<S, T>) {
+    if (!swap) {
+      if (n > 0)
+        std::memcpy(out.data(), raw.data, n * sizeof(S));
+      return;
+    }
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    uint8_t b[sizeof(S)];
+    std::memcpy(b, raw.data + i * sizeof(S), sizeof(S));
+    if (swap)
+      std::reverse(b, b + sizeof(S));
+    S v;
+    std::memcpy(&v, b, sizeof(S));
+    if constexpr (std::is_same_v<S, uint64_t>) {
+      if (v > static_cast<uint64_t>(std::numeric_limits<long long>::max()))
+        fail(describe(a) + ": value " + std::to_string(i) + " is too large");
+    }
+    if constexpr (std::is_floating_point_v<S> && !std::is_floating_point_v<T>) {
+      const double d = v;
+      if (!(d == std::floor(d)) || std::abs(d) > 9e15)
+        fail(describe(a) + ": value " + std::to_string(i) + " is not an integer");
+    }
+    out[i] = static_cast<T>(v);
+  }
+}
+
+bool VtuFile::read_native(const pugi::xml_node &a, Scalar type, void *dst,
+                          std::size_t expected) const {
+  const TypeInfo &ti = type_of(a);
+  const std::string format = a.attribute("format").as_string("ascii");
+  if (ti.type != type || (format != "binary" && format != "appended") ||
+      big_endian_ != (std::endian::native == std::endian::big))
+    return false;
+  const Payload raw = binary_payload(a);
+  if (raw.size % ti.size != 0)
+    fail(describe(a) + ": " + std::to_string(raw.size) + " bytes is not a whole number of " +
+         ti.name + " values");
+  if (raw.size / ti.size != expected)
+    fail(describe(a) + " has " + std::to_string(raw.size / ti.size) + " values, expected " +
+         std::to_string(expected));
+  if (raw.size > 0)
+    std::memcpy(dst, raw.data, raw.size);
+  return true;
 }
 
 template <class T>
@@ -338,90 +408,45 @@ std::vector<T> VtuFile::read_array(const pugi::xml_node &a, std::size_t expected
       ++index;
     }
   } else if (format == "binary" || format == "appended") {
-    const std::vector<uint8_t> raw = binary_payload(a);
-    if (raw.size() % ti.size != 0)
-      fail(describe(a) + ": " + std::to_string(raw.size()) + " bytes is not a whole number of " +
+    const Payload raw = binary_payload(a);
+    if (raw.size % ti.size != 0)
+      fail(describe(a) + ": " + std::to_string(raw.size) + " bytes is not a whole number of " +
            ti.name + " values");
-    const std::size_t n = raw.size() / ti.size;
+    const std::size_t n = raw.size / ti.size;
     if (n != expected)
       fail(describe(a) + " has " + std::to_string(n) + " values, expected " +
            std::to_string(expected));
-    out.reserve(n);
-    for (std::size_t i = 0; i < n; ++i) {
-      uint8_t b[8];
-      std::memcpy(b, raw.data() + i * ti.size, ti.size);
-      if (big_endian_)
-        std::reverse(b, b + ti.size);
-      double dv = 0;
-      long long iv = 0;
-      bool is_float = false;
-      switch (ti.type) {
-      case Scalar::F32: {
-        float f;
-        std::memcpy(&f, b, 4);
-        dv = f;
-        is_float = true;
-        break;
-      }
-      case Scalar::F64:
-        std::memcpy(&dv, b, 8);
-        is_float = true;
-        break;
-      case Scalar::I8:
-        iv = static_cast<int8_t>(b[0]);
-        break;
-      case Scalar::U8:
-        iv = b[0];
-        break;
-      case Scalar::I16: {
-        int16_t x;
-        std::memcpy(&x, b, 2);
-        iv = x;
-        break;
-      }
-      case Scalar::U16: {
-        uint16_t x;
-        std::memcpy(&x, b, 2);
-        iv = x;
-        break;
-      }
-      case Scalar::I32: {
-        int32_t x;
-        std::memcpy(&x, b, 4);
-        iv = x;
-        break;
-      }
-      case Scalar::U32: {
-        uint32_t x;
-        std::memcpy(&x, b, 4);
-        iv = x;
-        break;
-      }
-      case Scalar::I64: {
-        int64_t x;
-        std::memcpy(&x, b, 8);
-        iv = x;
-        break;
-      }
-      case Scalar::U64: {
-        uint64_t x;
-        std::memcpy(&x, b, 8);
-        if (x > static_cast<uint64_t>(std::numeric_limits<long long>::max()))
-          fail(describe(a) + ": value " + std::to_string(i) + " is too large");
-        iv = static_cast<long long>(x);
-        break;
-      }
-      }
-      if constexpr (std::is_same_v<T, double>)
-        out.push_back(is_float ? dv : static_cast<double>(iv));
-      else {
-        if (is_float) {
-          if (!(dv == std::floor(dv)) || std::abs(dv) > 9e15)
-            fail(describe(a) + ": value " + std::to_string(i) + " is not an integer");
-          iv = static_cast<long long>(dv);
-        }
-        out.push_back(static_cast<T>(iv));
-      }
+    switch (ti.type) {
+    case Scalar::F32:
+      convert_binary<float>(raw, a, out);
+      break;
+    case Scalar::F64:
+      convert_binary<double>(raw, a, out);
+      break;
+    case Scalar::I8:
+      convert_binary<int8_t>(raw, a, out);
+      break;
+    case Scalar::U8:
+      convert_binary<uint8_t>(raw, a, out);
+      break;
+    case Scalar::I16:
+      convert_binary<int16_t>(raw, a, out);
+      break;
+    case Scalar::U16:
+      convert_binary<uint16_t>(raw, a, out);
+      break;
+    case Scalar::I32:
+      convert_binary<int32_t>(raw, a, out);
+      break;
+    case Scalar::U32:
+      convert_binary<uint32_t>(raw, a, out);
+      break;
+    case Scalar::I64:
+      convert_binary<int64_t>(raw, a, out);
+      break;
+    case Scalar::U64:
+      convert_binary<uint64_t>(raw, a, out);
+      break;
     }
   } else {
     fail(describe(a) + " has unknown format '" + format + "'");
@@ -489,12 +514,18 @@ MeshInput VtuFile::read() {
     const int pc = pa.attribute("NumberOfComponents").as_int(1);
     if (pc != 3 && pc != 2)
       fail(where + ": Points have " + std::to_string(pc) + " components (expected 3)");
-    const std::vector<double> xyz = read_doubles(pa, static_cast<std::size_t>(np) * pc);
+    m.points.resize(static_cast<std::size_t>(base + np));
+    Vec3 *points = m.points.data() + base;
+    // Float64 x, y, z as stored: straight into the points (the common case); else converted.
+    if (pc != 3 || !read_native(pa, Scalar::F64, points, static_cast<std::size_t>(np) * 3)) {
+      const std::vector<double> xyz = read_doubles(pa, static_cast<std::size_t>(np) * pc);
+      for (long long i = 0; i < np; ++i)
+        points[i] = {xyz[i * pc], xyz[i * pc + 1], pc == 3 ? xyz[i * pc + 2] : 0.0};
+    }
     for (long long i = 0; i < np; ++i) {
-      const Vec3 p = {xyz[i * pc], xyz[i * pc + 1], pc == 3 ? xyz[i * pc + 2] : 0.0};
+      const Vec3 &p = points[i];
       if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
         fail(where + ": point " + std::to_string(i) + " has a NaN or infinite coordinate");
-      m.points.push_back(p);
     }
     // The scalar.
     const pugi::xml_node pd = piece.child("PointData");
@@ -527,12 +558,14 @@ MeshInput VtuFile::read() {
     else if (field != m.field_name)
       fail(where + ": scalar '" + field + "' differs from the first piece's '" + m.field_name +
            "'");
-    const std::vector<double> vals = read_doubles(sa, static_cast<std::size_t>(np));
-    for (long long i = 0; i < np; ++i) {
+    std::vector<double> vals = read_doubles(sa, static_cast<std::size_t>(np));
+    for (long long i = 0; i < np; ++i)
       if (!std::isfinite(vals[i]))
         fail(where + ": point " + std::to_string(i) + " has a non-finite value of '" + field + "'");
-      m.values.push_back(vals[i]);
-    }
+    if (m.values.empty())
+      m.values = std::move(vals);
+    else
+      m.values.insert(m.values.end(), vals.begin(), vals.end());
     // Cells.
     const pugi::xml_node cells = piece.child("Cells");
     const pugi::xml_node ca = named_array(cells, "connectivity"),
@@ -546,8 +579,22 @@ MeshInput VtuFile::read() {
       fail(where + ": the last cell offset " + std::to_string(nconn) + " is invalid");
     check_memory(limits_, m.points.size(), m.num_cells() + nc,
                  m.cell_nodes.size() + static_cast<uint64_t>(nconn), path_ + ": " + where);
-    const std::vector<int64_t> conn = read_ints(ca, static_cast<std::size_t>(nconn));
+    // The connectivity becomes the cell nodes in place: each cell's ids are read out, put in
+    // lattice order and written back at the next free position (never after where they were
+    // read: skipped cells only close gaps), so no second array of the connectivity's size.
+    const std::size_t start = m.cell_nodes.size();
+    if (start == 0) {
+      m.cell_nodes = read_ints(ca, static_cast<std::size_t>(nconn));
+    } else {
+      const std::vector<int64_t> conn = read_ints(ca, static_cast<std::size_t>(nconn));
+      m.cell_nodes.insert(m.cell_nodes.end(), conn.begin(), conn.end());
+    }
+    m.cell_offsets.reserve(m.cell_offsets.size() + static_cast<std::size_t>(nc));
+    m.cell_degree.reserve(m.cell_degree.size() + static_cast<std::size_t>(nc));
     std::string problem;
+    int64_t *nodes = m.cell_nodes.data() + start;
+    int64_t write = 0;
+    int64_t cell[kMaxVtkCellNodes];
     for (long long c = 0; c < nc; ++c) {
       const int64_t begin = c ? offsets[c - 1] : 0, end = offsets[c];
       if (end < begin)
@@ -556,13 +603,22 @@ MeshInput VtuFile::read() {
       if (end > nconn)
         fail(where + ": cell " + std::to_string(c) + ": offset " + std::to_string(end) +
              " is beyond the connectivity (" + std::to_string(nconn) + " values)");
+      int degree = 0;
       const VtkCellResult r =
-          add_vtk_cell(m, types[c], conn.data() + begin, end - begin, np, base, &problem);
+          vtk_cell_nodes(types[c], nodes + begin, end - begin, np, base, cell, &degree, &problem);
       if (r == VtkCellResult::Invalid)
         fail(where + ": cell " + std::to_string(c) + problem);
-      if (r == VtkCellResult::Skipped)
+      if (r == VtkCellResult::Skipped) {
         ++skipped;
+        continue;
+      }
+      const int64_t n = end - begin;
+      std::copy(cell, cell + n, nodes + write);
+      write += n;
+      m.cell_offsets.push_back(static_cast<int64_t>(start) + write);
+      m.cell_degree.push_back(static_cast<uint8_t>(degree));
     }
+    m.cell_nodes.resize(start + static_cast<std::size_t>(write));
     ++piece_index;
   }
   if (piece_index == 0)

@@ -1,9 +1,8 @@
 #include "mesh/field.hpp"
 
+#include "poly/lagrange_to_bernstein.hpp"
 #include "poly/lattice.hpp"
 #include "util/parallel_for.hpp"
-
-#include "poly/lattice.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -12,16 +11,16 @@
 namespace hoct {
 namespace {
 
-// The values of cell c's nodes along local edge k, from corner k to corner k+1.
-void edge_node_values(const MeshInput &in, int64_t c, int k, std::vector<double> &out,
-                      std::vector<int64_t> &ids) {
+// The values and point ids of cell c's nodes along local edge k, from corner k to corner k+1
+// (or reversed), into vals[0 .. d] and ids[0 .. d].
+void edge_node_values(const MeshInput &in, int64_t c, int k, bool reversed, double *vals,
+                      int64_t *ids) {
   const int d = in.cell_degree[c];
-  out.resize(d + 1);
-  ids.resize(d + 1);
+  const int64_t *nodes = &in.cell_nodes[in.cell_offsets[c]];
   for (int t = 0; t <= d; ++t) {
-    const int64_t p = in.cell_nodes[in.cell_offsets[c] + edge_lattice_index(d, k, t)];
+    const int64_t p = nodes[edge_lattice_index(d, k, reversed ? d - t : t)];
     ids[t] = p;
-    out[t] = in.values[p];
+    vals[t] = in.values[p];
   }
 }
 
@@ -74,19 +73,16 @@ Field Field::build(const MeshInput &in, const Topology &topo, ProblemLog &proble
   for (int64_t e = 0; e < ne; ++e)
     f.edge_offset_[e + 1] = f.edge_offset_[e] + f.edge_degree_[e] + 1;
   f.edge_coef_.resize(f.edge_offset_[ne]);
-  std::vector<double> vals, other_vals;
-  std::vector<int64_t> ids, other_ids;
+  // Per edge: no allocation (degrees are at most kMaxDegree).
+  double vals[kMaxDegree + 1], other_vals[kMaxDegree + 1];
+  int64_t ids[kMaxDegree + 1], other_ids[kMaxDegree + 1];
   for (int64_t e = 0; e < ne; ++e) {
     const int64_t c = owner[e];
     const int k = owner_local[e];
-    edge_node_values(in, c, k, vals, ids);
-    if (topo.edge_reversed(c, k)) {
-      std::reverse(vals.begin(), vals.end());
-      std::reverse(ids.begin(), ids.end());
-    }
-    const BernsteinPoly p = bernstein_from_equispaced(vals.data(), f.edge_degree_[e]);
-    std::copy(p.coefficients().begin(), p.coefficients().end(),
-              f.edge_coef_.begin() + f.edge_offset_[e]);
+    const int d = f.edge_degree_[e];
+    edge_node_values(in, c, k, topo.edge_reversed(c, k), vals, ids);
+    double *p = f.edge_coef_.data() + f.edge_offset_[e];
+    bernstein_from_equispaced(vals, d, p);
 
     // Continuity: every other cell of the edge must agree with the owner.
     const int64_t *cells = topo.edge_cells_begin(e);
@@ -97,22 +93,17 @@ Field Field::build(const MeshInput &in, const Topology &topo, ProblemLog &proble
       int ko = 0;
       while (topo.cell_edge(o, ko) != e)
         ++ko;
-      edge_node_values(in, o, ko, other_vals, other_ids);
-      if (topo.edge_reversed(o, ko)) {
-        std::reverse(other_vals.begin(), other_vals.end());
-        std::reverse(other_ids.begin(), other_ids.end());
-      }
-      if (other_ids == ids)
+      const int od = in.cell_degree[o];
+      edge_node_values(in, o, ko, topo.edge_reversed(o, ko), other_vals, other_ids);
+      if (od == d && std::equal(other_ids, other_ids + d + 1, ids))
         continue; // the same nodes: continuous by construction
       double gap = 0.0;
-      if (other_vals.size() == vals.size()) {
-        for (std::size_t t = 0; t < vals.size(); ++t)
+      if (od == d) {
+        for (int t = 0; t <= d; ++t)
           gap = std::max(gap, std::abs(other_vals[t] - vals[t]));
       } else {
-        const BernsteinPoly q =
-            bernstein_from_equispaced(other_vals.data(), static_cast<int>(other_vals.size()) - 1)
-                .elevated(f.edge_degree_[e]);
-        for (int t = 0; t <= f.edge_degree_[e]; ++t)
+        const BernsteinPoly q = bernstein_from_equispaced(other_vals, od).elevated(d);
+        for (int t = 0; t <= d; ++t)
           gap = std::max(gap, std::abs(q[t] - p[t]));
       }
       if (!(gap <= tol)) {

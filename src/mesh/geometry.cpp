@@ -53,8 +53,11 @@ Geometry Geometry::build(const MeshInput &in) {
 
   g.degree_.resize(nc);
   g.offset_.assign(nc + 1, 0);
+  g.coef_.reserve(3 * static_cast<std::size_t>(nc)); // straight cells: three control points each
   std::vector<Vec3> ctrl;
-  std::vector<const Vec3 *> node_ptr;
+  // The lattice positions (u, v) of the degree in use (one degree in most meshes).
+  int table_degree = 0;
+  std::vector<std::array<double, 2>> uv;
   for (int64_t c = 0; c < nc; ++c) {
     const int d = in.cell_degree[c];
     const int n = lattice_size(d);
@@ -62,22 +65,27 @@ Geometry Geometry::build(const MeshInput &in) {
     const Vec3 &p0 = in.points[nodes[corner_index(d, 0)]];
     const Vec3 &p1 = in.points[nodes[corner_index(d, 1)]];
     const Vec3 &p2 = in.points[nodes[corner_index(d, 2)]];
-    // Linear if every point of the lattice (nodes, or control points) is the affine image of its
-    // lattice position. The nodes are tested first: a straight cell needs no conversion.
-    auto affine = [&](const Vec3 *const *pts) {
+    if (d != table_degree) {
+      uv.resize(static_cast<std::size_t>(n));
       for (int i = 0; i < n; ++i) {
         const auto q = lattice_point(d, i);
-        const double u = static_cast<double>(q[0]) / d, v = static_cast<double>(q[1]) / d;
+        uv[i] = {static_cast<double>(q[0]) / d, static_cast<double>(q[1]) / d};
+      }
+      table_degree = d;
+    }
+    // Linear if every point of the lattice (nodes, or control points) is the affine image of its
+    // lattice position. The nodes are tested first: a straight cell needs no conversion.
+    auto affine = [&](auto point) {
+      for (int i = 0; i < n; ++i) {
+        const double u = uv[i][0], v = uv[i][1];
+        const Vec3 &q = point(i);
         for (int a = 0; a < 3; ++a)
-          if (std::abs((*pts[i])[a] - ((1 - u - v) * p0[a] + u * p1[a] + v * p2[a])) > tol)
+          if (std::abs(q[a] - ((1 - u - v) * p0[a] + u * p1[a] + v * p2[a])) > tol)
             return false;
       }
       return true;
     };
-    node_ptr.resize(n);
-    for (int j = 0; j < n; ++j)
-      node_ptr[j] = &in.points[nodes[j]];
-    bool linear = d == 1 || affine(node_ptr.data());
+    bool linear = d == 1 || affine([&](int i) -> const Vec3 & { return in.points[nodes[i]]; });
     if (!linear) {
       ctrl.assign(n, Vec3{0, 0, 0});
       const auto &m = lagrange_to_bernstein_triangle(d);
@@ -88,19 +96,19 @@ Geometry Geometry::build(const MeshInput &in) {
           for (int a = 0; a < 3; ++a)
             ctrl[i][a] += w * p[a];
         }
-      for (int i = 0; i < n; ++i)
-        node_ptr[i] = &ctrl[i];
-      linear = affine(node_ptr.data());
+      linear = affine([&](int i) -> const Vec3 & { return ctrl[i]; });
     }
     if (linear) {
-      ctrl.assign({p0, p1, p2});
+      g.coef_.push_back(p0);
+      g.coef_.push_back(p1);
+      g.coef_.push_back(p2);
       g.degree_[c] = 1;
     } else {
+      g.coef_.insert(g.coef_.end(), ctrl.begin(), ctrl.end());
       g.degree_[c] = static_cast<uint8_t>(d);
       ++g.curved_cells_;
     }
-    g.offset_[c + 1] = g.offset_[c] + static_cast<int64_t>(ctrl.size());
-    g.coef_.insert(g.coef_.end(), ctrl.begin(), ctrl.end());
+    g.offset_[c + 1] = static_cast<int64_t>(g.coef_.size());
   }
   return g;
 }

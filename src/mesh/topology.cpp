@@ -9,17 +9,12 @@
 namespace hoct {
 namespace {
 
+// A cell's edge, in the bucket of its lower vertex: the higher vertex, then 3 cell + local edge
+// (the order of the records in a bucket: by higher vertex, then cell, then local edge).
 struct EdgeRecord {
-  int64_t lo, hi, cell;
-  int local;
+  int64_t hi, cell_local;
   bool operator<(const EdgeRecord &o) const {
-    if (lo != o.lo)
-      return lo < o.lo;
-    if (hi != o.hi)
-      return hi < o.hi;
-    if (cell != o.cell)
-      return cell < o.cell;
-    return local < o.local;
+    return hi < o.hi || (hi == o.hi && cell_local < o.cell_local);
   }
 };
 
@@ -87,46 +82,61 @@ Topology Topology::build(const MeshInput &in, ProblemLog &problems) {
     for (int64_t c = 0; c < nc; ++c)
       for (int k = 0; k < 3; ++k) {
         const int64_t a = t.cell_vertices_[c][k], b = t.cell_vertices_[c][(k + 1) % 3];
-        rec[fill[std::min(a, b)]++] = {std::min(a, b), std::max(a, b), c, k};
+        rec[fill[std::min(a, b)]++] = {std::max(a, b), 3 * c + k};
       }
   }
-  for (int64_t v = 0; v < nv; ++v)
+  int64_t edges = 0;
+  for (int64_t v = 0; v < nv; ++v) {
     std::sort(rec.begin() + bucket[v], rec.begin() + bucket[v + 1]);
+    for (int64_t i = bucket[v]; i < bucket[v + 1]; ++i)
+      edges += i == bucket[v] || rec[i].hi != rec[i - 1].hi;
+  }
   t.cell_edges_.assign(nc, {-1, -1, -1});
   t.cell_edge_reversed_.assign(nc, 0);
+  t.edge_vertices_.reserve(static_cast<std::size_t>(edges));
+  t.edge_cells_.reserve(rec.size());
+  t.edge_cell_offset_.reserve(static_cast<std::size_t>(edges) + 1);
   t.edge_cell_offset_.push_back(0);
-  for (std::size_t i = 0; i < rec.size();) {
-    std::size_t j = i;
-    while (j < rec.size() && rec[j].lo == rec[i].lo && rec[j].hi == rec[i].hi)
-      ++j;
-    const int64_t e = static_cast<int64_t>(t.edge_vertices_.size());
-    t.edge_vertices_.push_back({rec[i].lo, rec[i].hi});
-    for (std::size_t r = i; r < j; ++r) {
-      const auto &x = rec[r];
-      t.cell_edges_[x.cell][x.local] = e;
-      if (t.cell_vertices_[x.cell][x.local] != x.lo)
-        t.cell_edge_reversed_[x.cell] |= static_cast<uint8_t>(1u << x.local);
-      t.edge_cells_.push_back(x.cell);
+  // The local edge of each (edge, cell) incidence, in edge_cells_ order: the orientation walk
+  // below finds a neighbour's side of the shared edge there, not by searching the neighbour.
+  std::vector<int8_t> incidence_local(rec.size());
+  for (int64_t lo = 0; lo < nv; ++lo)
+    for (int64_t i = bucket[lo]; i < bucket[lo + 1];) {
+      int64_t j = i;
+      while (j < bucket[lo + 1] && rec[j].hi == rec[i].hi)
+        ++j;
+      const int64_t hi = rec[i].hi;
+      const int64_t e = static_cast<int64_t>(t.edge_vertices_.size());
+      t.edge_vertices_.push_back({lo, hi});
+      for (int64_t r = i; r < j; ++r) {
+        const int64_t cell = rec[r].cell_local / 3;
+        const int local = static_cast<int>(rec[r].cell_local % 3);
+        t.cell_edges_[cell][local] = e;
+        if (t.cell_vertices_[cell][local] != lo)
+          t.cell_edge_reversed_[cell] |= static_cast<uint8_t>(1u << local);
+        incidence_local[t.edge_cells_.size()] = static_cast<int8_t>(local);
+        t.edge_cells_.push_back(cell);
+      }
+      t.edge_cell_offset_.push_back(static_cast<int64_t>(t.edge_cells_.size()));
+      const int64_t count = j - i;
+      if (count == 1)
+        ++t.boundary_edges_;
+      if (count > 2) {
+        std::ostringstream m;
+        m << "edge between points " << t.vertex_point_[lo] << " and " << t.vertex_point_[hi]
+          << " is shared by " << count << " cells (";
+        for (int64_t r = i; r < j; ++r)
+          m << (r > i ? ", " : "") << rec[r].cell_local / 3;
+        m << ")";
+        problems.add("non-manifold edge", Severity::Error, m.str());
+      }
+      if (count == 2 && rec[i].cell_local / 3 == rec[i + 1].cell_local / 3) {
+        problems.add("degenerate cell (repeated edge)", Severity::Error,
+                     "cell " + std::to_string(rec[i].cell_local / 3) + " uses the same edge twice");
+      }
+      i = j;
     }
-    t.edge_cell_offset_.push_back(static_cast<int64_t>(t.edge_cells_.size()));
-    const std::size_t count = j - i;
-    if (count == 1)
-      ++t.boundary_edges_;
-    if (count > 2) {
-      std::ostringstream m;
-      m << "edge between points " << t.vertex_point_[rec[i].lo] << " and "
-        << t.vertex_point_[rec[i].hi] << " is shared by " << count << " cells (";
-      for (std::size_t r = i; r < j; ++r)
-        m << (r > i ? ", " : "") << rec[r].cell;
-      m << ")";
-      problems.add("non-manifold edge", Severity::Error, m.str());
-    }
-    if (count == 2 && rec[i].cell == rec[i + 1].cell) {
-      problems.add("degenerate cell (repeated edge)", Severity::Error,
-                   "cell " + std::to_string(rec[i].cell) + " uses the same edge twice");
-    }
-    i = j;
-  }
+  std::vector<EdgeRecord>().swap(rec);
 
   // Components and a consistent orientation, by a breadth-first walk over manifold edges.
   t.cell_parity_.assign(nc, 0);
@@ -141,12 +151,14 @@ Topology Topology::build(const MeshInput &in, ProblemLog &problems) {
     for (std::size_t q = 0; q < queue.size(); ++q) {
       const int64_t c = queue[q];
       for (int k = 0; k < 3; ++k) {
-        const int64_t n = t.neighbor(c, k);
-        if (n < 0 || n == c)
+        const int64_t e = t.cell_edges_[c][k];
+        if (t.edge_cell_count(e) != 2)
           continue;
-        int kn = 0;
-        while (kn < 3 && t.cell_edges_[n][kn] != t.cell_edges_[c][k])
-          ++kn;
+        const int64_t at = t.edge_cell_offset_[e] + (t.edge_cells_[t.edge_cell_offset_[e]] == c);
+        const int64_t n = t.edge_cells_[at];
+        if (n == c)
+          continue;
+        const int kn = incidence_local[at];
         // Consistently oriented neighbours run the shared edge in opposite directions.
         const bool same_dir = t.edge_reversed(c, k) == t.edge_reversed(n, kn);
         const int8_t want = static_cast<int8_t>(same_dir ? -t.cell_parity_[c] : t.cell_parity_[c]);

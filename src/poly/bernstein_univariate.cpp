@@ -116,16 +116,20 @@ int bernstein_sign_changes(std::span<const double> c) {
 
 int BernsteinPoly::sign_changes() const { return bernstein_sign_changes(c_); }
 
-BernsteinPoly bernstein_from_equispaced(const double *values, int degree) {
+void bernstein_from_equispaced(const double *values, int degree, double *out) {
   const auto &m = lagrange_to_bernstein_1d(degree);
   const int n = degree + 1;
-  std::vector<double> c(n, 0.0);
   for (int i = 0; i < n; ++i) {
     double s = 0.0;
     for (int j = 0; j < n; ++j)
       s += m[i * n + j] * values[j];
-    c[i] = s;
+    out[i] = s;
   }
+}
+
+BernsteinPoly bernstein_from_equispaced(const double *values, int degree) {
+  std::vector<double> c(degree + 1, 0.0);
+  bernstein_from_equispaced(values, degree, c.data());
   return BernsteinPoly(std::move(c));
 }
 

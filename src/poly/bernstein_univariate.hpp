@@ -53,5 +53,7 @@ private:
 
 // 1D equispaced Lagrange values (at t = i/n, i = 0..n) to Bernstein coefficients.
 BernsteinPoly bernstein_from_equispaced(const double *values, int degree);
+// The same into out[0 .. degree] (no allocation).
+void bernstein_from_equispaced(const double *values, int degree, double *out);
 
 } // namespace hoct

@@ -12,6 +12,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 
 namespace hoct {
 namespace {
@@ -196,6 +197,87 @@ TEST(VtuReader, MalformedFilesGiveClearErrors) {
                    "format=\"appended\" offset=\"0\">");
   expect_error(tmp, appended, "no <AppendedData> section");
   EXPECT_THROW(read_vtu(tmp.file("does-not-exist.vtu")), InputError);
+}
+
+TEST(VtuReader, PiecesSkippedCellsAndStoredTypes) {
+  // Two pieces, a vertex cell between the triangles of the first (skipped: the cells after it
+  // close the gap), and the same piece again in base64 big-endian Float32 / Int32 / UInt8 arrays
+  // (converted value by value): both read to the ascii file's cells, shifted by the first
+  // piece's points in the second piece.
+  TempDir tmp;
+  const Fixture f;
+  auto piece = [&](const std::string &points, const std::string &values, const std::string &conn,
+                   const std::string &offsets, const std::string &types, const char *ncells,
+                   const std::string &fmt, const char *ftype, const char *itype) {
+    return "<Piece NumberOfPoints=\"9\" NumberOfCells=\"" + std::string(ncells) +
+           "\">\n<PointData>\n<DataArray type=\"" + ftype + "\" Name=\"T\" format=\"" + fmt +
+           "\">" + values + "</DataArray>\n</PointData>\n<Points>\n<DataArray type=\"" + ftype +
+           "\" NumberOfComponents=\"3\" format=\"" + fmt + "\">" + points +
+           "</DataArray>\n</Points>\n<Cells>\n<DataArray type=\"" + itype +
+           "\" Name=\"connectivity\" format=\"" + fmt + "\">" + conn +
+           "</DataArray>\n<DataArray type=\"" + itype + "\" Name=\"offsets\" format=\"" + fmt +
+           "\">" + offsets + "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" format=\"" +
+           fmt + "\">" + types + "</DataArray>\n</Cells>\n</Piece>\n";
+  };
+  auto file = [](const std::string &order, const std::string &pieces) {
+    return "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" "
+           "byte_order=\"" +
+           order + "\">\n<UnstructuredGrid>\n" + pieces + "</UnstructuredGrid>\n</VTKFile>\n";
+  };
+  // Piece 0: quadratic, vertex (point 8), quadratic; piece 1: the fixture's two cells.
+  const std::string first = piece(f.points, f.values, "0 1 2 4 5 6 8 0 2 3 6 7 8", "6 7 13",
+                                  "22 1 22", "3", "ascii", "Float64", "Int64");
+  const std::string second =
+      piece(f.points, f.values, f.conn, f.offsets, f.types, "2", "ascii", "Float64", "Int64");
+  const MeshInput m = read_vtu(tmp.write("pieces.vtu", file("LittleEndian", first + second)));
+  ASSERT_EQ(m.num_cells(), 4u);
+  ASSERT_EQ(m.points.size(), 18u);
+  EXPECT_EQ(m.cell_offsets, (std::vector<int64_t>{0, 6, 12, 18, 24}));
+  EXPECT_EQ(m.cell_degree, (std::vector<uint8_t>{2, 2, 2, 2}));
+  const std::vector<int64_t> a = {0, 4, 1, 6, 5, 2}, b = {0, 6, 2, 8, 7, 3};
+  std::vector<int64_t> expected = a;
+  expected.insert(expected.end(), b.begin(), b.end());
+  for (int64_t x : a)
+    expected.push_back(x + 9);
+  for (int64_t x : b)
+    expected.push_back(x + 9);
+  EXPECT_EQ(m.cell_nodes, expected);
+  EXPECT_EQ(m.values[9 + 4], 4.0);
+  EXPECT_EQ(m.points[9 + 5], (Vec3{1, 0.5, 0}));
+
+  // The second piece stored big-endian in 4- and 1-byte types, inline base64 (UInt32 header).
+  auto encode = [](const std::vector<uint8_t> &bytes) {
+    std::vector<uint8_t> all = {0, 0, 0, static_cast<uint8_t>(bytes.size())};
+    all.insert(all.end(), bytes.begin(), bytes.end());
+    return base64_encode(all.data(), all.size());
+  };
+  auto big4 = [](const std::vector<uint32_t> &words) {
+    std::vector<uint8_t> out;
+    for (uint32_t w : words)
+      for (int k = 3; k >= 0; --k)
+        out.push_back(static_cast<uint8_t>(w >> (8 * k)));
+    return out;
+  };
+  auto floats = [&](const std::string &text) {
+    std::vector<uint32_t> words;
+    std::istringstream in(text);
+    for (float x; in >> x;) {
+      uint32_t w;
+      std::memcpy(&w, &x, 4);
+      words.push_back(w);
+    }
+    return encode(big4(words));
+  };
+  const std::string stored =
+      piece(floats(f.points), floats(f.values), encode(big4({0, 1, 2, 4, 5, 6, 0, 2, 3, 6, 7, 8})),
+            encode(big4({6, 12})), encode({22, 22}), "2", "binary", "Float32", "Int32");
+  const MeshInput s = read_vtu(tmp.write("stored.vtu", file("BigEndian", stored)));
+  const MeshInput t = read_vtu(tmp.write("text.vtu", file("LittleEndian", second)));
+  EXPECT_EQ(s.points, t.points);
+  EXPECT_EQ(s.values, t.values);
+  EXPECT_EQ(s.cell_nodes, t.cell_nodes);
+  EXPECT_EQ(s.cell_offsets, t.cell_offsets);
+  EXPECT_EQ(s.cell_degree, t.cell_degree);
 }
 
 TEST(VtuReader, BrokenBinaryData) {
