@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include <functional>
 #include <limits>
 #include <numeric>
@@ -70,6 +72,56 @@ TEST(Topology, DiskSphereAndAnnulus) {
   Mesh annulus = build_mesh(linear_mesh(v, ring));
   EXPECT_EQ(annulus.topology.euler_characteristic(), 0);
   EXPECT_EQ(annulus.topology.boundary_loops(), 2);
+}
+
+TEST(MeshChecks, ComponentsAndOrientation) {
+  // Consistently oriented input (the common case, no walk from cell to cell): two disks are two
+  // components, every cell of parity +1. Cells given in mixed orientations: the walk orients
+  // them, one component, no inverted cell. A Moebius strip cannot be oriented (a warning).
+  std::mt19937_64 rng(4);
+  std::vector<Vec3> v;
+  std::vector<std::array<int64_t, 3>> t;
+  testing::square_grid(3, rng, v, t);
+  std::vector<Vec3> v2 = v;
+  std::vector<std::array<int64_t, 3>> t2 = t;
+  const int64_t shift = static_cast<int64_t>(v.size());
+  for (const Vec3 &p : v)
+    v2.push_back({p[0] + 5, p[1], p[2]});
+  for (const auto &tri : t)
+    t2.push_back({tri[0] + shift, tri[1] + shift, tri[2] + shift});
+  const Mesh two = build_mesh(linear_mesh(v2, t2));
+  EXPECT_EQ(two.topology.components(), 2);
+  EXPECT_TRUE(two.topology.orientable());
+
+  std::vector<std::array<int64_t, 3>> mixed = t;
+  for (std::size_t i = 0; i < mixed.size(); i += 2)
+    std::swap(mixed[i][1], mixed[i][2]);
+  const Mesh m = build_mesh(linear_mesh(v, mixed), {false});
+  EXPECT_EQ(m.topology.components(), 1);
+  EXPECT_TRUE(m.topology.orientable());
+  EXPECT_FALSE(m.problems.has_errors()) << m.problems.summary();
+  EXPECT_EQ(m.problems.count("inverted cell"), 0);
+
+  // Moebius strip: a band of 8 quads (16 triangles) whose ends are glued with a half twist.
+  std::vector<Vec3> band;
+  const int n = 8;
+  for (int i = 0; i < n; ++i) {
+    const double a = 2 * M_PI * i / n, w = 0.3 * std::cos(a / 2), h = 0.3 * std::sin(a / 2);
+    band.push_back({(1 + w) * std::cos(a), (1 + w) * std::sin(a), h});
+    band.push_back({(1 - w) * std::cos(a), (1 - w) * std::sin(a), -h});
+  }
+  std::vector<std::array<int64_t, 3>> strip;
+  for (int i = 0; i < n; ++i) {
+    const int64_t a0 = 2 * i, a1 = 2 * i + 1;
+    // The last quad joins the first rung crosswise (the half twist).
+    const int64_t b0 = i + 1 < n ? 2 * (i + 1) : 1, b1 = i + 1 < n ? 2 * (i + 1) + 1 : 0;
+    strip.push_back({a0, b0, a1});
+    strip.push_back({a1, b0, b1});
+  }
+  const Mesh mobius = build_mesh(linear_mesh(band, strip), {false});
+  EXPECT_FALSE(mobius.topology.orientable());
+  EXPECT_EQ(mobius.problems.count("non-orientable surface"), 1) << mobius.problems.summary();
+  EXPECT_EQ(mobius.topology.components(), 1);
 }
 
 TEST(MeshChecks, NonManifoldEdge) {
