@@ -12,6 +12,9 @@ namespace hoct {
 struct ReadLimits {
   // Memory budget in bytes; 0 = no limit.
   uint64_t max_memory_bytes = 0;
+  // VTU files larger than this whose payload is raw appended data are not read whole: the XML
+  // around the payload is, and each array is read from the file straight into its destination.
+  uint64_t stream_appended_above = uint64_t{64} << 20;
 };
 
 // Estimated peak bytes to read, build and compute the exact tree of a mesh with `points` nodes,

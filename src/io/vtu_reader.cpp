@@ -8,8 +8,13 @@
 #include <pugixml.hpp>
 #include <zlib.h>
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <bit>
+#include <cerrno>
 #include <charconv>
 #include <cmath>
 #include <cstring>
@@ -47,14 +52,29 @@ class VtuFile {
 public:
   VtuFile(std::string path, std::string scalar, const ReadLimits &limits)
       : path_(std::move(path)), scalar_(std::move(scalar)), limits_(limits) {}
-  // Reads the file at path_ into bytes_.
+  VtuFile(const VtuFile &) = delete;
+  VtuFile &operator=(const VtuFile &) = delete;
+  ~VtuFile() {
+    if (fd_ >= 0)
+      ::close(fd_);
+  }
+  // Reads the file at path_: into bytes_, or (large, raw appended payload) only the XML around
+  // the payload, whose arrays are then read from the file as they are needed.
   void read_file();
-  void set_bytes(std::string bytes) { bytes_ = FileBytes(std::move(bytes)); }
+  void set_bytes(std::string bytes) {
+    bytes_ = FileBytes(std::move(bytes));
+    file_size_ = bytes_.size();
+  }
   MeshInput read();
 
 private:
   [[noreturn]] void fail(const std::string &what) const { throw InputError(path_ + ": " + what); }
   void load();
+  void load_whole();
+  bool open_streamed();
+  void read_at(uint64_t at, std::size_t n, void *dst) const;
+  uint64_t appended_offset(const pugi::xml_node &a, std::size_t appended_size) const;
+  Payload payload_from_file(uint64_t at, uint64_t avail, const pugi::xml_node &a) const;
   const TypeInfo &type_of(const pugi::xml_node &a) const;
   std::string describe(const pugi::xml_node &a) const;
   Payload binary_payload(const pugi::xml_node &a) const;
@@ -71,9 +91,14 @@ private:
 
   std::string path_, scalar_;
   ReadLimits limits_;
-  FileBytes bytes_;           // the file
-  std::string xml_;           // the file without the appended payload
-  std::string_view appended_; // appended payload (after '_')
+  FileBytes bytes_; // the file (unless streamed)
+  uint64_t file_size_ = 0;
+  int fd_ = -1;                  // the open file, when streamed
+  bool streamed_ = false;        // the appended payload stays in the file:
+  uint64_t appended_begin_ = 0;  //   its first byte (after '_')
+  uint64_t appended_length_ = 0; //   and its length
+  std::string xml_;              // the file without the appended payload
+  std::string_view appended_;    // appended payload (after '_')
   bool appended_base64_ = false;
   pugi::xml_document doc_;
   int header_size_ = 4;
@@ -81,12 +106,90 @@ private:
 };
 
 void VtuFile::read_file() {
+  if (open_streamed())
+    return;
   std::string error;
   if (!bytes_.read(path_, error))
     fail(error == "is a directory" ? std::string("is a directory, not a .vtu file") : error);
+  file_size_ = bytes_.size();
 }
 
-void VtuFile::load() {
+// A large file with a raw appended payload: reads the XML before the payload (in chunks, until
+// the '_' that starts it) and after it (the end of the file), and keeps the file open. False,
+// with nothing kept, for any other file: read whole, it gets the usual checks and messages.
+bool VtuFile::open_streamed() {
+  const int fd = ::open(path_.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0)
+    return false;
+  struct stat st {};
+  if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode) ||
+      static_cast<uint64_t>(st.st_size) <= limits_.stream_appended_above) {
+    ::close(fd);
+    return false;
+  }
+  fd_ = fd;
+  const uint64_t size = static_cast<uint64_t>(st.st_size);
+  constexpr std::size_t kChunk = std::size_t{1} << 20, kMaxHead = std::size_t{64} << 20;
+  std::string head;
+  std::size_t tag = std::string::npos, close = std::string::npos, underscore = std::string::npos;
+  while (head.size() < std::min<uint64_t>(size, kMaxHead)) {
+    const std::size_t at = head.size();
+    const std::size_t n = static_cast<std::size_t>(std::min<uint64_t>(kChunk, size - at));
+    head.resize(at + n);
+    const ssize_t r = ::pread(fd_, head.data() + at, n, static_cast<off_t>(at));
+    if (r <= 0)
+      break;
+    head.resize(at + static_cast<std::size_t>(r));
+    if (tag == std::string::npos)
+      tag = head.find("<AppendedData", at >= 13 ? at - 13 : 0);
+    if (tag != std::string::npos && close == std::string::npos)
+      close = head.find('>', tag);
+    if (close != std::string::npos)
+      underscore = head.find('_', close);
+    if (underscore != std::string::npos)
+      break;
+  }
+  const std::size_t tail_size = static_cast<std::size_t>(std::min<uint64_t>(size, kChunk));
+  std::string tail(tail_size, '\0');
+  const bool have_tail =
+      underscore != std::string::npos &&
+      ::pread(fd_, tail.data(), tail_size, static_cast<off_t>(size - tail_size)) ==
+          static_cast<ssize_t>(tail_size);
+  const std::size_t end = have_tail ? tail.rfind("</AppendedData>") : std::string::npos;
+  const uint64_t end_at = size - tail_size + end; // file offset of "</AppendedData>"
+  if (end == std::string::npos || end_at <= underscore ||
+      std::string_view(head).substr(tag, close - tag).find("\"raw\"") == std::string::npos) {
+    ::close(fd_);
+    fd_ = -1;
+    return false;
+  }
+  head.resize(close + 1);
+  xml_ = std::move(head);
+  xml_.append(tail, end, std::string::npos);
+  appended_begin_ = underscore + 1;
+  appended_length_ = end_at - appended_begin_;
+  file_size_ = size;
+  streamed_ = true;
+  return true;
+}
+
+// n bytes of the file from offset `at` into dst.
+void VtuFile::read_at(uint64_t at, std::size_t n, void *dst) const {
+  std::size_t got = 0;
+  while (got < n) {
+    const ssize_t r =
+        ::pread(fd_, static_cast<char *>(dst) + got, n - got, static_cast<off_t>(at + got));
+    if (r < 0 && errno == EINTR)
+      continue;
+    if (r <= 0)
+      fail(r < 0 ? "cannot read (" + std::string(std::strerror(errno)) + ")"
+                 : std::string("cannot read: the file ends early (it changed while it was read)"));
+    got += static_cast<std::size_t>(r);
+  }
+}
+
+// The XML of a file read whole, its appended payload (if any) cut out first.
+void VtuFile::load_whole() {
   if (bytes_.empty())
     fail("the file is empty");
   // Cut the appended payload out before XML parsing: raw bytes may contain anything.
@@ -117,6 +220,17 @@ void VtuFile::load() {
   const pugi::xml_parse_result r = doc_.load_buffer_inplace(xml, xml_size);
   if (!r)
     fail(std::string("not valid XML: ") + r.description() + " at byte " + std::to_string(r.offset));
+}
+
+void VtuFile::load() {
+  if (streamed_) { // the XML around the payload is in xml_ already
+    const pugi::xml_parse_result r = doc_.load_buffer_inplace(xml_.data(), xml_.size());
+    if (!r)
+      fail(std::string("not valid XML: ") + r.description() + " at byte " +
+           std::to_string(r.offset));
+  } else {
+    load_whole();
+  }
   const pugi::xml_node root = doc_.child("VTKFile");
   if (!root)
     fail("not a VTK XML file (no <VTKFile> element)");
@@ -239,6 +353,69 @@ Payload VtuFile::decode_owned(std::vector<uint8_t> buffer, const pugi::xml_node 
   return r;
 }
 
+// The offset attribute of an appended array, checked against the payload's size.
+uint64_t VtuFile::appended_offset(const pugi::xml_node &a, std::size_t appended_size) const {
+  const auto offset_attr = a.attribute("offset");
+  if (!offset_attr)
+    fail(describe(a) + " is appended but has no offset");
+  const long long offset = offset_attr.as_llong(-1);
+  if (offset < 0 || static_cast<uint64_t>(offset) > appended_size)
+    fail(describe(a) + ": offset " + offset_attr.as_string() + " is outside the appended data (" +
+         std::to_string(appended_size) + " bytes)");
+  return static_cast<uint64_t>(offset);
+}
+
+// A streamed file's raw appended array at file offset `at`, with `avail` bytes of payload from
+// there: its headers are read and checked first (as decode_blocks checks them), so that no
+// claimed size makes us read or allocate beyond the payload; then the array's bytes.
+Payload VtuFile::payload_from_file(uint64_t at, uint64_t avail, const pugi::xml_node &a) const {
+  const int hs = header_size_;
+  auto truncated = [&](const char *what, uint64_t n) {
+    fail(describe(a) + ": truncated binary data (" + what + " needs " + std::to_string(n) +
+         " bytes, " + std::to_string(avail) + " available)");
+  };
+  uint8_t h[3 * 8];
+  if (!compressed_) {
+    if (avail < static_cast<uint64_t>(hs))
+      truncated("the header", hs);
+    read_at(at, hs, h);
+    const uint64_t n = read_uint(h, hs, big_endian_);
+    if (n > avail - hs)
+      fail(describe(a) + ": truncated binary data (the header claims " + std::to_string(n) +
+           " bytes, " + std::to_string(avail - hs) + " available)");
+    Payload r;
+    r.owned.resize(static_cast<std::size_t>(n));
+    read_at(at + hs, r.owned.size(), r.owned.data());
+    r.data = r.owned.data();
+    r.size = r.owned.size();
+    return r;
+  }
+  if (avail < 3 * static_cast<uint64_t>(hs))
+    truncated("the compression header", 3 * hs);
+  read_at(at, 3 * hs, h);
+  const uint64_t nb = read_uint(h, hs, big_endian_);
+  if (nb > avail / hs)
+    fail(describe(a) + ": compression header claims " + std::to_string(nb) + " blocks");
+  if ((3 + nb) * hs > avail)
+    truncated("the compression header", (3 + nb) * hs);
+  std::vector<uint8_t> all(static_cast<std::size_t>((3 + nb) * hs));
+  read_at(at, all.size(), all.data());
+  uint64_t total = 0;
+  for (uint64_t b = 0; b < nb; ++b) {
+    const uint64_t csize = read_uint(all.data() + (3 + b) * hs, hs, big_endian_);
+    if (csize > avail)
+      fail(describe(a) + ": compressed block " + std::to_string(b) + " claims " +
+           std::to_string(csize) + " bytes");
+    total += csize;
+  }
+  if (all.size() + total > avail)
+    truncated("the compressed blocks", all.size() + total);
+  const std::size_t header_bytes = all.size();
+  all.resize(header_bytes + static_cast<std::size_t>(total));
+  read_at(at + header_bytes, static_cast<std::size_t>(total), all.data() + header_bytes);
+  return decode_owned(std::move(all), a);
+}
+
 Payload VtuFile::binary_payload(const pugi::xml_node &a) const {
   const std::string format = a.attribute("format").as_string();
   if (format == "binary") {
@@ -251,16 +428,13 @@ Payload VtuFile::binary_payload(const pugi::xml_node &a) const {
     return decode_owned(std::move(raw), a);
   }
   // appended
+  if (streamed_) {
+    const uint64_t offset = appended_offset(a, appended_length_);
+    return payload_from_file(appended_begin_ + offset, appended_length_ - offset, a);
+  }
   if (appended_.data() == nullptr)
     fail(describe(a) + " is appended but the file has no <AppendedData> section");
-  const auto offset_attr = a.attribute("offset");
-  if (!offset_attr)
-    fail(describe(a) + " is appended but has no offset");
-  const long long offset = offset_attr.as_llong(-1);
-  if (offset < 0 || static_cast<std::size_t>(offset) > appended_.size())
-    fail(describe(a) + ": offset " + offset_attr.as_string() + " is outside the appended data (" +
-         std::to_string(appended_.size()) + " bytes)");
-  const std::string_view rest = appended_.substr(static_cast<std::size_t>(offset));
+  const std::string_view rest = appended_.substr(appended_offset(a, appended_.size()));
   if (!appended_base64_)
     return decode_blocks(reinterpret_cast<const uint8_t *>(rest.data()), rest.size(), a);
   // Appended base64: decode just this array's streams. The header is its own stream (VTK) or
@@ -351,6 +525,29 @@ bool VtuFile::read_native(const pugi::xml_node &a, Scalar type, void *dst,
   if (ti.type != type || (format != "binary" && format != "appended") ||
       big_endian_ != (std::endian::native == std::endian::big))
     return false;
+  if (streamed_ && !compressed_ && format == "appended") {
+    // Straight from the file into dst, after the same checks.
+    const uint64_t offset = appended_offset(a, appended_length_);
+    const uint64_t at = appended_begin_ + offset, avail = appended_length_ - offset;
+    const int hs = header_size_;
+    uint8_t h[8];
+    if (avail < static_cast<uint64_t>(hs))
+      fail(describe(a) + ": truncated binary data (the header needs " + std::to_string(hs) +
+           " bytes, " + std::to_string(avail) + " available)");
+    read_at(at, hs, h);
+    const uint64_t n = read_uint(h, hs, big_endian_);
+    if (n > avail - hs)
+      fail(describe(a) + ": truncated binary data (the header claims " + std::to_string(n) +
+           " bytes, " + std::to_string(avail - hs) + " available)");
+    if (n % ti.size != 0)
+      fail(describe(a) + ": " + std::to_string(n) + " bytes is not a whole number of " + ti.name +
+           " values");
+    if (n / ti.size != expected)
+      fail(describe(a) + " has " + std::to_string(n / ti.size) + " values, expected " +
+           std::to_string(expected));
+    read_at(at + hs, static_cast<std::size_t>(n), dst);
+    return true;
+  }
   const Payload raw = binary_payload(a);
   if (raw.size % ti.size != 0)
     fail(describe(a) + ": " + std::to_string(raw.size) + " bytes is not a whole number of " +
@@ -408,6 +605,13 @@ std::vector<T> VtuFile::read_array(const pugi::xml_node &a, std::size_t expected
       ++index;
     }
   } else if (format == "binary" || format == "appended") {
+    // Stored as T in the machine's byte order: one copy (or read) straight into the result.
+    constexpr Scalar native = std::is_same_v<T, double> ? Scalar::F64 : Scalar::I64;
+    if (ti.type == native) {
+      out.resize(expected);
+      if (read_native(a, native, out.data(), expected))
+        return out;
+    }
     const Payload raw = binary_payload(a);
     if (raw.size % ti.size != 0)
       fail(describe(a) + ": " + std::to_string(raw.size) + " bytes is not a whole number of " +
@@ -500,8 +704,8 @@ MeshInput VtuFile::read() {
     if (np < 0 || nc < 0)
       fail(where + ": missing or bad NumberOfPoints / NumberOfCells");
     // Guard counts against the file size before allocating (a value needs >= 1 byte).
-    if (static_cast<unsigned long long>(np) > bytes_.size() ||
-        static_cast<unsigned long long>(nc) > bytes_.size())
+    if (static_cast<unsigned long long>(np) > file_size_ ||
+        static_cast<unsigned long long>(nc) > file_size_)
       fail(where + ": NumberOfPoints " + std::to_string(np) + " / NumberOfCells " +
            std::to_string(nc) + " exceed what the file can hold");
     check_memory(limits_, m.points.size() + np, m.num_cells() + nc,
@@ -575,7 +779,7 @@ MeshInput VtuFile::read() {
     const std::vector<int64_t> offsets = read_ints(oa, static_cast<std::size_t>(nc));
     const std::vector<int64_t> types = read_ints(ta, static_cast<std::size_t>(nc));
     const int64_t nconn = nc ? offsets.back() : 0;
-    if (nconn < 0 || static_cast<unsigned long long>(nconn) > bytes_.size())
+    if (nconn < 0 || static_cast<unsigned long long>(nconn) > file_size_)
       fail(where + ": the last cell offset " + std::to_string(nconn) + " is invalid");
     check_memory(limits_, m.points.size(), m.num_cells() + nc,
                  m.cell_nodes.size() + static_cast<uint64_t>(nconn), path_ + ": " + where);

@@ -8,6 +8,7 @@
 #include "test_meshes.hpp"
 
 #include <gtest/gtest.h>
+#include <zlib.h>
 
 #include <cstring>
 #include <filesystem>
@@ -75,14 +76,19 @@ TEST(VtuRoundTrip, EveryEncodingAndDegree) {
                      VtkEncoding::AppendedRaw, VtkEncoding::AppendedBase64}) {
       const std::string path = tmp.file("rt.vtu");
       write_vtu(path, in, enc);
-      const MeshInput out = read_vtu(path);
-      EXPECT_EQ(out.field_name, in.field_name);
-      ASSERT_EQ(out.points.size(), in.points.size());
-      EXPECT_EQ(0, std::memcmp(out.points.data(), in.points.data(), in.points.size() * 24));
-      EXPECT_EQ(0, std::memcmp(out.values.data(), in.values.data(), in.values.size() * 8));
-      EXPECT_EQ(out.cell_nodes, in.cell_nodes) << "degree " << d;
-      EXPECT_EQ(out.cell_degree, in.cell_degree);
-      EXPECT_EQ(out.source, path);
+      // Read whole, and with raw appended arrays read from the file one by one (what files
+      // above ReadLimits::stream_appended_above get).
+      ReadLimits streamed;
+      streamed.stream_appended_above = 0;
+      for (const MeshInput &out : {read_vtu(path), read_vtu(path, "", streamed)}) {
+        EXPECT_EQ(out.field_name, in.field_name);
+        ASSERT_EQ(out.points.size(), in.points.size());
+        EXPECT_EQ(0, std::memcmp(out.points.data(), in.points.data(), in.points.size() * 24));
+        EXPECT_EQ(0, std::memcmp(out.values.data(), in.values.data(), in.values.size() * 8));
+        EXPECT_EQ(out.cell_nodes, in.cell_nodes) << "degree " << d;
+        EXPECT_EQ(out.cell_degree, in.cell_degree);
+        EXPECT_EQ(out.source, path);
+      }
     }
   }
 }
@@ -117,10 +123,10 @@ template <class F> std::string with(F &&change) {
 }
 
 void expect_error(const TempDir &tmp, const std::string &content, const std::string &phrase,
-                  const std::string &scalar = "") {
+                  const std::string &scalar = "", const ReadLimits &limits = {}) {
   const std::string path = tmp.write("bad.vtu", content);
   try {
-    read_vtu(path, scalar);
+    read_vtu(path, scalar, limits);
     ADD_FAILURE() << "accepted a file that should fail with: " << phrase;
   } catch (const InputError &e) {
     const std::string msg = e.what();
@@ -302,17 +308,86 @@ TEST(VtuReader, BrokenBinaryData) {
   const std::size_t at = z.find("format=\"binary\">") + 60;
   z[at] = z[at] == 'A' ? 'B' : 'A';
   expect_error(tmp, z, "DataArray");
-  // Appended raw data cut short.
+  // Appended raw data cut short, read whole and read array by array from the file.
+  ReadLimits streamed;
+  streamed.stream_appended_above = 0;
   std::string raw = written(VtkEncoding::AppendedRaw);
   const std::size_t us = raw.find('_', raw.find("<AppendedData"));
-  expect_error(tmp, raw.substr(0, us + 40) + "\n</AppendedData></VTKFile>",
-               "outside the appended data");
-  expect_error(tmp, raw.substr(0, us + 40), "malformed <AppendedData>");
-  // A header claiming an enormous array.
-  std::string huge = raw;
-  const uint64_t big = uint64_t{1} << 60;
-  std::memcpy(&huge[us + 1], &big, 8);
-  expect_error(tmp, huge, "truncated binary data");
+  for (const ReadLimits &limits : {ReadLimits{}, streamed}) {
+    expect_error(tmp, raw.substr(0, us + 40) + "\n</AppendedData></VTKFile>",
+                 "outside the appended data", "", limits);
+    expect_error(tmp, raw.substr(0, us + 40), "malformed <AppendedData>", "", limits);
+    // A header claiming an enormous array.
+    std::string huge = raw;
+    const uint64_t big = uint64_t{1} << 60;
+    std::memcpy(&huge[us + 1], &big, 8);
+    expect_error(tmp, huge, "truncated binary data", "", limits);
+    // The points' header claiming more than is left, and one byte too few for a whole value.
+    const std::size_t points_at = raw.find("Name=\"Points\"");
+    ASSERT_NE(points_at, std::string::npos);
+    const std::size_t offset_at = raw.find("offset=\"", points_at) + 8;
+    const uint64_t points_offset = std::stoull(raw.substr(offset_at));
+    std::string odd = raw;
+    uint64_t bytes = 0;
+    std::memcpy(&bytes, &odd[us + 1 + points_offset], 8);
+    bytes -= 1;
+    std::memcpy(&odd[us + 1 + points_offset], &bytes, 8);
+    expect_error(tmp, odd, "not a whole number of Float64 values", "", limits);
+  }
+}
+
+TEST(VtuReader, AppendedRawZlibWholeAndStreamed) {
+  // ParaView's usual large files: zlib-compressed blocks in a raw appended section. The
+  // fixture's arrays written so (one block each, UInt32 headers), read whole and array by array
+  // from the file, give the ascii fixture's mesh; a block claiming more than the payload holds
+  // is refused before anything is read for it.
+  TempDir tmp;
+  const MeshInput expected = read_vtu(tmp.write("ascii.vtu", Fixture().text()));
+  std::string payload, arrays;
+  auto add = [&](const std::string &tag, const void *data, std::size_t bytes) {
+    uLongf csize = compressBound(static_cast<uLong>(bytes));
+    std::vector<uint8_t> z(csize);
+    ASSERT_EQ(compress2(z.data(), &csize, static_cast<const Bytef *>(data), bytes, 6), Z_OK);
+    const uint32_t header[4] = {1, static_cast<uint32_t>(bytes), static_cast<uint32_t>(bytes),
+                                static_cast<uint32_t>(csize)};
+    arrays += tag + " format=\"appended\" offset=\"" + std::to_string(payload.size()) + "\"/>\n";
+    payload.append(reinterpret_cast<const char *>(header), sizeof header);
+    payload.append(reinterpret_cast<const char *>(z.data()), csize);
+  };
+  std::vector<double> xyz;
+  for (const Vec3 &p : expected.points)
+    xyz.insert(xyz.end(), p.begin(), p.end());
+  const std::vector<int64_t> conn = {0, 1, 2, 4, 5, 6, 0, 2, 3, 6, 7, 8}, offsets = {6, 12};
+  const uint8_t types[2] = {22, 22};
+  std::string xml = "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" "
+                    "byte_order=\"LittleEndian\" header_type=\"UInt32\" "
+                    "compressor=\"vtkZLibDataCompressor\">\n<UnstructuredGrid>\n<Piece "
+                    "NumberOfPoints=\"9\" NumberOfCells=\"2\">\n<PointData>\n";
+  add("<DataArray type=\"Float64\" Name=\"T\"", expected.values.data(), 9 * 8);
+  xml += arrays + "</PointData>\n<Points>\n";
+  arrays.clear();
+  add("<DataArray type=\"Float64\" NumberOfComponents=\"3\"", xyz.data(), xyz.size() * 8);
+  xml += arrays + "</Points>\n<Cells>\n";
+  arrays.clear();
+  add("<DataArray type=\"Int64\" Name=\"connectivity\"", conn.data(), conn.size() * 8);
+  add("<DataArray type=\"Int64\" Name=\"offsets\"", offsets.data(), offsets.size() * 8);
+  add("<DataArray type=\"UInt8\" Name=\"types\"", types, 2);
+  xml += arrays + "</Cells>\n</Piece>\n</UnstructuredGrid>\n<AppendedData encoding=\"raw\">\n_";
+  const std::string file = xml + payload + "\n</AppendedData>\n</VTKFile>\n";
+  ReadLimits streamed;
+  streamed.stream_appended_above = 0;
+  for (const ReadLimits &limits : {ReadLimits{}, streamed}) {
+    const MeshInput m = read_vtu(tmp.write("z.vtu", file), "", limits);
+    EXPECT_EQ(m.points, expected.points);
+    EXPECT_EQ(m.values, expected.values);
+    EXPECT_EQ(m.cell_nodes, expected.cell_nodes);
+    EXPECT_EQ(m.cell_offsets, expected.cell_offsets);
+    // The values' block claims 2^31 compressed bytes.
+    std::string bad = file;
+    const uint32_t claim = uint32_t{1} << 31;
+    std::memcpy(&bad[xml.size() + 12], &claim, 4);
+    expect_error(tmp, bad, "compressed block 0 claims", "", limits);
+  }
 }
 
 } // namespace
