@@ -75,6 +75,9 @@ private:
   void read_at(uint64_t at, std::size_t n, void *dst) const;
   uint64_t appended_offset(const pugi::xml_node &a, std::size_t appended_size) const;
   Payload payload_from_file(uint64_t at, uint64_t avail, const pugi::xml_node &a) const;
+  uint64_t raw_array_bytes(uint64_t at, uint64_t avail, const pugi::xml_node &a) const;
+  std::size_t value_count(const pugi::xml_node &a, const TypeInfo &ti, uint64_t bytes,
+                          std::size_t expected) const;
   const TypeInfo &type_of(const pugi::xml_node &a) const;
   std::string describe(const pugi::xml_node &a) const;
   Payload binary_payload(const pugi::xml_node &a) const;
@@ -365,6 +368,35 @@ uint64_t VtuFile::appended_offset(const pugi::xml_node &a, std::size_t appended_
   return static_cast<uint64_t>(offset);
 }
 
+// The byte count in the header of a streamed file's uncompressed array at file offset `at`
+// (its data follows the header), checked against the `avail` bytes of payload from there.
+uint64_t VtuFile::raw_array_bytes(uint64_t at, uint64_t avail, const pugi::xml_node &a) const {
+  const int hs = header_size_;
+  if (avail < static_cast<uint64_t>(hs))
+    fail(describe(a) + ": truncated binary data (the header needs " + std::to_string(hs) +
+         " bytes, " + std::to_string(avail) + " available)");
+  uint8_t h[8];
+  read_at(at, hs, h);
+  const uint64_t n = read_uint(h, hs, big_endian_);
+  if (n > avail - hs)
+    fail(describe(a) + ": truncated binary data (the header claims " + std::to_string(n) +
+         " bytes, " + std::to_string(avail - hs) + " available)");
+  return n;
+}
+
+// The number of values of type ti in `bytes` bytes of a binary array, which must be whole and
+// `expected`.
+std::size_t VtuFile::value_count(const pugi::xml_node &a, const TypeInfo &ti, uint64_t bytes,
+                                 std::size_t expected) const {
+  if (bytes % ti.size != 0)
+    fail(describe(a) + ": " + std::to_string(bytes) + " bytes is not a whole number of " + ti.name +
+         " values");
+  if (bytes / ti.size != expected)
+    fail(describe(a) + " has " + std::to_string(bytes / ti.size) + " values, expected " +
+         std::to_string(expected));
+  return expected;
+}
+
 // A streamed file's raw appended array at file offset `at`, with `avail` bytes of payload from
 // there: its headers are read and checked first (as decode_blocks checks them), so that no
 // claimed size makes us read or allocate beyond the payload; then the array's bytes.
@@ -376,13 +408,7 @@ Payload VtuFile::payload_from_file(uint64_t at, uint64_t avail, const pugi::xml_
   };
   uint8_t h[3 * 8];
   if (!compressed_) {
-    if (avail < static_cast<uint64_t>(hs))
-      truncated("the header", hs);
-    read_at(at, hs, h);
-    const uint64_t n = read_uint(h, hs, big_endian_);
-    if (n > avail - hs)
-      fail(describe(a) + ": truncated binary data (the header claims " + std::to_string(n) +
-           " bytes, " + std::to_string(avail - hs) + " available)");
+    const uint64_t n = raw_array_bytes(at, avail, a);
     Payload r;
     r.owned.resize(static_cast<std::size_t>(n));
     read_at(at + hs, r.owned.size(), r.owned.data());
@@ -528,33 +554,14 @@ bool VtuFile::read_native(const pugi::xml_node &a, Scalar type, void *dst,
   if (streamed_ && !compressed_ && format == "appended") {
     // Straight from the file into dst, after the same checks.
     const uint64_t offset = appended_offset(a, appended_length_);
-    const uint64_t at = appended_begin_ + offset, avail = appended_length_ - offset;
-    const int hs = header_size_;
-    uint8_t h[8];
-    if (avail < static_cast<uint64_t>(hs))
-      fail(describe(a) + ": truncated binary data (the header needs " + std::to_string(hs) +
-           " bytes, " + std::to_string(avail) + " available)");
-    read_at(at, hs, h);
-    const uint64_t n = read_uint(h, hs, big_endian_);
-    if (n > avail - hs)
-      fail(describe(a) + ": truncated binary data (the header claims " + std::to_string(n) +
-           " bytes, " + std::to_string(avail - hs) + " available)");
-    if (n % ti.size != 0)
-      fail(describe(a) + ": " + std::to_string(n) + " bytes is not a whole number of " + ti.name +
-           " values");
-    if (n / ti.size != expected)
-      fail(describe(a) + " has " + std::to_string(n / ti.size) + " values, expected " +
-           std::to_string(expected));
-    read_at(at + hs, static_cast<std::size_t>(n), dst);
+    const uint64_t at = appended_begin_ + offset;
+    const uint64_t n = raw_array_bytes(at, appended_length_ - offset, a);
+    value_count(a, ti, n, expected);
+    read_at(at + header_size_, static_cast<std::size_t>(n), dst);
     return true;
   }
   const Payload raw = binary_payload(a);
-  if (raw.size % ti.size != 0)
-    fail(describe(a) + ": " + std::to_string(raw.size) + " bytes is not a whole number of " +
-         ti.name + " values");
-  if (raw.size / ti.size != expected)
-    fail(describe(a) + " has " + std::to_string(raw.size / ti.size) + " values, expected " +
-         std::to_string(expected));
+  value_count(a, ti, raw.size, expected);
   if (raw.size > 0)
     std::memcpy(dst, raw.data, raw.size);
   return true;
@@ -613,13 +620,7 @@ std::vector<T> VtuFile::read_array(const pugi::xml_node &a, std::size_t expected
         return out;
     }
     const Payload raw = binary_payload(a);
-    if (raw.size % ti.size != 0)
-      fail(describe(a) + ": " + std::to_string(raw.size) + " bytes is not a whole number of " +
-           ti.name + " values");
-    const std::size_t n = raw.size / ti.size;
-    if (n != expected)
-      fail(describe(a) + " has " + std::to_string(n) + " values, expected " +
-           std::to_string(expected));
+    value_count(a, ti, raw.size, expected);
     switch (ti.type) {
     case Scalar::F32:
       convert_binary<float>(raw, a, out);
