@@ -65,9 +65,24 @@ std::vector<int64_t> coincident_points(const std::vector<Vec3> &points,
   // a face also against the neighbouring cells; crowded cells (many vertices within 1e-7 of the
   // diagonal) by a fine grid of cells of one tolerance and its 27 neighbours.
   const double h = 1024 * tolerance;
+  // Each point's coarse cell, and the faces of it the point lies within the tolerance of (bit
+  // 2 ax: the lower face along axis ax, bit 2 ax + 1: the upper one), both found in one pass over
+  // the points in candidate order.
   std::vector<std::pair<Key, std::size_t>> sorted(n);
-  for (std::size_t i = 0; i < n; ++i)
-    sorted[i] = {grid_key(points[candidates[i]], lo, h), i};
+  std::vector<uint8_t> faces(n, 0);
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec3 &p = points[candidates[i]];
+    const Key key = grid_key(p, lo, h);
+    sorted[i] = {key, i};
+    for (int ax = 0; ax < 3; ++ax) {
+      const double x = p[ax] - lo[ax];
+      // Within two tolerances (a margin for the rounding of the keys).
+      if (x - 2 * tolerance < static_cast<double>(key[ax]) * h)
+        faces[i] |= static_cast<uint8_t>(1u << (2 * ax));
+      if (x + 2 * tolerance >= static_cast<double>(key[ax] + 1) * h)
+        faces[i] |= static_cast<uint8_t>(2u << (2 * ax));
+    }
+  }
   std::sort(sorted.begin(), sorted.end());
 
   // Crowded cells keep their fine-grid order for the lookups from neighbouring cells.
@@ -110,18 +125,14 @@ std::vector<int64_t> coincident_points(const std::vector<Vec3> &points,
   }
   // Points within the tolerance of a face of their coarse cell: against the neighbouring cells.
   for (const auto &[key, i] : sorted) {
-    const Vec3 &p = points[candidates[i]];
-    int lo_side[3], hi_side[3];
-    bool near = false;
-    for (int ax = 0; ax < 3; ++ax) {
-      const double x = p[ax] - lo[ax];
-      // Within two tolerances (a margin for the rounding of the keys).
-      lo_side[ax] = x - 2 * tolerance < static_cast<double>(key[ax]) * h ? -1 : 0;
-      hi_side[ax] = x + 2 * tolerance >= static_cast<double>(key[ax] + 1) * h ? 1 : 0;
-      near = near || lo_side[ax] || hi_side[ax];
-    }
-    if (!near)
+    const unsigned f = faces[i];
+    if (f == 0)
       continue;
+    int lo_side[3], hi_side[3];
+    for (int ax = 0; ax < 3; ++ax) {
+      lo_side[ax] = (f >> (2 * ax)) & 1u ? -1 : 0;
+      hi_side[ax] = (f >> (2 * ax + 1)) & 1u ? 1 : 0;
+    }
     for (int dx = lo_side[0]; dx <= hi_side[0]; ++dx)
       for (int dy = lo_side[1]; dy <= hi_side[1]; ++dy)
         for (int dz = lo_side[2]; dz <= hi_side[2]; ++dz) {

@@ -220,6 +220,37 @@ namespace {
 // coincident_points against the O(n^2) definition: random points, some in clusters closer than
 // the tolerance (crowded cells of more than 64 points among them), some straddling the grid's
 // cell faces at distances just below and above the tolerance, in 2D and 3D.
+TEST(DuplicatePoints, CoincidentPointsAcrossCoarseCellCorners) {
+  // Pairs 0.85 tolerance apart straddling a corner of the coarse grid (cells of 1024
+  // tolerances from the smallest coordinates, here those of the first point) with mixed signs:
+  // one point lies above the corner along one axis and below it along another, so it is near an
+  // upper face of its cell and a lower face, and only checking both sides finds its partner.
+  std::mt19937_64 rng(13);
+  const double tol = 1e-6, h = 1024 * tol;
+  std::vector<Vec3> pts = {{-2, -2, -2}};
+  for (int i = 0; i < 60; ++i) {
+    Vec3 corner;
+    for (int ax = 0; ax < 3; ++ax)
+      corner[ax] = -2 + h * static_cast<double>(100 + rng() % 3000);
+    const int a = i % 3, b = (i + 1) % 3; // the two axes with opposite offsets
+    Vec3 p = corner, q = corner;
+    p[a] -= 0.3 * tol;
+    p[b] += 0.3 * tol;
+    q[a] += 0.3 * tol;
+    q[b] -= 0.3 * tol;
+    pts.push_back(p);
+    pts.push_back(q);
+  }
+  std::vector<int64_t> cand(pts.size());
+  std::iota(cand.begin(), cand.end(), 0);
+  const std::vector<int64_t> got = coincident_points(pts, cand, tol);
+  EXPECT_EQ(got[0], 0);
+  for (std::size_t i = 1; i < pts.size(); i += 2) {
+    EXPECT_EQ(got[i], static_cast<int64_t>(i)) << "pair " << i / 2;
+    EXPECT_EQ(got[i + 1], static_cast<int64_t>(i)) << "pair " << i / 2;
+  }
+}
+
 TEST(DuplicatePoints, CoincidentPointsMatchBruteForce) {
   std::mt19937_64 rng(11);
   std::uniform_real_distribution<double> U(-1, 1);
