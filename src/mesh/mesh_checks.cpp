@@ -1,6 +1,7 @@
 #include "mesh/mesh_checks.hpp"
 
 #include "mesh/duplicate_points.hpp"
+#include "poly/lagrange_to_bernstein.hpp"
 #include "poly/lattice.hpp"
 
 #include <algorithm>
@@ -82,6 +83,14 @@ bool check_input(const MeshInput &in, ProblemLog &problems) {
       problems.add("bad cell", Severity::Error,
                    "cell " + std::to_string(c) + " has degree " + std::to_string(d) + " but " +
                        std::to_string(n) + " nodes");
+      ok = false;
+      continue;
+    }
+    // The conversions to Bernstein form (and the per-edge buffers of Field) stop at kMaxDegree.
+    if (d > kMaxDegree) {
+      problems.add("unsupported degree", Severity::Error,
+                   "cell " + std::to_string(c) + " has degree " + std::to_string(d) + " (at most " +
+                       std::to_string(kMaxDegree) + " supported)");
       ok = false;
       continue;
     }

@@ -23,8 +23,16 @@ double bernstein_value(std::span<const double> c, double t) {
         for (int i = 0; i <= D.value - r; ++i)
           w[i] = s * w[i] + t * w[i + 1];
       return w[0];
-    } else {
-      std::vector<double> w(c.begin(), c.end());
+    } else { // a stack buffer up to degree 31, the heap only above
+      double buf[32];
+      std::vector<double> heap;
+      double *w = buf;
+      if (n + 1 > 32) {
+        heap.assign(c.begin(), c.end());
+        w = heap.data();
+      } else {
+        std::copy(c.begin(), c.end(), w);
+      }
       for (int r = 1; r <= n; ++r)
         for (int i = 0; i <= n - r; ++i)
           w[i] = s * w[i] + t * w[i + 1];

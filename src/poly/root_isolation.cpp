@@ -50,8 +50,16 @@ void value_and_slope(const double *c, int n, double t, double &value, double &sl
           w[i] = s * w[i] + t * w[i + 1];
       value = s * w[0] + t * w[1];
       slope = m * (w[1] - w[0]);
-    } else {
-      std::vector<double> w(c, c + n + 1);
+    } else { // a stack buffer up to degree 31, the heap only above
+      double buf[32];
+      std::vector<double> heap;
+      double *w = buf;
+      if (n + 1 > 32) {
+        heap.assign(c, c + n + 1);
+        w = heap.data();
+      } else {
+        std::copy(c, c + n + 1, w);
+      }
       for (int r = 1; r < n; ++r)
         for (int i = 0; i <= n - r; ++i)
           w[i] = s * w[i] + t * w[i + 1];

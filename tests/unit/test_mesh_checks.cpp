@@ -2,6 +2,8 @@
 #include "error.hpp"
 #include "mesh/duplicate_points.hpp"
 #include "mesh/mesh.hpp"
+#include "poly/lagrange_to_bernstein.hpp"
+#include "poly/lattice.hpp"
 #include "test_meshes.hpp"
 
 #include <gtest/gtest.h>
@@ -122,6 +124,26 @@ TEST(MeshChecks, ComponentsAndOrientation) {
   EXPECT_FALSE(mobius.topology.orientable());
   EXPECT_EQ(mobius.problems.count("non-orientable surface"), 1) << mobius.problems.summary();
   EXPECT_EQ(mobius.topology.components(), 1);
+}
+
+TEST(MeshChecks, DegreeAboveTheLimitIsRefused) {
+  // A degree-21 cell (253 nodes) from a caller that built the MeshInput itself: a clear error,
+  // before any conversion or per-edge buffer sized for degree 20 sees it.
+  const int d = kMaxDegree + 1;
+  MeshInput m;
+  for (int i = 0; i < lattice_size(d); ++i) {
+    const auto q = lattice_point(d, i);
+    m.points.push_back({static_cast<double>(q[0]) / d, static_cast<double>(q[1]) / d, 0});
+    m.values.push_back(static_cast<double>(q[0] * q[1]));
+  }
+  std::vector<int64_t> nodes(static_cast<std::size_t>(lattice_size(d)));
+  std::iota(nodes.begin(), nodes.end(), 0);
+  m.add_cell(d, nodes.data());
+  const Mesh r = build_mesh(m, {false});
+  EXPECT_TRUE(message_contains(r, "unsupported degree", "cell 0 has degree 21"))
+      << r.problems.summary();
+  EXPECT_FALSE(r.complete);
+  EXPECT_THROW(build_mesh(m), Error);
 }
 
 TEST(MeshChecks, NonManifoldEdge) {
