@@ -11,6 +11,7 @@
 
 #include <array>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 namespace hoct {
@@ -31,6 +32,8 @@ public:
   int vertex_corner(int64_t v) const { return vertex_corner_[v]; }
   const std::array<int64_t, 3> &cell_vertices(int64_t c) const { return cell_vertices_[c]; }
   const std::array<int64_t, 2> &edge_vertices(int64_t e) const { return edge_vertices_[e]; }
+  // Every edge's (lo, hi), by edge id.
+  std::span<const std::array<int64_t, 2>> all_edge_vertices() const { return edge_vertices_; }
   int64_t cell_edge(int64_t c, int k) const { return cell_edges_[c][k]; }
   bool edge_reversed(int64_t c, int k) const { return (cell_edge_reversed_[c] >> k) & 1u; }
 

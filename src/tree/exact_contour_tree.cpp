@@ -249,9 +249,10 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
     unresolved_zeros += ch.unresolved;
   }
   const int64_t interior_nodes = next - edge_base - static_cast<int64_t>(en.nodes.size());
-  // Large arrays, filled in parallel without being zeroed first; room for the edge chains.
+  // Large arrays, filled in parallel without being zeroed first.
   // The graph's edges: the cells' lower connections in the join graph only, their upper ones in
-  // the split graph only; the edge chains and the fallback cells' sub-edges in both (stored once).
+  // the split graph only; the edge chains and the fallback cells' sub-edges in both (stored once;
+  // the chains listed only with arc geometry).
   const std::size_t chain_edges = static_cast<std::size_t>(ne + en.offset[ne]);
   UninitializedVector<GraphEdge> join_edges, split_edges, common_edges;
   join_edges.resize(cell_join);
@@ -268,9 +269,9 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
   std::vector<double> values;
   values.reserve(static_cast<std::size_t>(next) + fallback_room);
   values.resize(static_cast<std::size_t>(next));
-  // The chains, and each fallback cell's 3 K^2 sub-edges plus the pieces its lattice nodes add.
-  common_edges.reserve(chain_edges + fallback_room / static_cast<std::size_t>(lattice_size(K)) *
-                                         static_cast<std::size_t>(3 * K * K + 3 * K));
+  // Each fallback cell's 3 K^2 sub-edges plus the pieces its lattice nodes add.
+  common_edges.reserve(fallback_room / static_cast<std::size_t>(lattice_size(K)) *
+                       static_cast<std::size_t>(3 * K * K + 3 * K));
   // Where each node lies: vertices and edge nodes are looked up from the mesh and the edge
   // nodes when asked for (only tree nodes, and graph nodes with arc geometry, ask; an array for
   // millions of graph nodes cost more to fill than its few lookups save), the interior and
@@ -429,36 +430,17 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
       std::sort(chain.begin(), chain.end());
   };
   std::vector<std::pair<double, int64_t>> chain;
+  // Without geometry the sweeps walk the edge chains themselves (EdgeChains: no list of their
+  // pieces in memory), except on the few edges with fallback lattice nodes, whose chains are
+  // listed here and skipped there.
+  std::vector<int64_t> listed_chains;
   if (!opt.arc_geometry) {
-    // Edge e adds count(e) + 1 pieces at a known offset: written in parallel. The few edges
-    // with fallback lattice nodes then get their own chain: its first count(e) + 1 pieces in
-    // those slots, the rest appended.
-    const std::size_t base = common_edges.size();
-    common_edges.resize(base + chain_edges);
-    parallel_for(ne, gather_threads(ne), [&](int64_t begin, int64_t end, int) {
-      for (int64_t e = begin; e < end; ++e) {
-        std::size_t slot = static_cast<std::size_t>(e + en.offset[e]);
-        int64_t prev = topo.edge_vertices(e)[0];
-        for (int64_t i = en.offset[e]; i <= en.offset[e + 1]; ++i) {
-          const int64_t cur = i < en.offset[e + 1] ? edge_base + i : topo.edge_vertices(e)[1];
-          common_edges[base + slot] = {prev, cur};
-          ++slot;
-          prev = cur;
-        }
-      }
-    });
     for (std::size_t l = 0; l < lattice_on_edge.size();) {
       const int64_t e = std::get<0>(lattice_on_edge[l]);
       chain_of(e, l, chain);
-      const std::size_t slots = static_cast<std::size_t>(en.offset[e + 1] - en.offset[e] + 1);
-      const std::size_t slot = base + static_cast<std::size_t>(e + en.offset[e]);
-      for (std::size_t i = 0; i + 1 < chain.size(); ++i) {
-        const GraphEdge piece{chain[i].second, chain[i + 1].second};
-        if (i < slots)
-          common_edges[slot + i] = piece;
-        else
-          common_edges.push_back(piece);
-      }
+      listed_chains.push_back(e);
+      for (std::size_t i = 0; i + 1 < chain.size(); ++i)
+        common_edges.push_back({chain[i].second, chain[i + 1].second});
     }
   } else {
     // With geometry: every chain piece with three interior points, edge by edge.
@@ -511,8 +493,13 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
   const int sweep_threads = threads_for(static_cast<int64_t>(values.size()),
                                         thread_count(opt.threads), 8 * opt.cells_per_thread);
   SweepTimings sweep_time;
-  const ContourTree ct = sweep_contour_tree(values, {common_edges, join_edges, split_edges},
-                                            opt.augmented, sweep_threads, &sweep_time);
+  SweepEdges sweep_edges{common_edges, join_edges, split_edges};
+  if (!opt.arc_geometry)
+    sweep_edges.chains = {topo.all_edge_vertices(),
+                          std::span<const int64_t>(en.offset.data(), en.offset.size()), edge_base,
+                          listed_chains};
+  const ContourTree ct =
+      sweep_contour_tree(values, sweep_edges, opt.augmented, sweep_threads, &sweep_time);
   if (opt.progress) {
     opt.progress("join and split sweeps", sweep_time.order + sweep_time.sweeps);
     opt.progress("merge", sweep_time.merge);

@@ -49,24 +49,45 @@ template <class I> SweepScratch<I> &thread_scratch() {
   return scratch;
 }
 
-// The sweep upwards over ranks 0..n-1 of the graph whose edges (all lists), mapped to ranks by
-// `to_rank`, connect each rank to its lower neighbours: when a component meets the current rank,
-// the component's highest node so far gets the current rank as its parent.
+// Calls f(a, b) for every piece of every chain not skipped.
+template <class F> void for_each_chain_piece(const EdgeChains &chains, const F &f) {
+  const int64_t count = static_cast<int64_t>(chains.ends.size());
+  std::size_t s = 0;
+  for (int64_t i = 0; i < count; ++i) {
+    if (s < chains.skip.size() && chains.skip[s] == i) {
+      ++s;
+      continue;
+    }
+    int64_t prev = chains.ends[i][0];
+    for (int64_t k = chains.offset[i]; k < chains.offset[i + 1]; ++k) {
+      f(prev, chains.first + k);
+      prev = chains.first + k;
+    }
+    f(prev, chains.ends[i][1]);
+  }
+}
+
+// The sweep upwards over ranks 0..n-1 of the graph whose edges (all lists and the chains),
+// mapped to ranks by `to_rank`, connect each rank to its lower neighbours: when a component meets
+// the current rank, the component's highest node so far gets the current rank as its parent.
 template <class I, class ToRank>
 RankTree<I> sweep_up(int64_t n, std::initializer_list<std::span<const GraphEdge>> lists,
-                     const ToRank &to_rank, SweepScratch<I> &scratch) {
+                     const EdgeChains &chains, const ToRank &to_rank, SweepScratch<I> &scratch) {
   // Ranks are scattered at random over the mesh, so the edges are first distributed (as
   // (higher, lower) rank pairs) into windows of 4096 ranks; each window's pairs are then sorted
   // by higher rank with their counters in cache, and its ranks swept.
   constexpr int kWindowBits = 12;
   const int64_t windows = (n >> kWindowBits) + 1;
   std::vector<int64_t> window_start(windows + 1, 0);
+  auto count = [&](int64_t a, int64_t b) {
+    const I ra = to_rank(a), rb = to_rank(b);
+    if (ra != rb)
+      ++window_start[(std::max(ra, rb) >> kWindowBits) + 1];
+  };
   for (std::span<const GraphEdge> edges : lists)
-    for (const GraphEdge &e : edges) {
-      const I ra = to_rank(e.a), rb = to_rank(e.b);
-      if (ra != rb)
-        ++window_start[(std::max(ra, rb) >> kWindowBits) + 1];
-    }
+    for (const GraphEdge &e : edges)
+      count(e.a, e.b);
+  for_each_chain_piece(chains, count);
   for (int64_t w = 1; w <= windows; ++w)
     window_start[w] += window_start[w - 1];
   const std::size_t m = static_cast<std::size_t>(window_start[windows]);
@@ -74,15 +95,18 @@ RankTree<I> sweep_up(int64_t n, std::initializer_list<std::span<const GraphEdge>
   pairs.resize(2 * m);
   {
     std::vector<int64_t> fill(window_start.begin(), window_start.end() - 1);
-    for (std::span<const GraphEdge> edges : lists)
-      for (const GraphEdge &e : edges) {
-        const I ra = to_rank(e.a), rb = to_rank(e.b);
-        if (ra != rb) {
-          I *p = &pairs[2 * fill[std::max(ra, rb) >> kWindowBits]++];
-          p[0] = std::max(ra, rb);
-          p[1] = std::min(ra, rb);
-        }
+    auto place = [&](int64_t a, int64_t b) {
+      const I ra = to_rank(a), rb = to_rank(b);
+      if (ra != rb) {
+        I *p = &pairs[2 * fill[std::max(ra, rb) >> kWindowBits]++];
+        p[0] = std::max(ra, rb);
+        p[1] = std::min(ra, rb);
       }
+    };
+    for (std::span<const GraphEdge> edges : lists)
+      for (const GraphEdge &e : edges)
+        place(e.a, e.b);
+    for_each_chain_piece(chains, place);
   }
   RankTree<I> t;
   t.parent.resize(static_cast<std::size_t>(n));
@@ -147,6 +171,31 @@ void check_edges(std::span<const GraphEdge> edges, int64_t n) {
       throw std::out_of_range("sweep_contour_tree: edge endpoint out of range");
 }
 
+void check_chains(const EdgeChains &c, int64_t n) {
+  const std::size_t count = c.ends.size();
+  if (count == 0 && c.skip.empty())
+    return;
+  if (c.offset.size() != count + 1)
+    throw std::invalid_argument("sweep_contour_tree: chain offsets do not match the chains");
+  for (std::size_t i = 0; i < count; ++i)
+    if (c.offset[i + 1] < c.offset[i])
+      throw std::invalid_argument("sweep_contour_tree: chain offsets not ascending");
+  if (c.offset[0] < 0 || c.first < 0 || c.first > n - c.offset[count])
+    throw std::out_of_range("sweep_contour_tree: chain node out of range");
+  for (const auto &e : c.ends)
+    if (e[0] < 0 || e[1] < 0 || e[0] >= n || e[1] >= n)
+      throw std::out_of_range("sweep_contour_tree: chain end out of range");
+  for (std::size_t i = 1; i < c.skip.size(); ++i)
+    if (c.skip[i] <= c.skip[i - 1])
+      throw std::invalid_argument("sweep_contour_tree: skipped chains not ascending");
+}
+
+// The number of chain pieces (an upper bound where chains are skipped).
+std::size_t chain_pieces(const EdgeChains &c) {
+  return c.ends.empty() ? 0
+                        : c.ends.size() + static_cast<std::size_t>(c.offset.back() - c.offset[0]);
+}
+
 template <class I>
 ContourTree sweep_ranked(std::span<const double> values, const SweepEdges &edges, bool augmented,
                          int threads, SweepTimings *timings) {
@@ -162,18 +211,19 @@ ContourTree sweep_ranked(std::span<const double> values, const SweepEdges &edges
   const I last = static_cast<I>(n - 1);
   RankTree<I> join, split;
   const int sweep_threads = std::min(threads, 2);
-  const std::size_t max_edges =
-      edges.common.size() + std::max(edges.join_only.size(), edges.split_only.size());
+  const std::size_t max_edges = edges.common.size() + chain_pieces(edges.chains) +
+                                std::max(edges.join_only.size(), edges.split_only.size());
   parallel_for(2, sweep_threads, [&](int64_t begin, int64_t end, int) {
     SweepScratch<I> &s = thread_scratch<I>();
     s.reserve(n, max_edges);
     for (int64_t k = begin; k < end; ++k)
       if (k == 0)
         join = sweep_up<I>(
-            n, {edges.common, edges.join_only}, [&](int64_t v) { return rank[v]; }, s);
+            n, {edges.common, edges.join_only}, edges.chains, [&](int64_t v) { return rank[v]; },
+            s);
       else
         split = sweep_up<I>(
-            n, {edges.common, edges.split_only},
+            n, {edges.common, edges.split_only}, edges.chains,
             [&](int64_t v) { return static_cast<I>(last - rank[v]); }, s);
     if (s.bytes() > kKeptScratchBytes)
       s = {};
@@ -256,9 +306,10 @@ ContourTree sweep_contour_tree(std::span<const double> values, const SweepEdges 
   const int64_t n = static_cast<int64_t>(values.size());
   for (auto list : {edges.common, edges.join_only, edges.split_only})
     check_edges(list, n);
+  check_chains(edges.chains, n);
   // 32-bit ranks and offsets where every rank and every edge count fits.
-  const std::size_t m =
-      edges.common.size() + std::max(edges.join_only.size(), edges.split_only.size());
+  const std::size_t m = edges.common.size() + chain_pieces(edges.chains) +
+                        std::max(edges.join_only.size(), edges.split_only.size());
   if (n < (int64_t{1} << 31) - 1 && m < (std::size_t{1} << 31) - 1)
     return sweep_ranked<int32_t>(values, edges, augmented, threads, timings);
   return sweep_ranked<int64_t>(values, edges, augmented, threads, timings);
@@ -268,6 +319,7 @@ ContourTree sweep_contour_tree_wide(std::span<const double> values, const SweepE
                                     bool augmented, int threads) {
   for (auto list : {edges.common, edges.join_only, edges.split_only})
     check_edges(list, static_cast<int64_t>(values.size()));
+  check_chains(edges.chains, static_cast<int64_t>(values.size()));
   return sweep_ranked<int64_t>(values, edges, augmented, threads, nullptr);
 }
 

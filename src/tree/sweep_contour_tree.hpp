@@ -9,16 +9,30 @@
 #include "tree/node_order.hpp"
 #include "tree/scalar_graph.hpp"
 
+#include <array>
 #include <cstdint>
 #include <span>
 #include <vector>
 
 namespace hoct {
 
-// The graph's edges: `common` ones in both sweeps, `join_only` in the join sweep, `split_only`
-// in the split sweep (self-loops and duplicates are allowed).
+// Chains of nodes along lines (the exact tree's mesh edges with their edge nodes), whose
+// consecutive nodes are edges of both sweeps, without a list of those edges in memory: chain i
+// runs from ends[i][0] through nodes first + offset[i] .. first + offset[i + 1] - 1 to
+// ends[i][1]. Chains listed in `skip` (ascending) are left out; their caller lists their pieces
+// itself.
+struct EdgeChains {
+  std::span<const std::array<int64_t, 2>> ends;
+  std::span<const int64_t> offset; // ends.size() + 1 entries, ascending (or none without ends)
+  int64_t first = 0;
+  std::span<const int64_t> skip;
+};
+
+// The graph's edges: `common` ones and the chains' pieces in both sweeps, `join_only` in the
+// join sweep, `split_only` in the split sweep (self-loops and duplicates are allowed).
 struct SweepEdges {
   std::span<const GraphEdge> common, join_only, split_only;
+  EdgeChains chains = {};
 };
 
 struct SweepTimings {

@@ -9,8 +9,11 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <random>
+#include <span>
+#include <stdexcept>
 
 namespace hoct {
 namespace {
@@ -125,6 +128,76 @@ TEST(SweepContourTree, MatchesTheScalarGraphPathOnRandomGraphs) {
             expected);
       }
   }
+}
+
+// Chains (the exact tree's mesh edges with their edge nodes) walked by the sweeps against the
+// same pieces listed as common edges: random graphs whose common edges become chains through 0-3
+// new nodes each (values strictly monotone from one end to the other, so that the join and split
+// shortcuts still follow monotone paths), some chains skipped and listed instead (their ends in
+// the chains say a node of their own, isolated otherwise: walking a skipped chain would show).
+TEST(SweepContourTree, ChainsEqualTheirListedPieces) {
+  std::mt19937_64 rng(5);
+  for (int trial = 0; trial < 100; ++trial) {
+    RandomGraph g = random_graph(rng, 1 + static_cast<int>(rng() % 2), trial % 2 ? 4 : 1000);
+    const int64_t first = static_cast<int64_t>(g.values.size());
+    std::vector<std::array<int64_t, 2>> ends;
+    std::vector<int64_t> offset{0}, skip;
+    std::vector<GraphEdge> pieces, kept; // all chain pieces; the skipped chains' pieces
+    const std::size_t old_nodes = g.values.size();
+    for (const GraphEdge &e : g.common) {
+      const double va = g.values[e.a], vb = g.values[e.b];
+      const int inner = va == vb ? 0 : static_cast<int>(rng() % 4);
+      const bool skipped = rng() % 5 == 0;
+      if (skipped)
+        skip.push_back(static_cast<int64_t>(ends.size()));
+      ends.push_back({e.a, skipped ? int64_t{-1} : e.b}); // -1: the isolated node, set below
+      int64_t prev = e.a;
+      for (int k = 0; k < inner; ++k) {
+        const int64_t id = first + offset.back() + k;
+        g.values.push_back(va + (vb - va) * (k + 1) / (inner + 1));
+        (skipped ? kept : pieces).push_back({prev, id});
+        prev = id;
+      }
+      (skipped ? kept : pieces).push_back({prev, e.b});
+      offset.push_back(offset.back() + inner);
+    }
+    ASSERT_EQ(g.values.size(), old_nodes + static_cast<std::size_t>(offset.back()));
+    const int64_t isolated = static_cast<int64_t>(g.values.size());
+    g.values.push_back(0.25);
+    for (auto &e : ends)
+      if (e[1] < 0)
+        e[1] = isolated;
+    RandomGraph listed_graph = g;
+    listed_graph.common = pieces;
+    listed_graph.common.insert(listed_graph.common.end(), kept.begin(), kept.end());
+    SweepEdges chains{kept, g.join, g.split, {ends, offset, first, skip}};
+    for (bool augmented : {false, true})
+      for (int threads : {1, 2}) {
+        SCOPED_TRACE(testing::Message()
+                     << "trial " << trial << " augmented " << augmented << " threads " << threads);
+        const ContourTree expected = reference(listed_graph, augmented);
+        expect_same(sweep_contour_tree(g.values, chains, augmented, threads), expected);
+        expect_same(sweep_contour_tree_wide(g.values, chains, augmented, threads), expected);
+      }
+  }
+}
+
+TEST(SweepContourTree, RejectsInconsistentChains) {
+  const std::vector<double> values{0, 1, 2, 3};
+  const std::vector<std::array<int64_t, 2>> ends{{0, 1}, {1, 2}}, far{{0, 4}, {1, 2}};
+  const std::vector<int64_t> offset{0, 1, 2}, short_offset{0, 1}, descending{0, 2, 1},
+      too_many{0, 1, 3}, skip_twice{1, 1};
+  auto run = [&](std::span<const std::array<int64_t, 2>> e, std::span<const int64_t> o,
+                 int64_t first, std::span<const int64_t> skip = {}) {
+    return sweep_contour_tree(values, {{}, {}, {}, {e, o, first, skip}}, false);
+  };
+  EXPECT_NO_THROW(run(ends, offset, 2));
+  EXPECT_THROW(run(ends, short_offset, 2), std::invalid_argument);
+  EXPECT_THROW(run(ends, descending, 2), std::invalid_argument);
+  EXPECT_THROW(run(ends, too_many, 2), std::out_of_range); // nodes 2..4 of 4
+  EXPECT_THROW(run(ends, offset, 3), std::out_of_range);   // nodes 3..4 of 4
+  EXPECT_THROW(run(far, offset, 2), std::out_of_range);    // an end beyond the nodes
+  EXPECT_THROW(run(ends, offset, 2, skip_twice), std::invalid_argument);
 }
 
 TEST(SweepContourTree, LargeGraphOnTwoThreadsMatches) {
