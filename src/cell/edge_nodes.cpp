@@ -16,7 +16,7 @@ namespace {
 // (the derivative neither constant at rounding level nor near zero anywhere, the test
 // find_roots starts with). The rest works in per-thread buffers: no allocation per edge.
 uint8_t edge_nodes_of(std::span<const double> p, double value_scale, const EdgeNodeOptions &opt,
-                      std::vector<EdgeNode> &nodes) {
+                      UninitializedVector<EdgeNode> &nodes) {
   uint8_t deg = kEdgeOk;
   const int n = static_cast<int>(p.size()) - 1;
   if (n < 1)
@@ -85,7 +85,7 @@ EdgeNodes find_edge_nodes(const Topology &topo, const Field &field, const EdgeNo
   // the thread count, and there are a few growing buffers instead of one per block.
   const int64_t blocks = std::max<int64_t>(1, std::min<int64_t>(ne, 256));
   const int threads = std::max(1, opt.threads);
-  std::vector<std::vector<EdgeNode>> worker_nodes(static_cast<std::size_t>(threads));
+  std::vector<UninitializedVector<EdgeNode>> worker_nodes(static_cast<std::size_t>(threads));
   struct BlockSource {
     int worker;
     std::size_t begin, count;
@@ -93,7 +93,7 @@ EdgeNodes find_edge_nodes(const Topology &topo, const Field &field, const EdgeNo
   std::vector<BlockSource> source(static_cast<std::size_t>(blocks));
   out.offset[0] = 0;
   parallel_for(blocks, threads, [&](int64_t b0, int64_t b1, int worker) {
-    std::vector<EdgeNode> &nodes = worker_nodes[static_cast<std::size_t>(worker)];
+    UninitializedVector<EdgeNode> &nodes = worker_nodes[static_cast<std::size_t>(worker)];
     for (int64_t b = b0; b < b1; ++b) {
       const std::size_t begin = nodes.size();
       for (int64_t e = ne * b / blocks; e < ne * (b + 1) / blocks; ++e) {
@@ -107,7 +107,15 @@ EdgeNodes find_edge_nodes(const Topology &topo, const Field &field, const EdgeNo
   std::vector<int64_t> block_base(blocks + 1, 0);
   for (int64_t b = 0; b < blocks; ++b)
     block_base[b + 1] = block_base[b] + static_cast<int64_t>(source[b].count);
-  out.nodes.resize(static_cast<std::size_t>(block_base[blocks]));
+  // One worker's buffer holding every block in order (one thread) becomes the list itself.
+  bool in_order = true;
+  for (int64_t b = 0; b < blocks; ++b)
+    in_order = in_order && source[b].worker == 0 &&
+               source[b].begin == static_cast<std::size_t>(block_base[b]);
+  if (in_order)
+    out.nodes = std::move(worker_nodes[0]);
+  else
+    out.nodes.resize(static_cast<std::size_t>(block_base[blocks]));
   parallel_for(blocks, threads_for(ne, opt.threads, 65536), [&](int64_t b0, int64_t b1, int) {
     for (int64_t b = b0; b < b1; ++b) {
       int64_t sum = block_base[b];
@@ -116,6 +124,8 @@ EdgeNodes find_edge_nodes(const Topology &topo, const Field &field, const EdgeNo
         out.offset[e + 1] = sum;
       }
       const BlockSource &src = source[b];
+      if (in_order)
+        continue;
       const auto from = worker_nodes[static_cast<std::size_t>(src.worker)].begin() +
                         static_cast<std::ptrdiff_t>(src.begin);
       std::copy(from, from + static_cast<std::ptrdiff_t>(src.count),

@@ -30,7 +30,7 @@ enum EdgeDegeneracy : uint8_t {
 
 struct EdgeNodes {
   UninitializedVector<int64_t> offset;     // nodes of edge e: nodes[offset[e] .. offset[e+1])
-  std::vector<EdgeNode> nodes;             // ascending t within each edge
+  UninitializedVector<EdgeNode> nodes;     // ascending t within each edge
   UninitializedVector<uint8_t> degeneracy; // EdgeDegeneracy bits per edge
 
   int64_t count(int64_t e) const { return offset[e + 1] - offset[e]; }

@@ -7,6 +7,7 @@
 #include "poly/lattice.hpp"
 #include "tree/contour_tree.hpp"
 #include "tree/sweep_contour_tree.hpp"
+#include "util/page_pool.hpp"
 #include "util/parallel_for.hpp"
 #include "util/uninitialized_vector.hpp"
 
@@ -57,9 +58,9 @@ struct alignas(64) CellChunk {
     Vec2 uv;
     double value;
   };
-  std::vector<Node> nodes; // interior critical points of the chunk's regular cells, in cell order
+  UninitializedVector<Node> nodes; // interior critical points of the chunk's cells, in cell order
   // Connections; node refs >= 0 are global ids, -1 - i is the chunk's i-th interior node.
-  std::vector<GraphEdge> join, split;
+  UninitializedVector<GraphEdge> join, split;
   std::vector<GeoEdge> geo; // with arc geometry: each connection's path (per cell join, split)
   int64_t unresolved = 0;   // uncertified interior zeros
   PathCounters counters;
@@ -156,6 +157,8 @@ uint8_t connect_cell(const Mesh &mesh, const EdgeNodes &en, int64_t c, bool have
 } // namespace
 
 TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
+  // Large arrays freed by one phase give their pages to the next.
+  const PageReuseScope reuse_pages;
   const auto t0 = clock_type::now();
   const Topology &topo = mesh.topology;
   const Field &field = mesh.field;
@@ -177,7 +180,8 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
   // certified connections of every regular cell. Cells go in fixed contiguous chunks, each
   // collecting its interior nodes and connections in flat buffers; combined in chunk (= cell)
   // order, the result does not depend on the thread count.
-  std::vector<uint8_t> fallback(nc, 0);
+  UninitializedVector<uint8_t> fallback; // every cell's entry is written below
+  fallback.resize(static_cast<std::size_t>(nc));
   const int threads = threads_for(nc, thread_count(opt.threads), opt.cells_per_thread);
   const int64_t chunks = threads > 1 ? std::min<int64_t>(nc, int64_t{threads} * 16) : 1;
   std::vector<CellChunk> chunk_out(static_cast<std::size_t>(chunks));
@@ -266,7 +270,7 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
       static_cast<std::size_t>(
           std::count_if(fallback.begin(), fallback.end(), [](uint8_t f) { return f != 0; })) *
       static_cast<std::size_t>(lattice_size(K));
-  std::vector<double> values;
+  UninitializedVector<double> values;
   values.reserve(static_cast<std::size_t>(next) + fallback_room);
   values.resize(static_cast<std::size_t>(next));
   // Each fallback cell's 3 K^2 sub-edges plus the pieces its lattice nodes add.
@@ -535,7 +539,8 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
       const NodeSource where = source_of(static_cast<int64_t>(v));
       positions[v] = mesh.geometry.position(where.cell, where.uv[0], where.uv[1]);
     }
-    auto graph = std::make_shared<GeometricGraph>(std::move(positions), values);
+    auto graph = std::make_shared<GeometricGraph>(
+        std::move(positions), std::vector<double>(values.begin(), values.end()));
     for (const auto &e : geo_edges)
       graph->add_edge(e.a, e.b, e.inner);
     graph->finish();

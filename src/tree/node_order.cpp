@@ -75,6 +75,12 @@ void sort_items(Item *a, Item *b, std::size_t n, bool to_b) {
 } // namespace
 
 std::vector<int64_t> ascending_order(std::span<const double> values) {
+  std::vector<int64_t> order(values.size());
+  ascending_order(values, order);
+  return order;
+}
+
+void ascending_order(std::span<const double> values, std::span<int64_t> order) {
   const std::size_t n = values.size();
   UninitializedVector<Item> a, b;
   a.resize(n);
@@ -85,10 +91,8 @@ std::vector<int64_t> ascending_order(std::span<const double> values) {
     sort_items(a.data(), b.data(), n, false);
   else
     std::sort(a.begin(), a.end(), item_less);
-  std::vector<int64_t> order(n);
   for (std::size_t i = 0; i < n; ++i)
     order[i] = a[i].id;
-  return order;
 }
 
 } // namespace hoct

@@ -12,5 +12,7 @@ namespace hoct {
 // The nodes in ascending total order: ascending[r] is the node of rank r. Values must not be
 // NaN (inputs are checked for it).
 std::vector<int64_t> ascending_order(std::span<const double> values);
+// The same into `out` (values.size() entries).
+void ascending_order(std::span<const double> values, std::span<int64_t> out);
 
 } // namespace hoct

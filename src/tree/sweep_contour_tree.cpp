@@ -1,5 +1,6 @@
 #include "tree/sweep_contour_tree.hpp"
 
+#include "util/page_pool.hpp"
 #include "util/parallel_for.hpp"
 #include "util/uninitialized_vector.hpp"
 
@@ -22,7 +23,7 @@ double seconds(clock_type::time_point a, clock_type::time_point b) {
 // children[r] counts the ranks whose parent is r.
 template <class I> struct RankTree {
   UninitializedVector<I> parent;
-  std::vector<int32_t> children;
+  UninitializedVector<int32_t> children;
 };
 
 // Scratch memory of the sweeps on one thread, kept for its next sweep: first touching fresh
@@ -49,21 +50,29 @@ template <class I> SweepScratch<I> &thread_scratch() {
   return scratch;
 }
 
-// Calls f(a, b) for every piece of every chain not skipped.
-template <class F> void for_each_chain_piece(const EdgeChains &chains, const F &f) {
+// Calls f(rank of a, rank of b) for every piece (a, b) of every chain not skipped (each node's
+// rank looked up once), in runs of chains between skipped ones.
+template <class ToRank, class F>
+void for_each_chain_piece(const EdgeChains &chains, const ToRank &to_rank, const F &f) {
   const int64_t count = static_cast<int64_t>(chains.ends.size());
-  std::size_t s = 0;
-  for (int64_t i = 0; i < count; ++i) {
-    if (s < chains.skip.size() && chains.skip[s] == i) {
-      ++s;
-      continue;
+  const int64_t *offset = chains.offset.data();
+  const std::array<int64_t, 2> *ends = chains.ends.data();
+  int64_t i = 0;
+  for (std::size_t s = 0; s <= chains.skip.size(); ++s) {
+    const int64_t stop = s < chains.skip.size() ? chains.skip[s] : count;
+    int64_t lo = i < count ? offset[i] : 0;
+    for (; i < stop; ++i) {
+      const int64_t hi = offset[i + 1];
+      auto prev = to_rank(ends[i][0]);
+      for (int64_t k = lo; k < hi; ++k) {
+        const auto r = to_rank(chains.first + k);
+        f(prev, r);
+        prev = r;
+      }
+      f(prev, to_rank(ends[i][1]));
+      lo = hi;
     }
-    int64_t prev = chains.ends[i][0];
-    for (int64_t k = chains.offset[i]; k < chains.offset[i + 1]; ++k) {
-      f(prev, chains.first + k);
-      prev = chains.first + k;
-    }
-    f(prev, chains.ends[i][1]);
+    i = stop + 1;
   }
 }
 
@@ -79,15 +88,14 @@ RankTree<I> sweep_up(int64_t n, std::initializer_list<std::span<const GraphEdge>
   constexpr int kWindowBits = 12;
   const int64_t windows = (n >> kWindowBits) + 1;
   std::vector<int64_t> window_start(windows + 1, 0);
-  auto count = [&](int64_t a, int64_t b) {
-    const I ra = to_rank(a), rb = to_rank(b);
+  auto count = [&](I ra, I rb) {
     if (ra != rb)
       ++window_start[(std::max(ra, rb) >> kWindowBits) + 1];
   };
   for (std::span<const GraphEdge> edges : lists)
     for (const GraphEdge &e : edges)
-      count(e.a, e.b);
-  for_each_chain_piece(chains, count);
+      count(to_rank(e.a), to_rank(e.b));
+  for_each_chain_piece(chains, to_rank, count);
   for (int64_t w = 1; w <= windows; ++w)
     window_start[w] += window_start[w - 1];
   const std::size_t m = static_cast<std::size_t>(window_start[windows]);
@@ -95,8 +103,7 @@ RankTree<I> sweep_up(int64_t n, std::initializer_list<std::span<const GraphEdge>
   pairs.resize(2 * m);
   {
     std::vector<int64_t> fill(window_start.begin(), window_start.end() - 1);
-    auto place = [&](int64_t a, int64_t b) {
-      const I ra = to_rank(a), rb = to_rank(b);
+    auto place = [&](I ra, I rb) {
       if (ra != rb) {
         I *p = &pairs[2 * fill[std::max(ra, rb) >> kWindowBits]++];
         p[0] = std::max(ra, rb);
@@ -105,13 +112,14 @@ RankTree<I> sweep_up(int64_t n, std::initializer_list<std::span<const GraphEdge>
     };
     for (std::span<const GraphEdge> edges : lists)
       for (const GraphEdge &e : edges)
-        place(e.a, e.b);
-    for_each_chain_piece(chains, place);
+        place(to_rank(e.a), to_rank(e.b));
+    for_each_chain_piece(chains, to_rank, place);
   }
   RankTree<I> t;
   t.parent.resize(static_cast<std::size_t>(n));
   std::fill(t.parent.begin(), t.parent.end(), I{-1});
-  t.children.assign(n, 0);
+  t.children.resize(static_cast<std::size_t>(n));
+  std::fill(t.children.begin(), t.children.end(), 0);
   // Union by size with path halving; top[root] is the highest rank of the root's component so
   // far (the node whose parent the current rank becomes when that component joins it).
   scratch.sets.resize(3 * static_cast<std::size_t>(n));
@@ -177,17 +185,23 @@ void check_chains(const EdgeChains &c, int64_t n) {
     return;
   if (c.offset.size() != count + 1)
     throw std::invalid_argument("sweep_contour_tree: chain offsets do not match the chains");
+  bool ascending = true;
   for (std::size_t i = 0; i < count; ++i)
-    if (c.offset[i + 1] < c.offset[i])
-      throw std::invalid_argument("sweep_contour_tree: chain offsets not ascending");
+    ascending &= c.offset[i + 1] >= c.offset[i];
+  if (!ascending)
+    throw std::invalid_argument("sweep_contour_tree: chain offsets not ascending");
   if (c.offset[0] < 0 || c.first < 0 || c.first > n - c.offset[count])
     throw std::out_of_range("sweep_contour_tree: chain node out of range");
+  bool ends_in_range = true;
   for (const auto &e : c.ends)
-    if (e[0] < 0 || e[1] < 0 || e[0] >= n || e[1] >= n)
-      throw std::out_of_range("sweep_contour_tree: chain end out of range");
-  for (std::size_t i = 1; i < c.skip.size(); ++i)
-    if (c.skip[i] <= c.skip[i - 1])
-      throw std::invalid_argument("sweep_contour_tree: skipped chains not ascending");
+    ends_in_range &= static_cast<uint64_t>(e[0]) < static_cast<uint64_t>(n) &&
+                     static_cast<uint64_t>(e[1]) < static_cast<uint64_t>(n);
+  if (!ends_in_range)
+    throw std::out_of_range("sweep_contour_tree: chain end out of range");
+  for (std::size_t i = 0; i < c.skip.size(); ++i)
+    if ((i > 0 && c.skip[i] <= c.skip[i - 1]) || c.skip[i] < 0 ||
+        c.skip[i] >= static_cast<int64_t>(count))
+      throw std::invalid_argument("sweep_contour_tree: skipped chains not ascending chain numbers");
 }
 
 // The number of chain pieces (an upper bound where chains are skipped).
@@ -201,7 +215,9 @@ ContourTree sweep_ranked(std::span<const double> values, const SweepEdges &edges
                          int threads, SweepTimings *timings) {
   const auto t0 = clock_type::now();
   const int64_t n = static_cast<int64_t>(values.size());
-  std::vector<int64_t> order = ascending_order(values);
+  UninitializedVector<int64_t> order;
+  order.resize(static_cast<std::size_t>(n));
+  ascending_order(values, order);
   UninitializedVector<I> rank;
   rank.resize(static_cast<std::size_t>(n));
   for (int64_t r = 0; r < n; ++r)
@@ -245,9 +261,9 @@ ContourTree sweep_ranked(std::span<const double> values, const SweepEdges &edges
       sp[r] = split_parent(r);
       su[r] = split_children(r);
     }
-    out.nodes = std::move(order);
-    out.arcs =
-        merge_join_split(std::move(jp), std::move(join.children), std::move(sp), std::move(su));
+    out.nodes.assign(order.begin(), order.end());
+    out.arcs = merge_join_split(std::move(jp), {join.children.begin(), join.children.end()},
+                                std::move(sp), std::move(su));
   } else {
     // A node's down-degree in the contour tree is its number of join-tree children, its
     // up-degree its number of split-tree children. Regular nodes (one of each) are spliced out of
@@ -303,6 +319,7 @@ ContourTree sweep_ranked(std::span<const double> values, const SweepEdges &edges
 
 ContourTree sweep_contour_tree(std::span<const double> values, const SweepEdges &edges,
                                bool augmented, int threads, SweepTimings *timings) {
+  const PageReuseScope reuse_pages; // the order's sort buffers become the sweeps' scratch
   const int64_t n = static_cast<int64_t>(values.size());
   for (auto list : {edges.common, edges.join_only, edges.split_only})
     check_edges(list, n);

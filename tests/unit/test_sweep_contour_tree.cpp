@@ -186,7 +186,7 @@ TEST(SweepContourTree, RejectsInconsistentChains) {
   const std::vector<double> values{0, 1, 2, 3};
   const std::vector<std::array<int64_t, 2>> ends{{0, 1}, {1, 2}}, far{{0, 4}, {1, 2}};
   const std::vector<int64_t> offset{0, 1, 2}, short_offset{0, 1}, descending{0, 2, 1},
-      too_many{0, 1, 3}, skip_twice{1, 1};
+      too_many{0, 1, 3}, skip_twice{1, 1}, skip_beyond{2};
   auto run = [&](std::span<const std::array<int64_t, 2>> e, std::span<const int64_t> o,
                  int64_t first, std::span<const int64_t> skip = {}) {
     return sweep_contour_tree(values, {{}, {}, {}, {e, o, first, skip}}, false);
@@ -198,6 +198,7 @@ TEST(SweepContourTree, RejectsInconsistentChains) {
   EXPECT_THROW(run(ends, offset, 3), std::out_of_range);   // nodes 3..4 of 4
   EXPECT_THROW(run(far, offset, 2), std::out_of_range);    // an end beyond the nodes
   EXPECT_THROW(run(ends, offset, 2, skip_twice), std::invalid_argument);
+  EXPECT_THROW(run(ends, offset, 2, skip_beyond), std::invalid_argument);
 }
 
 TEST(SweepContourTree, LargeGraphOnTwoThreadsMatches) {
