@@ -30,10 +30,11 @@ bool item_less(const Item &a, const Item &b) {
 
 // Sorts a[0, n) by (key, id) into a (to_b false) or b (to_b true), using the other array as
 // scratch: small ranges by comparison, larger ones partitioned (stably, from one array into the
-// other) on the highest bits in which their keys differ, up to 11 bits and fewer for smaller
-// ranges (about 8 keys per part), each part then sorted the same way with the arrays' roles
-// swapped. Floating-point keys share their leading (exponent) bits in clusters, so a fixed digit
-// would leave most keys in a few buckets; this adapts to every range's own prefix.
+// other) on the highest bits in which their keys differ, up to 11 bits (16 for a million keys
+// and more) and fewer for smaller ranges (about 8 keys per part), each part then sorted the same
+// way with the arrays' roles swapped. Floating-point keys share their leading (exponent) bits in
+// clusters, so a fixed digit would leave most keys in a few buckets; this adapts to every range's
+// own prefix.
 void sort_items(Item *a, Item *b, std::size_t n, bool to_b) {
   if (n <= 48) {
     std::sort(a, a + n, item_less);
@@ -52,24 +53,37 @@ void sort_items(Item *a, Item *b, std::size_t n, bool to_b) {
       std::copy(a, a + n, b);
     return;
   }
-  constexpr int kMaxBits = 11;
-  const int bits = std::clamp(static_cast<int>(std::bit_width(n)) - 3, 3, kMaxBits);
+  // Ranges of a million keys and more: up to 16 bits (the counters on the heap). Values of one
+  // field share their sign and exponent in a few clusters, so a first 11-bit pass leaves most
+  // keys in a few parts of a hundred thousand or more and a second pass over memory; 16 bits
+  // leave parts that the next pass sorts in cache.
+  constexpr int kMaxBits = 11, kMaxTopBits = 16;
+  const int max_bits = n >= (std::size_t{1} << 20) ? kMaxTopBits : kMaxBits;
+  const int bits = std::clamp(static_cast<int>(std::bit_width(n)) - 3, 3, max_bits);
   const std::size_t buckets = std::size_t{1} << bits;
   const int shift = std::max(64 - std::countl_zero(hi ^ lo) - bits, 0);
   const uint64_t base = lo >> shift;
-  std::array<uint32_t, (std::size_t{1} << kMaxBits) + 1> start; // n < 2^32 (ascending_order)
-  std::fill(start.begin(), start.begin() + buckets + 1, 0u);
-  for (std::size_t i = 0; i < n; ++i)
-    ++start[(a[i].key >> shift) - base + 1];
-  for (std::size_t k = 1; k <= buckets; ++k)
-    start[k] += start[k - 1];
-  std::array<uint32_t, std::size_t{1} << kMaxBits> fill;
-  std::copy(start.begin(), start.begin() + buckets, fill.begin());
-  for (std::size_t i = 0; i < n; ++i)
-    b[fill[(a[i].key >> shift) - base]++] = a[i];
-  for (std::size_t k = 0; k < buckets; ++k)
-    if (start[k + 1] > start[k])
-      sort_items(b + start[k], a + start[k], start[k + 1] - start[k], !to_b);
+  auto partition = [&](uint32_t *start, uint32_t *fill) { // n < 2^32 (ascending_order)
+    std::fill(start, start + buckets + 1, 0u);
+    for (std::size_t i = 0; i < n; ++i)
+      ++start[(a[i].key >> shift) - base + 1];
+    for (std::size_t k = 1; k <= buckets; ++k)
+      start[k] += start[k - 1];
+    std::copy(start, start + buckets, fill);
+    for (std::size_t i = 0; i < n; ++i)
+      b[fill[(a[i].key >> shift) - base]++] = a[i];
+    for (std::size_t k = 0; k < buckets; ++k)
+      if (start[k + 1] > start[k])
+        sort_items(b + start[k], a + start[k], start[k + 1] - start[k], !to_b);
+  };
+  if (bits > kMaxBits) {
+    std::vector<uint32_t> start(buckets + 1), fill(buckets);
+    partition(start.data(), fill.data());
+  } else {
+    std::array<uint32_t, (std::size_t{1} << kMaxBits) + 1> start;
+    std::array<uint32_t, std::size_t{1} << kMaxBits> fill;
+    partition(start.data(), fill.data());
+  }
 }
 
 } // namespace
