@@ -2,6 +2,7 @@
 
 #include "poly/lagrange_to_bernstein.hpp"
 #include "poly/lattice.hpp"
+#include "util/parallel_for.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -36,7 +37,87 @@ double Geometry::extent() const {
   return std::sqrt(s);
 }
 
-Geometry Geometry::build(const MeshInput &in) {
+namespace {
+
+// Converts cells' Lagrange nodes to control points, with the lattice positions of the degree in
+// use (one degree in most meshes) and a buffer kept from cell to cell.
+class CellMapper {
+public:
+  CellMapper(const MeshInput &in, double tol) : in_(in), tol_(tol) {}
+
+  // The degree of cell c's map: 1 when every node (or control point) is the affine image of its
+  // lattice position, else the input degree.
+  int degree(int64_t c) {
+    setup(c);
+    if (d_ == 1 || affine([&](int i) -> const Vec3 & { return in_.points[nodes_[i]]; }))
+      return 1;
+    convert();
+    return affine([&](int i) -> const Vec3 & { return ctrl_[i]; }) ? 1 : d_;
+  }
+
+  // Writes cell c's control points for a map of degree `degree` (from degree()).
+  void control_points(int64_t c, int degree, Vec3 *out) {
+    setup(c);
+    if (degree == 1) {
+      out[0] = *p_[0];
+      out[1] = *p_[1];
+      out[2] = *p_[2];
+      return;
+    }
+    convert();
+    std::copy(ctrl_.begin(), ctrl_.end(), out);
+  }
+
+private:
+  void setup(int64_t c) {
+    d_ = in_.cell_degree[c];
+    n_ = lattice_size(d_);
+    nodes_ = &in_.cell_nodes[in_.cell_offsets[c]];
+    for (int k = 0; k < 3; ++k)
+      p_[k] = &in_.points[nodes_[corner_index(d_, k)]];
+    if (d_ != table_degree_) {
+      uv_.resize(static_cast<std::size_t>(n_));
+      for (int i = 0; i < n_; ++i) {
+        const auto q = lattice_point(d_, i);
+        uv_[i] = {static_cast<double>(q[0]) / d_, static_cast<double>(q[1]) / d_};
+      }
+      table_degree_ = d_;
+    }
+  }
+  template <class Point> bool affine(const Point &point) const {
+    for (int i = 0; i < n_; ++i) {
+      const double u = uv_[i][0], v = uv_[i][1];
+      const Vec3 &q = point(i);
+      for (int a = 0; a < 3; ++a)
+        if (std::abs(q[a] - ((1 - u - v) * (*p_[0])[a] + u * (*p_[1])[a] + v * (*p_[2])[a])) > tol_)
+          return false;
+    }
+    return true;
+  }
+  void convert() {
+    ctrl_.assign(static_cast<std::size_t>(n_), Vec3{0, 0, 0});
+    const auto &m = lagrange_to_bernstein_triangle(d_);
+    for (int i = 0; i < n_; ++i)
+      for (int j = 0; j < n_; ++j) {
+        const double w = m[static_cast<std::size_t>(i) * n_ + j];
+        const Vec3 &p = in_.points[nodes_[j]];
+        for (int a = 0; a < 3; ++a)
+          ctrl_[i][a] += w * p[a];
+      }
+  }
+
+  const MeshInput &in_;
+  const double tol_;
+  int d_ = 0, n_ = 0, table_degree_ = 0;
+  const int64_t *nodes_ = nullptr;
+  const Vec3 *p_[3] = {nullptr, nullptr, nullptr};
+  std::vector<std::array<double, 2>> uv_;
+  std::vector<Vec3> ctrl_;
+};
+
+} // namespace
+
+Geometry Geometry::build(const MeshInput &in, int threads) {
   Geometry g;
   const int64_t nc = static_cast<int64_t>(in.num_cells());
   if (!in.points.empty()) {
@@ -51,65 +132,27 @@ Geometry Geometry::build(const MeshInput &in) {
   const double tol = 1e-12 * std::max(ext, 1e-300);
   g.planar_ = g.bounds_[1][2] - g.bounds_[0][2] <= tol;
 
+  // Each cell's map degree (1: straight, three control points), then the control points into
+  // their slots: two passes over the cells in parallel, a curved cell converted in each.
   g.degree_.resize(nc);
-  g.offset_.assign(nc + 1, 0);
-  g.coef_.reserve(3 * static_cast<std::size_t>(nc)); // straight cells: three control points each
-  std::vector<Vec3> ctrl;
-  // The lattice positions (u, v) of the degree in use (one degree in most meshes).
-  int table_degree = 0;
-  std::vector<std::array<double, 2>> uv;
+  const int workers = threads_for(nc, std::max(1, threads), 4096);
+  parallel_for(nc, workers, [&](int64_t begin, int64_t end, int) {
+    CellMapper mapper(in, tol);
+    for (int64_t c = begin; c < end; ++c)
+      g.degree_[c] = static_cast<uint8_t>(mapper.degree(c));
+  });
+  g.offset_.resize(nc + 1);
+  g.offset_[0] = 0;
   for (int64_t c = 0; c < nc; ++c) {
-    const int d = in.cell_degree[c];
-    const int n = lattice_size(d);
-    const int64_t *nodes = &in.cell_nodes[in.cell_offsets[c]];
-    const Vec3 &p0 = in.points[nodes[corner_index(d, 0)]];
-    const Vec3 &p1 = in.points[nodes[corner_index(d, 1)]];
-    const Vec3 &p2 = in.points[nodes[corner_index(d, 2)]];
-    if (d != table_degree) {
-      uv.resize(static_cast<std::size_t>(n));
-      for (int i = 0; i < n; ++i) {
-        const auto q = lattice_point(d, i);
-        uv[i] = {static_cast<double>(q[0]) / d, static_cast<double>(q[1]) / d};
-      }
-      table_degree = d;
-    }
-    // Linear if every point of the lattice (nodes, or control points) is the affine image of its
-    // lattice position. The nodes are tested first: a straight cell needs no conversion.
-    auto affine = [&](auto point) {
-      for (int i = 0; i < n; ++i) {
-        const double u = uv[i][0], v = uv[i][1];
-        const Vec3 &q = point(i);
-        for (int a = 0; a < 3; ++a)
-          if (std::abs(q[a] - ((1 - u - v) * p0[a] + u * p1[a] + v * p2[a])) > tol)
-            return false;
-      }
-      return true;
-    };
-    bool linear = d == 1 || affine([&](int i) -> const Vec3 & { return in.points[nodes[i]]; });
-    if (!linear) {
-      ctrl.assign(n, Vec3{0, 0, 0});
-      const auto &m = lagrange_to_bernstein_triangle(d);
-      for (int i = 0; i < n; ++i)
-        for (int j = 0; j < n; ++j) {
-          const double w = m[static_cast<std::size_t>(i) * n + j];
-          const Vec3 &p = in.points[nodes[j]];
-          for (int a = 0; a < 3; ++a)
-            ctrl[i][a] += w * p[a];
-        }
-      linear = affine([&](int i) -> const Vec3 & { return ctrl[i]; });
-    }
-    if (linear) {
-      g.coef_.push_back(p0);
-      g.coef_.push_back(p1);
-      g.coef_.push_back(p2);
-      g.degree_[c] = 1;
-    } else {
-      g.coef_.insert(g.coef_.end(), ctrl.begin(), ctrl.end());
-      g.degree_[c] = static_cast<uint8_t>(d);
-      ++g.curved_cells_;
-    }
-    g.offset_[c + 1] = static_cast<int64_t>(g.coef_.size());
+    g.offset_[c + 1] = g.offset_[c] + lattice_size(g.degree_[c]);
+    g.curved_cells_ += g.degree_[c] != 1;
   }
+  g.coef_.resize(static_cast<std::size_t>(g.offset_[nc]));
+  parallel_for(nc, workers, [&](int64_t begin, int64_t end, int) {
+    CellMapper mapper(in, tol);
+    for (int64_t c = begin; c < end; ++c)
+      mapper.control_points(c, g.degree_[c], &g.coef_[g.offset_[c]]);
+  });
   return g;
 }
 

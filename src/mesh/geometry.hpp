@@ -6,6 +6,7 @@
 
 #include "mesh/mesh_input.hpp"
 #include "poly/bernstein_triangle.hpp"
+#include "util/uninitialized_vector.hpp"
 
 #include <array>
 #include <cstdint>
@@ -15,7 +16,8 @@ namespace hoct {
 
 class Geometry {
 public:
-  static Geometry build(const MeshInput &input);
+  // `threads` work on the cells at once (the result does not depend on their number).
+  static Geometry build(const MeshInput &input, int threads = 1);
 
   int64_t num_cells() const { return static_cast<int64_t>(degree_.size()); }
   // Degree of the map (1 for a flat, straight-sided cell even if its input degree is higher).
@@ -40,8 +42,8 @@ public:
 
 private:
   std::vector<uint8_t> degree_;
-  std::vector<int64_t> offset_; // into coef_, in units of control points
-  std::vector<Vec3> coef_;      // control points, canonical lattice order
+  std::vector<int64_t> offset_;    // into coef_, in units of control points
+  UninitializedVector<Vec3> coef_; // control points, canonical lattice order
   bool planar_ = true;
   int64_t curved_cells_ = 0;
   std::array<Vec3, 2> bounds_{};

@@ -26,7 +26,7 @@ Mesh build_mesh(const MeshInput &input, const MeshBuildOptions &options) {
     m.topology = Topology::build(input, m.problems);
     check_duplicate_vertices(input, m.topology, m.problems);
     m.field = Field::build(input, m.topology, m.problems, options.threads);
-    m.geometry = Geometry::build(input);
+    m.geometry = Geometry::build(input, options.threads);
     check_geometry(m.geometry, m.topology, m.problems);
     m.complete = true;
   }
@@ -61,7 +61,7 @@ Mesh build_mesh_from_samples(const MeshInput &input, const std::vector<CellSampl
     }
     if (fitted) {
       m.field = Field::build_from_polynomials(m.topology, polys, m.problems);
-      m.geometry = Geometry::build(input);
+      m.geometry = Geometry::build(input, options.threads);
       check_geometry(m.geometry, m.topology, m.problems);
       m.complete = true;
     }
