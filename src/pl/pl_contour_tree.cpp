@@ -1,6 +1,7 @@
 #include "pl/pl_contour_tree.hpp"
 
 #include "tree/sweep_contour_tree.hpp"
+#include "util/page_pool.hpp"
 #include "util/parallel_for.hpp"
 #include "util/uninitialized_vector.hpp"
 
@@ -14,6 +15,7 @@ TreeResult pl_contour_tree(const PlMesh &m, bool augmented, const std::string &m
   auto seconds = [](clock::time_point a, clock::time_point b) {
     return std::chrono::duration<double>(b - a).count();
   };
+  const PageReuseScope reuse_pages; // the edge list's pages serve the sweeps after it
   const auto t0 = clock::now();
   // The triangles' sides (an interior edge twice: the sweeps do not mind duplicates).
   UninitializedVector<GraphEdge> edges;

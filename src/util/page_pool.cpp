@@ -113,7 +113,10 @@ void free_pages(void *ptr, std::size_t) noexcept {
   const Block b{base, *reinterpret_cast<std::size_t *>(base)};
   Pool &p = pool();
   std::lock_guard<std::mutex> lock(p.mutex);
-  if (p.scopes == 0) {
+  // Outside scopes as much stays as between them (the C library, which these blocks bypass,
+  // keeps up to 64 MiB of freed heap too: a loop of small trees would otherwise fault its pages in
+  // again every time).
+  if (p.scopes == 0 && p.kept_bytes + b.bytes > kKeptBetweenScopes) {
     unmap(b);
     return;
   }

@@ -7,7 +7,8 @@
 // in the process, freed blocks are kept: a later request takes the smallest kept block that fits
 // (the rest of it stays kept), or grows the largest one (mremap: its pages stay, only the growth
 // is new). When the last scope closes, the kept blocks go back to the system except up to 64 MiB
-// of them (as the C library keeps up to 64 MiB of its heap), which serve the next computation.
+// of them (as the C library keeps up to 64 MiB of its heap), which serve the next computation;
+// outside scopes, freed blocks are kept only up to those 64 MiB.
 // Kept pages are pages the computation used before, so the peak memory does not grow as long as
 // its large arrays come from here.
 #pragma once

@@ -104,12 +104,21 @@ TEST(PagePool, ReusesSplitsAndGrowsKeptBlocksInsideAScope) {
   EXPECT_LE(kept_page_bytes(), 64 * kMiB);
 }
 
-TEST(PagePool, NothingIsKeptOutsideAScope) {
-  // Larger than anything kept (at most 64 MiB outside scopes), so not a kept block given back.
+TEST(PagePool, AtMost64MiBIsKeptOutsideAScope) {
+  // Larger than the 64 MiB kept outside scopes: given back, not kept.
   const std::size_t before = kept_page_bytes();
   void *a = allocate_pages(80 * kMiB);
   free_pages(a, 80 * kMiB);
   EXPECT_LE(kept_page_bytes(), before);
+  EXPECT_LE(kept_page_bytes(), 64 * kMiB);
+  // Small blocks are kept (for the next computation) up to the 64 MiB.
+  std::vector<void *> blocks;
+  for (int i = 0; i < 20; ++i)
+    blocks.push_back(allocate_pages(5 * kMiB));
+  for (void *p : blocks)
+    free_pages(p, 5 * kMiB);
+  EXPECT_GE(kept_page_bytes(), 55 * kMiB);
+  EXPECT_LE(kept_page_bytes(), 64 * kMiB);
 }
 
 TEST(PagePool, UninitializedVectorsGrowThroughThePool) {
