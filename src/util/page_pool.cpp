@@ -53,11 +53,11 @@ void *hand_out(char *base, std::size_t bytes) {
 void unmap(const Block &b) { munmap(b.base, b.bytes); }
 
 // Takes a kept block of `bytes` (under the lock): the smallest that fits (what it has beyond
-// `bytes`, if a pooled size, stays kept), else the largest, grown. Null when nothing is kept or
-// growing fails.
-char *take_kept(Pool &p, std::size_t bytes) {
+// `bytes`, if a pooled size, stays kept), else the largest, grown. A null base when nothing is
+// kept or growing fails.
+Block take_kept(Pool &p, std::size_t bytes) {
   if (p.kept.empty())
-    return nullptr;
+    return {nullptr, 0};
   std::size_t fit = p.kept.size(), largest = 0;
   for (std::size_t i = 0; i < p.kept.size(); ++i) {
     if (p.kept[i].bytes >= bytes && (fit == p.kept.size() || p.kept[i].bytes < p.kept[fit].bytes))
@@ -75,17 +75,15 @@ char *take_kept(Pool &p, std::size_t bytes) {
       p.kept.erase(p.kept.begin() + static_cast<std::ptrdiff_t>(fit));
       bytes = b.bytes;
     }
-    *reinterpret_cast<std::size_t *>(b.base) = bytes;
-    return b.base;
+    return {b.base, bytes};
   }
   const Block b = p.kept[largest];
   void *grown = mremap(b.base, b.bytes, bytes, MREMAP_MAYMOVE);
   if (grown == MAP_FAILED)
-    return nullptr;
+    return {nullptr, 0};
   p.kept.erase(p.kept.begin() + static_cast<std::ptrdiff_t>(largest));
   p.kept_bytes -= b.bytes;
-  *static_cast<std::size_t *>(grown) = bytes;
-  return static_cast<char *>(grown);
+  return {static_cast<char *>(grown), bytes};
 }
 
 } // namespace
@@ -95,11 +93,13 @@ void *allocate_pages(std::size_t bytes) {
     throw std::bad_alloc();
   const std::size_t total = round_to_pages(bytes + kHeader);
   Pool &p = pool();
+  Block kept;
   {
     std::lock_guard<std::mutex> lock(p.mutex);
-    if (char *base = take_kept(p, total))
-      return base + kHeader;
+    kept = take_kept(p, total);
   }
+  if (kept.base != nullptr)
+    return hand_out(kept.base, kept.bytes);
   void *m = mmap(nullptr, total, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
   if (m == MAP_FAILED)
     throw std::bad_alloc();
