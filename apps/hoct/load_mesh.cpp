@@ -18,7 +18,7 @@ LoadedMesh load_mesh(const std::string &path, const std::string &scalar, bool st
   const auto t0 = clock::now();
   r.input = read_mesh(path, scalar, read_limits());
   if (merge_tolerance >= 0) {
-    const MergeReport m = merge_duplicate_points(r.input, merge_tolerance);
+    const MergeReport m = merge_duplicate_points(r.input, merge_tolerance, thread_count(threads));
     if (m.merged_points > 0)
       std::fprintf(stderr,
                    "hoct: merged %lld duplicate point(s) of %s (tolerance %g of the "

@@ -2,6 +2,9 @@
 
 #include "error.hpp"
 #include "tree/union_find.hpp"
+#include "util/parallel_for.hpp"
+#include "util/parallel_sort.hpp"
+#include "util/uninitialized_vector.hpp"
 
 #include <algorithm>
 #include <array>
@@ -42,7 +45,8 @@ constexpr std::size_t kPairwiseLimit = 64;
 } // namespace
 
 std::vector<int64_t> coincident_points(const std::vector<Vec3> &points,
-                                       const std::vector<int64_t> &candidates, double tolerance) {
+                                       const std::vector<int64_t> &candidates, double tolerance,
+                                       int threads) {
   const std::size_t n = candidates.size();
   std::vector<int64_t> result(candidates.begin(), candidates.end());
   if (n < 2 || !(tolerance > 0) || !std::isfinite(tolerance))
@@ -69,21 +73,27 @@ std::vector<int64_t> coincident_points(const std::vector<Vec3> &points,
   // 2 ax: the lower face along axis ax, bit 2 ax + 1: the upper one), both found in one pass over
   // the points in candidate order.
   std::vector<std::pair<Key, std::size_t>> sorted(n);
-  std::vector<uint8_t> faces(n, 0);
-  for (std::size_t i = 0; i < n; ++i) {
-    const Vec3 &p = points[candidates[i]];
-    const Key key = grid_key(p, lo, h);
-    sorted[i] = {key, i};
-    for (int ax = 0; ax < 3; ++ax) {
-      const double x = p[ax] - lo[ax];
-      // Within two tolerances (a margin for the rounding of the keys).
-      if (x - 2 * tolerance < static_cast<double>(key[ax]) * h)
-        faces[i] |= static_cast<uint8_t>(1u << (2 * ax));
-      if (x + 2 * tolerance >= static_cast<double>(key[ax] + 1) * h)
-        faces[i] |= static_cast<uint8_t>(2u << (2 * ax));
+  UninitializedVector<uint8_t> faces(n);
+  const int64_t count = static_cast<int64_t>(n);
+  parallel_for(count, threads_for(count, threads, 65536), [&](int64_t begin, int64_t end, int) {
+    for (int64_t i = begin; i < end; ++i) {
+      const Vec3 &p = points[candidates[i]];
+      const Key key = grid_key(p, lo, h);
+      sorted[i] = {key, static_cast<std::size_t>(i)};
+      uint8_t near = 0;
+      for (int ax = 0; ax < 3; ++ax) {
+        const double x = p[ax] - lo[ax];
+        // Within two tolerances (a margin for the rounding of the keys).
+        if (x - 2 * tolerance < static_cast<double>(key[ax]) * h)
+          near |= static_cast<uint8_t>(1u << (2 * ax));
+        if (x + 2 * tolerance >= static_cast<double>(key[ax] + 1) * h)
+          near |= static_cast<uint8_t>(2u << (2 * ax));
+      }
+      faces[i] = near;
     }
-  }
-  std::sort(sorted.begin(), sorted.end());
+  });
+  // (key, index) pairs are distinct: the same order on any thread count.
+  parallel_sort(sorted.begin(), sorted.end(), threads);
 
   // Crowded cells keep their fine-grid order for the lookups from neighbouring cells.
   std::vector<std::vector<std::pair<Key, std::size_t>>> crowded;
@@ -166,14 +176,14 @@ std::vector<int64_t> coincident_points(const std::vector<Vec3> &points,
   return result;
 }
 
-MergeReport merge_duplicate_points(MeshInput &input, double relative_tolerance) {
+MergeReport merge_duplicate_points(MeshInput &input, double relative_tolerance, int threads) {
   MergeReport r;
   const std::size_t np = input.points.size();
   std::vector<int64_t> all(np);
   for (std::size_t i = 0; i < np; ++i)
     all[i] = static_cast<int64_t>(i);
   const double tol = relative_tolerance * bounding_box_diagonal(input.points);
-  const std::vector<int64_t> rep = coincident_points(input.points, all, tol);
+  const std::vector<int64_t> rep = coincident_points(input.points, all, tol, threads);
   double scale = 0;
   for (double v : input.values)
     if (std::isfinite(v))

@@ -13,8 +13,10 @@ namespace hoct {
 
 // For each of `points[candidates[i]]`, the smallest candidate point id within `tolerance`
 // (Euclidean) of it, transitively (chains of close points form one group); itself if none.
+// `threads`: the grid keys and their sort run in parallel (the result does not depend on it).
 std::vector<int64_t> coincident_points(const std::vector<Vec3> &points,
-                                       const std::vector<int64_t> &candidates, double tolerance);
+                                       const std::vector<int64_t> &candidates, double tolerance,
+                                       int threads = 1);
 
 // Length of the bounding-box diagonal of the points (0 for none).
 double bounding_box_diagonal(const std::vector<Vec3> &points);
@@ -27,6 +29,6 @@ struct MergeReport {
 // relative_tolerance x the bounding-box diagonal. Throws hoct::Error naming the points if two
 // merged points carry values that differ by more than 1e-9 of the value scale (the field would
 // be discontinuous there: merging would hide it).
-MergeReport merge_duplicate_points(MeshInput &input, double relative_tolerance);
+MergeReport merge_duplicate_points(MeshInput &input, double relative_tolerance, int threads = 1);
 
 } // namespace hoct

@@ -51,71 +51,86 @@ Field Field::build(const MeshInput &in, const Topology &topo, ProblemLog &proble
   const double tol = kContinuityTolerance * scale;
 
   // Edge degrees and owners: the lowest-id cell of the highest input degree.
-  f.edge_degree_.assign(ne, 0);
-  std::vector<int64_t> owner(ne, -1);
-  std::vector<int> owner_local(ne, -1);
-  for (int64_t e = 0; e < ne; ++e) {
-    const int64_t *cells = topo.edge_cells_begin(e);
-    for (int i = 0; i < topo.edge_cell_count(e); ++i) {
-      const int64_t c = cells[i];
-      if (in.cell_degree[c] > f.edge_degree_[e]) {
-        f.edge_degree_[e] = in.cell_degree[c];
-        owner[e] = c;
-      }
+  f.edge_degree_.resize(ne);
+  UninitializedVector<int64_t> owner(static_cast<std::size_t>(ne));
+  UninitializedVector<int8_t> owner_local(static_cast<std::size_t>(ne));
+  const int edge_threads = threads_for(ne, threads, 16384);
+  parallel_for(ne, edge_threads, [&](int64_t begin, int64_t end, int) {
+    for (int64_t e = begin; e < end; ++e) {
+      const int64_t *cells = topo.edge_cells_begin(e);
+      int degree = 0;
+      int64_t o = -1;
+      for (int i = 0; i < topo.edge_cell_count(e); ++i)
+        if (in.cell_degree[cells[i]] > degree) {
+          degree = in.cell_degree[cells[i]];
+          o = cells[i];
+        }
+      f.edge_degree_[e] = static_cast<uint8_t>(degree);
+      owner[e] = o;
+      owner_local[e] = -1;
+      for (int k = 0; k < 3; ++k)
+        if (topo.cell_edge(o, k) == e)
+          owner_local[e] = static_cast<int8_t>(k);
     }
-    for (int k = 0; k < 3; ++k)
-      if (topo.cell_edge(owner[e], k) == e)
-        owner_local[e] = k;
-  }
+  });
 
   // Edge polynomials, once per edge, from the owner's edge nodes oriented lo -> hi.
-  f.edge_offset_.assign(ne + 1, 0);
+  f.edge_offset_.resize(ne + 1);
+  f.edge_offset_[0] = 0;
   for (int64_t e = 0; e < ne; ++e)
     f.edge_offset_[e + 1] = f.edge_offset_[e] + f.edge_degree_[e] + 1;
   f.edge_coef_.resize(f.edge_offset_[ne]);
-  // Per edge: no allocation (degrees are at most kMaxDegree).
-  double vals[kMaxDegree + 1], other_vals[kMaxDegree + 1];
-  int64_t ids[kMaxDegree + 1], other_ids[kMaxDegree + 1];
-  for (int64_t e = 0; e < ne; ++e) {
-    const int64_t c = owner[e];
-    const int k = owner_local[e];
-    const int d = f.edge_degree_[e];
-    edge_node_values(in, c, k, topo.edge_reversed(c, k), vals, ids);
-    double *p = f.edge_coef_.data() + f.edge_offset_[e];
-    bernstein_from_equispaced(vals, d, p);
+  // Fixed blocks of edges, each with its own problem log, appended in block order: the same
+  // report on any thread count.
+  const int64_t blocks = problem_blocks(ne);
+  BlockProblems block_problems(blocks);
+  parallel_chunks(ne, blocks, edge_threads, [&](int64_t b, int64_t begin, int64_t end, int) {
+    ProblemLog &log = block_problems[b];
+    // Per edge: no allocation (degrees are at most kMaxDegree).
+    double vals[kMaxDegree + 1], other_vals[kMaxDegree + 1];
+    int64_t ids[kMaxDegree + 1], other_ids[kMaxDegree + 1];
+    for (int64_t e = begin; e < end; ++e) {
+      const int64_t c = owner[e];
+      const int k = owner_local[e];
+      const int d = f.edge_degree_[e];
+      edge_node_values(in, c, k, topo.edge_reversed(c, k), vals, ids);
+      double *p = f.edge_coef_.data() + f.edge_offset_[e];
+      bernstein_from_equispaced(vals, d, p);
 
-    // Continuity: every other cell of the edge must agree with the owner.
-    const int64_t *cells = topo.edge_cells_begin(e);
-    for (int i = 0; i < topo.edge_cell_count(e); ++i) {
-      const int64_t o = cells[i];
-      if (o == c)
-        continue;
-      int ko = 0;
-      while (topo.cell_edge(o, ko) != e)
-        ++ko;
-      const int od = in.cell_degree[o];
-      edge_node_values(in, o, ko, topo.edge_reversed(o, ko), other_vals, other_ids);
-      if (od == d && std::equal(other_ids, other_ids + d + 1, ids))
-        continue; // the same nodes: continuous by construction
-      double gap = 0.0;
-      if (od == d) {
-        for (int t = 0; t <= d; ++t)
-          gap = std::max(gap, std::abs(other_vals[t] - vals[t]));
-      } else {
-        const BernsteinPoly q = bernstein_from_equispaced(other_vals, od).elevated(d);
-        for (int t = 0; t <= d; ++t)
-          gap = std::max(gap, std::abs(q[t] - p[t]));
-      }
-      if (!(gap <= tol)) {
-        std::ostringstream m;
-        m << "cells " << c << " and " << o << " disagree on their shared edge (points "
-          << topo.vertex_point(topo.edge_vertices(e)[0]) << "-"
-          << topo.vertex_point(topo.edge_vertices(e)[1]) << ") by " << gap
-          << " (the field must be continuous)";
-        problems.add("discontinuous field across an edge", Severity::Error, m.str());
+      // Continuity: every other cell of the edge must agree with the owner.
+      const int64_t *cells = topo.edge_cells_begin(e);
+      for (int i = 0; i < topo.edge_cell_count(e); ++i) {
+        const int64_t o = cells[i];
+        if (o == c)
+          continue;
+        int ko = 0;
+        while (topo.cell_edge(o, ko) != e)
+          ++ko;
+        const int od = in.cell_degree[o];
+        edge_node_values(in, o, ko, topo.edge_reversed(o, ko), other_vals, other_ids);
+        if (od == d && std::equal(other_ids, other_ids + d + 1, ids))
+          continue; // the same nodes: continuous by construction
+        double gap = 0.0;
+        if (od == d) {
+          for (int t = 0; t <= d; ++t)
+            gap = std::max(gap, std::abs(other_vals[t] - vals[t]));
+        } else {
+          const BernsteinPoly q = bernstein_from_equispaced(other_vals, od).elevated(d);
+          for (int t = 0; t <= d; ++t)
+            gap = std::max(gap, std::abs(q[t] - p[t]));
+        }
+        if (!(gap <= tol)) {
+          std::ostringstream m;
+          m << "cells " << c << " and " << o << " disagree on their shared edge (points "
+            << topo.vertex_point(topo.edge_vertices(e)[0]) << "-"
+            << topo.vertex_point(topo.edge_vertices(e)[1]) << ") by " << gap
+            << " (the field must be continuous)";
+          log.add("discontinuous field across an edge", Severity::Error, m.str());
+        }
       }
     }
-  }
+  });
+  block_problems.append_to(problems);
 
   f.vertex_value_.resize(topo.num_vertices());
   for (int64_t v = 0; v < topo.num_vertices(); ++v)

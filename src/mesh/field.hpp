@@ -9,6 +9,7 @@
 #include "mesh/problem_log.hpp"
 #include "mesh/topology.hpp"
 #include "poly/bernstein_triangle.hpp"
+#include "util/uninitialized_vector.hpp"
 
 #include <cstdint>
 #include <functional>
@@ -75,7 +76,9 @@ private:
 
   std::vector<uint8_t> degree_, input_degree_, edge_degree_;
   std::vector<int64_t> offset_, edge_offset_;
-  std::vector<double> coef_, edge_coef_, vertex_value_;
+  // Filled completely by parallel loops right after sizing (first touched by their threads).
+  UninitializedVector<double> coef_, edge_coef_;
+  std::vector<double> vertex_value_;
   double min_value_ = 0, max_value_ = 0;
   int max_degree_ = 0;
 };

@@ -23,8 +23,8 @@ Mesh build_mesh(const MeshInput &input, const MeshBuildOptions &options) {
   m.num_points = static_cast<int64_t>(input.points.size());
   const bool structural_ok = check_input(input, m.problems);
   if (structural_ok) {
-    m.topology = Topology::build(input, m.problems);
-    check_duplicate_vertices(input, m.topology, m.problems);
+    m.topology = Topology::build(input, m.problems, options.threads);
+    check_duplicate_vertices(input, m.topology, m.problems, options.threads);
     m.field = Field::build(input, m.topology, m.problems, options.threads);
     m.geometry = Geometry::build(input, options.threads);
     check_geometry(m.geometry, m.topology, m.problems);
@@ -45,8 +45,8 @@ Mesh build_mesh_from_samples(const MeshInput &input, const std::vector<CellSampl
                    std::to_string(samples.size()) + " sample sets for " +
                        std::to_string(input.num_cells()) + " cells");
   else if (check_input(input, m.problems)) {
-    m.topology = Topology::build(input, m.problems);
-    check_duplicate_vertices(input, m.topology, m.problems);
+    m.topology = Topology::build(input, m.problems, options.threads);
+    check_duplicate_vertices(input, m.topology, m.problems, options.threads);
     std::vector<BernsteinTriangle> polys(samples.size());
     bool fitted = true;
     for (std::size_t c = 0; c < samples.size(); ++c) {

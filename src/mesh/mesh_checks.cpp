@@ -127,12 +127,13 @@ std::string cell_str(int64_t c) { return "cell " + std::to_string(c); }
 
 } // namespace
 
-void check_duplicate_vertices(const MeshInput &in, const Topology &topo, ProblemLog &problems) {
+void check_duplicate_vertices(const MeshInput &in, const Topology &topo, ProblemLog &problems,
+                              int threads) {
   std::vector<int64_t> corners(topo.num_vertices());
   for (int64_t v = 0; v < topo.num_vertices(); ++v)
     corners[v] = topo.vertex_point(v);
   const double tol = 1e-10 * bounding_box_diagonal(in.points);
-  const std::vector<int64_t> rep = coincident_points(in.points, corners, tol);
+  const std::vector<int64_t> rep = coincident_points(in.points, corners, tol, threads);
   for (std::size_t i = 0; i < corners.size(); ++i)
     if (rep[i] != corners[i]) {
       const Vec3 &p = in.points[corners[i]];

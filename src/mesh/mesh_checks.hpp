@@ -26,7 +26,7 @@ bool check_input(const MeshInput &input, ProblemLog &problems);
 // Distinct vertices (cell corners) at the same position, within 1e-10 of the bounding-box
 // diagonal: a crack in the mesh (merge_duplicate_points repairs it).
 void check_duplicate_vertices(const MeshInput &input, const Topology &topology,
-                              ProblemLog &problems);
+                              ProblemLog &problems, int threads = 1);
 
 // Degenerate (zero-area) and inverted cells. Planar meshes: the Jacobian determinant of each
 // cell's map, in Bernstein form (certified where its coefficients share a sign, else sampled), must

@@ -13,6 +13,17 @@ void ProblemLog::add(const std::string &kind, Severity severity, const std::stri
     k.examples.push_back(message);
 }
 
+void ProblemLog::append(const ProblemLog &later) {
+  for (const auto &[name, l] : later.kinds_) {
+    auto &k = kinds_[name];
+    if (k.count == 0 || l.severity == Severity::Error)
+      k.severity = l.severity;
+    k.count += l.count;
+    for (std::size_t i = 0; i < l.examples.size() && k.examples.size() < kMaxExamples; ++i)
+      k.examples.push_back(l.examples[i]);
+  }
+}
+
 bool ProblemLog::has_errors() const {
   for (const auto &[name, k] : kinds_)
     if (k.severity == Severity::Error)

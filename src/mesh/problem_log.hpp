@@ -22,6 +22,9 @@ public:
   static constexpr int kMaxExamples = 5;
 
   void add(const std::string &kind, Severity severity, const std::string &message);
+  // Adds everything `later` recorded, as if its add calls had come after this log's: logs kept
+  // per block of a parallel loop and appended in block order equal one serial log.
+  void append(const ProblemLog &later);
   bool has_errors() const;
   bool empty() const { return kinds_.empty(); }
   int64_t count(const std::string &kind) const;
@@ -32,5 +35,26 @@ public:
 private:
   std::map<std::string, ProblemKind> kinds_;
 };
+
+// Problems found by the blocks of a parallel loop, one log per block, appended in block order:
+// with fixed blocks (problem_blocks), the same report on any thread count.
+class BlockProblems {
+public:
+  explicit BlockProblems(int64_t blocks) : logs_(static_cast<std::size_t>(blocks)) {}
+  ProblemLog &operator[](int64_t b) { return logs_[static_cast<std::size_t>(b)]; }
+  void append_to(ProblemLog &problems) const {
+    for (const ProblemLog &log : logs_)
+      problems.append(log);
+  }
+
+private:
+  std::vector<ProblemLog> logs_;
+};
+
+// Fixed blocks for a loop over n items whose problems are reported: at most 256, of at least
+// 4096 items each.
+inline int64_t problem_blocks(int64_t n) {
+  return n / 4096 < 1 ? 1 : n / 4096 > 256 ? 256 : n / 4096;
+}
 
 } // namespace hoct

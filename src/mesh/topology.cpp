@@ -1,9 +1,12 @@
 #include "mesh/topology.hpp"
 
 #include "poly/lattice.hpp"
-#include "tree/union_find.hpp"
+#include "util/concurrent_sets.hpp"
+#include "util/parallel_for.hpp"
+#include "util/uninitialized_vector.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <sstream>
 
 namespace hoct {
@@ -28,143 +31,241 @@ int64_t Topology::neighbor(int64_t c, int k) const {
   return cells[0] == c ? cells[1] : cells[0];
 }
 
-Topology Topology::build(const MeshInput &in, ProblemLog &problems) {
+Topology Topology::build(const MeshInput &in, ProblemLog &problems, int threads) {
   Topology t;
   const int64_t nc = static_cast<int64_t>(in.num_cells());
+  const int64_t np = static_cast<int64_t>(in.num_points());
+  const int cell_threads = threads_for(nc, threads, 32768);
+  const bool shared = cell_threads > 1; // counters touched by several threads: atomic updates
+  auto add_one = [shared](int64_t &x) {
+    if (shared)
+      std::atomic_ref<int64_t>(x).fetch_add(1, std::memory_order_relaxed);
+    else
+      ++x;
+  };
+  auto corner_point = [&](int64_t c, int k) {
+    return in.cell_nodes[in.cell_offsets[c] + corner_index(in.cell_degree[c], k)];
+  };
+
   // Vertices: the distinct corner points, numbered in order of first appearance by point index.
-  std::vector<int64_t> point_vertex(in.num_points(), -1);
-  for (int64_t c = 0; c < nc; ++c)
-    for (int k = 0; k < 3; ++k)
-      point_vertex[in.cell_nodes[in.cell_offsets[c] + corner_index(in.cell_degree[c], k)]] = 0;
-  for (std::size_t p = 0; p < point_vertex.size(); ++p)
-    if (point_vertex[p] == 0) {
-      point_vertex[p] = static_cast<int64_t>(t.vertex_point_.size());
-      t.vertex_point_.push_back(static_cast<int64_t>(p));
-    }
-  t.cell_vertices_.resize(nc);
-  for (int64_t c = 0; c < nc; ++c) {
-    const int d = in.cell_degree[c];
-    const int64_t base = in.cell_offsets[c];
-    const int64_t corner[3] = {in.cell_nodes[base + corner_index(d, 0)],
-                               in.cell_nodes[base + corner_index(d, 1)],
-                               in.cell_nodes[base + corner_index(d, 2)]};
-    for (int k = 0; k < 3; ++k)
-      t.cell_vertices_[c][k] = point_vertex[corner[k]];
-    const auto &v = t.cell_vertices_[c];
-    if (v[0] == v[1] || v[1] == v[2] || v[0] == v[2]) {
-      std::ostringstream m;
-      m << "cell " << c << " uses the same corner point twice (points " << corner[0] << ", "
-        << corner[1] << ", " << corner[2] << ")";
-      problems.add("degenerate cell (repeated corner)", Severity::Error, m.str());
-    }
+  UninitializedVector<int64_t> point_vertex(static_cast<std::size_t>(np));
+  {
+    std::vector<uint8_t> corner(static_cast<std::size_t>(np), 0);
+    parallel_for(nc, cell_threads, [&](int64_t begin, int64_t end, int) {
+      for (int64_t c = begin; c < end; ++c)
+        for (int k = 0; k < 3; ++k)
+          std::atomic_ref<uint8_t>(corner[corner_point(c, k)]).store(1, std::memory_order_relaxed);
+    });
+    // Numbered by blocks of points: counts, their prefix sums, then the ids.
+    const int64_t blocks = problem_blocks(np);
+    std::vector<int64_t> first(static_cast<std::size_t>(blocks) + 1, 0);
+    const int point_threads = threads_for(np, threads, 65536);
+    parallel_chunks(np, blocks, point_threads, [&](int64_t b, int64_t begin, int64_t end, int) {
+      first[b + 1] = std::count(corner.begin() + begin, corner.begin() + end, uint8_t{1});
+    });
+    for (int64_t b = 0; b < blocks; ++b)
+      first[b + 1] += first[b];
+    t.vertex_point_.resize(static_cast<std::size_t>(first[blocks]));
+    parallel_chunks(np, blocks, point_threads, [&](int64_t b, int64_t begin, int64_t end, int) {
+      int64_t next = first[b];
+      for (int64_t p = begin; p < end; ++p)
+        if (corner[p]) {
+          point_vertex[p] = next;
+          t.vertex_point_[next++] = p;
+        } else {
+          point_vertex[p] = -1;
+        }
+    });
   }
+  const int64_t nv = t.num_vertices();
 
-  t.vertex_cell_.assign(t.vertex_point_.size(), -1);
-  t.vertex_corner_.assign(t.vertex_point_.size(), 0);
-  for (int64_t c = nc - 1; c >= 0; --c)
-    for (int k = 0; k < 3; ++k) {
-      t.vertex_cell_[t.cell_vertices_[c][k]] = c;
-      t.vertex_corner_[t.cell_vertices_[c][k]] = static_cast<int8_t>(k);
-    }
+  t.cell_vertices_.resize(nc);
+  {
+    BlockProblems repeated(problem_blocks(nc));
+    parallel_chunks(
+        nc, problem_blocks(nc), cell_threads, [&](int64_t b, int64_t begin, int64_t end, int) {
+          for (int64_t c = begin; c < end; ++c) {
+            const int64_t corner[3] = {corner_point(c, 0), corner_point(c, 1), corner_point(c, 2)};
+            auto &v = t.cell_vertices_[c];
+            for (int k = 0; k < 3; ++k)
+              v[k] = point_vertex[corner[k]];
+            if (v[0] == v[1] || v[1] == v[2] || v[0] == v[2]) {
+              std::ostringstream m;
+              m << "cell " << c << " uses the same corner point twice (points " << corner[0] << ", "
+                << corner[1] << ", " << corner[2] << ")";
+              repeated[b].add("degenerate cell (repeated corner)", Severity::Error, m.str());
+            }
+          }
+        });
+    repeated.append_to(problems);
+  }
+  UninitializedVector<int64_t>().swap(point_vertex);
 
-  // Edges: (lo, hi, cell, local) records in that order, bucketed by lo (a counting sort) and
-  // each bucket (a vertex's few edges) sorted.
-  const int64_t nv = static_cast<int64_t>(t.vertex_point_.size());
-  std::vector<int64_t> bucket(nv + 1, 0);
-  for (int64_t c = 0; c < nc; ++c)
-    for (int k = 0; k < 3; ++k)
-      ++bucket[std::min(t.cell_vertices_[c][k], t.cell_vertices_[c][(k + 1) % 3]) + 1];
+  // Each vertex's lowest-id cell (and, as a cell meets it once unless degenerate, its last
+  // corner there).
+  t.vertex_cell_.assign(static_cast<std::size_t>(nv), nc);
+  parallel_for(nc, cell_threads, [&](int64_t begin, int64_t end, int) {
+    for (int64_t c = begin; c < end; ++c)
+      for (int k = 0; k < 3; ++k) {
+        int64_t &slot = t.vertex_cell_[t.cell_vertices_[c][k]];
+        if (!shared) {
+          slot = std::min(slot, c);
+          continue;
+        }
+        std::atomic_ref<int64_t> lowest(slot);
+        for (int64_t seen = lowest.load(std::memory_order_relaxed);
+             c < seen && !lowest.compare_exchange_weak(seen, c, std::memory_order_relaxed);)
+          ;
+      }
+  });
+  t.vertex_corner_.resize(static_cast<std::size_t>(nv));
+  parallel_for(nc, cell_threads, [&](int64_t begin, int64_t end, int) {
+    for (int64_t c = begin; c < end; ++c)
+      for (int k = 0; k < 3; ++k)
+        if (t.vertex_cell_[t.cell_vertices_[c][k]] == c)
+          t.vertex_corner_[t.cell_vertices_[c][k]] = static_cast<int8_t>(k);
+  });
+
+  // Edges: (lo, hi, cell, local) records in that order, bucketed by lo (a counting sort; the
+  // order within a bucket does not matter, as it is sorted next) and each bucket (a vertex's few
+  // edges) sorted.
+  std::vector<int64_t> bucket(static_cast<std::size_t>(nv) + 1, 0);
+  parallel_for(nc, cell_threads, [&](int64_t begin, int64_t end, int) {
+    for (int64_t c = begin; c < end; ++c)
+      for (int k = 0; k < 3; ++k)
+        add_one(bucket[std::min(t.cell_vertices_[c][k], t.cell_vertices_[c][(k + 1) % 3]) + 1]);
+  });
   for (int64_t v = 0; v < nv; ++v)
     bucket[v + 1] += bucket[v];
-  std::vector<EdgeRecord> rec(static_cast<std::size_t>(3 * nc));
+  UninitializedVector<EdgeRecord> rec(static_cast<std::size_t>(3 * nc));
   {
     std::vector<int64_t> fill(bucket.begin(), bucket.end() - 1);
-    for (int64_t c = 0; c < nc; ++c)
-      for (int k = 0; k < 3; ++k) {
-        const int64_t a = t.cell_vertices_[c][k], b = t.cell_vertices_[c][(k + 1) % 3];
-        rec[fill[std::min(a, b)]++] = {std::max(a, b), 3 * c + k};
-      }
+    parallel_for(nc, cell_threads, [&](int64_t begin, int64_t end, int) {
+      for (int64_t c = begin; c < end; ++c)
+        for (int k = 0; k < 3; ++k) {
+          const int64_t a = t.cell_vertices_[c][k], b = t.cell_vertices_[c][(k + 1) % 3];
+          int64_t &at = fill[std::min(a, b)];
+          const int64_t i =
+              shared ? std::atomic_ref<int64_t>(at).fetch_add(1, std::memory_order_relaxed) : at++;
+          rec[i] = {std::max(a, b), 3 * c + k};
+        }
+    });
   }
-  int64_t edges = 0;
-  for (int64_t v = 0; v < nv; ++v) {
-    std::sort(rec.begin() + bucket[v], rec.begin() + bucket[v + 1]);
-    for (int64_t i = bucket[v]; i < bucket[v + 1]; ++i)
-      edges += i == bucket[v] || rec[i].hi != rec[i - 1].hi;
-  }
-  t.cell_edges_.assign(nc, {-1, -1, -1});
-  t.cell_edge_reversed_.assign(nc, 0);
-  t.edge_vertices_.reserve(static_cast<std::size_t>(edges));
-  t.edge_cells_.reserve(rec.size());
-  t.edge_cell_offset_.reserve(static_cast<std::size_t>(edges) + 1);
-  t.edge_cell_offset_.push_back(0);
+  // Blocks of vertices (their buckets): sorted, and their distinct edges counted, then numbered.
+  const int64_t vblocks = problem_blocks(nv);
+  const int vertex_threads = threads_for(nv, threads, 16384);
+  std::vector<int64_t> edge_first(static_cast<std::size_t>(vblocks) + 1, 0);
+  parallel_chunks(nv, vblocks, vertex_threads, [&](int64_t b, int64_t begin, int64_t end, int) {
+    int64_t edges = 0;
+    for (int64_t v = begin; v < end; ++v) {
+      std::sort(rec.begin() + bucket[v], rec.begin() + bucket[v + 1]);
+      for (int64_t i = bucket[v]; i < bucket[v + 1]; ++i)
+        edges += i == bucket[v] || rec[i].hi != rec[i - 1].hi;
+    }
+    edge_first[b + 1] = edges;
+  });
+  for (int64_t b = 0; b < vblocks; ++b)
+    edge_first[b + 1] += edge_first[b];
+  const int64_t ne = edge_first[vblocks];
+  t.cell_edges_.resize(nc);
+  t.edge_vertices_.resize(static_cast<std::size_t>(ne));
+  t.edge_cells_.resize(rec.size());
+  t.edge_cell_offset_.resize(static_cast<std::size_t>(ne) + 1);
+  t.edge_cell_offset_[ne] = static_cast<int64_t>(rec.size());
   // The local edge of each (edge, cell) incidence, in edge_cells_ order: the orientation walk
   // below finds a neighbour's side of the shared edge there, not by searching the neighbour.
   std::vector<int8_t> incidence_local(rec.size());
-  for (int64_t lo = 0; lo < nv; ++lo)
-    for (int64_t i = bucket[lo]; i < bucket[lo + 1];) {
-      int64_t j = i;
-      while (j < bucket[lo + 1] && rec[j].hi == rec[i].hi)
-        ++j;
-      const int64_t hi = rec[i].hi;
-      const int64_t e = static_cast<int64_t>(t.edge_vertices_.size());
-      t.edge_vertices_.push_back({lo, hi});
-      for (int64_t r = i; r < j; ++r) {
-        const int64_t cell = rec[r].cell_local / 3;
-        const int local = static_cast<int>(rec[r].cell_local % 3);
-        t.cell_edges_[cell][local] = e;
-        if (t.cell_vertices_[cell][local] != lo)
-          t.cell_edge_reversed_[cell] |= static_cast<uint8_t>(1u << local);
-        incidence_local[t.edge_cells_.size()] = static_cast<int8_t>(local);
-        t.edge_cells_.push_back(cell);
-      }
-      t.edge_cell_offset_.push_back(static_cast<int64_t>(t.edge_cells_.size()));
-      const int64_t count = j - i;
-      if (count == 1)
-        ++t.boundary_edges_;
-      if (count > 2) {
-        std::ostringstream m;
-        m << "edge between points " << t.vertex_point_[lo] << " and " << t.vertex_point_[hi]
-          << " is shared by " << count << " cells (";
-        for (int64_t r = i; r < j; ++r)
-          m << (r > i ? ", " : "") << rec[r].cell_local / 3;
-        m << ")";
-        problems.add("non-manifold edge", Severity::Error, m.str());
-      }
-      if (count == 2 && rec[i].cell_local / 3 == rec[i + 1].cell_local / 3) {
-        problems.add("degenerate cell (repeated edge)", Severity::Error,
-                     "cell " + std::to_string(rec[i].cell_local / 3) + " uses the same edge twice");
-      }
-      i = j;
+  {
+    BlockProblems found(vblocks);
+    std::vector<int64_t> boundary(static_cast<std::size_t>(vblocks), 0);
+    parallel_chunks(nv, vblocks, vertex_threads, [&](int64_t b, int64_t begin, int64_t end, int) {
+      int64_t e = edge_first[b];
+      for (int64_t lo = begin; lo < end; ++lo)
+        for (int64_t i = bucket[lo]; i < bucket[lo + 1]; ++e) {
+          int64_t j = i;
+          while (j < bucket[lo + 1] && rec[j].hi == rec[i].hi)
+            ++j;
+          const int64_t hi = rec[i].hi;
+          t.edge_vertices_[e] = {lo, hi};
+          t.edge_cell_offset_[e] = i;
+          for (int64_t r = i; r < j; ++r) {
+            const int64_t cell = rec[r].cell_local / 3;
+            const int local = static_cast<int>(rec[r].cell_local % 3);
+            t.cell_edges_[cell][local] = e;
+            incidence_local[r] = static_cast<int8_t>(local);
+            t.edge_cells_[r] = cell;
+          }
+          const int64_t count = j - i;
+          if (count == 1)
+            ++boundary[b];
+          if (count > 2) {
+            std::ostringstream m;
+            m << "edge between points " << t.vertex_point_[lo] << " and " << t.vertex_point_[hi]
+              << " is shared by " << count << " cells (";
+            for (int64_t r = i; r < j; ++r)
+              m << (r > i ? ", " : "") << rec[r].cell_local / 3;
+            m << ")";
+            found[b].add("non-manifold edge", Severity::Error, m.str());
+          }
+          if (count == 2 && rec[i].cell_local / 3 == rec[i + 1].cell_local / 3) {
+            found[b].add("degenerate cell (repeated edge)", Severity::Error,
+                         "cell " + std::to_string(rec[i].cell_local / 3) +
+                             " uses the same edge twice");
+          }
+          i = j;
+        }
+    });
+    found.append_to(problems);
+    for (int64_t n : boundary)
+      t.boundary_edges_ += n;
+  }
+  UninitializedVector<EdgeRecord>().swap(rec);
+  t.cell_edge_reversed_.resize(nc);
+  parallel_for(nc, cell_threads, [&](int64_t begin, int64_t end, int) {
+    for (int64_t c = begin; c < end; ++c) {
+      uint8_t reversed = 0;
+      for (int k = 0; k < 3; ++k)
+        if (t.cell_vertices_[c][k] != t.edge_vertices_[t.cell_edges_[c][k]][0])
+          reversed |= static_cast<uint8_t>(1u << k);
+      t.cell_edge_reversed_[c] = reversed;
     }
-  std::vector<EdgeRecord>().swap(rec);
+  });
 
   // Components and a consistent orientation. Most inputs are consistently oriented already (the
   // two cells of every manifold edge run it in opposite directions): then every cell keeps
   // parity +1, as the walk below would give it, and only the components remain to count, by
   // disjoint sets over the edges in edge order (no walk from cell to cell through memory).
-  bool consistent = true;
-  for (int64_t e = 0; e < t.num_edges() && consistent; ++e) {
-    const int64_t at = t.edge_cell_offset_[e];
-    if (t.edge_cell_offset_[e + 1] - at != 2)
-      continue;
-    const int64_t c0 = t.edge_cells_[at], c1 = t.edge_cells_[at + 1];
-    consistent = c0 == c1 || t.edge_reversed(c0, incidence_local[at]) !=
-                                 t.edge_reversed(c1, incidence_local[at + 1]);
-  }
-  if (consistent) {
-    t.cell_parity_.assign(nc, 1);
-    UnionFind cells(static_cast<std::size_t>(nc));
-    for (int64_t e = 0; e < t.num_edges(); ++e) {
+  const int edge_threads = threads_for(ne, threads, 32768);
+  std::atomic<bool> consistent{true};
+  parallel_for(ne, edge_threads, [&](int64_t begin, int64_t end, int) {
+    for (int64_t e = begin; e < end && consistent.load(std::memory_order_relaxed); ++e) {
       const int64_t at = t.edge_cell_offset_[e];
-      if (t.edge_cell_offset_[e + 1] - at == 2)
-        cells.unite(t.edge_cells_[at], t.edge_cells_[at + 1]);
+      if (t.edge_cell_offset_[e + 1] - at != 2)
+        continue;
+      const int64_t c0 = t.edge_cells_[at], c1 = t.edge_cells_[at + 1];
+      if (c0 != c1 &&
+          t.edge_reversed(c0, incidence_local[at]) == t.edge_reversed(c1, incidence_local[at + 1]))
+        consistent.store(false, std::memory_order_relaxed);
     }
-    for (int64_t c = 0; c < nc; ++c)
-      t.components_ += cells.find(c) == c;
+  });
+  if (consistent) {
+    t.cell_parity_.resize(nc);
+    std::fill(t.cell_parity_.begin(), t.cell_parity_.end(), int8_t{1});
+    ConcurrentSets cells(nc, threads);
+    parallel_for(ne, edge_threads, [&](int64_t begin, int64_t end, int) {
+      for (int64_t e = begin; e < end; ++e) {
+        const int64_t at = t.edge_cell_offset_[e];
+        if (t.edge_cell_offset_[e + 1] - at == 2)
+          cells.unite(t.edge_cells_[at], t.edge_cells_[at + 1]);
+      }
+    });
+    t.components_ = cells.count(threads);
   }
   // Otherwise a breadth-first walk over manifold edges gives each cell its parity.
-  if (!consistent)
-    t.cell_parity_.assign(nc, 0);
+  if (!consistent) {
+    t.cell_parity_.resize(nc);
+    std::fill(t.cell_parity_.begin(), t.cell_parity_.end(), int8_t{0});
+  }
   std::vector<int64_t> queue;
   int64_t orientation_conflicts = 0;
   for (int64_t s = 0; s < nc && !consistent; ++s) {
@@ -205,49 +306,72 @@ Topology Topology::build(const MeshInput &in, ProblemLog &problems) {
 
   // Boundary loops: components of the boundary-edge graph; every boundary vertex of a manifold
   // has exactly two boundary edges.
-  std::vector<int> boundary_degree(t.vertex_point_.size(), 0);
-  UnionFind uf(t.vertex_point_.size());
-  for (int64_t e = 0; e < t.num_edges(); ++e)
-    if (t.is_boundary_edge(e)) {
-      ++boundary_degree[t.edge_vertices_[e][0]];
-      ++boundary_degree[t.edge_vertices_[e][1]];
-      uf.unite(t.edge_vertices_[e][0], t.edge_vertices_[e][1]);
-    }
-  for (std::size_t v = 0; v < boundary_degree.size(); ++v) {
-    if (boundary_degree[v] == 0)
-      continue;
-    if (uf.find(static_cast<int64_t>(v)) == static_cast<int64_t>(v))
-      ++t.boundary_loops_;
-    if (boundary_degree[v] != 2)
-      problems.add("non-manifold vertex", Severity::Error,
-                   "point " + std::to_string(t.vertex_point_[v]) + " touches " +
-                       std::to_string(boundary_degree[v]) +
-                       " boundary edges (a pinch: two boundary loops meet there)");
+  const int vertex_loop_threads = threads_for(nv, threads, 32768);
+  std::vector<int64_t> boundary_degree(static_cast<std::size_t>(nv), 0);
+  {
+    ConcurrentSets loops(nv, threads);
+    parallel_for(ne, edge_threads, [&](int64_t begin, int64_t end, int) {
+      for (int64_t e = begin; e < end; ++e)
+        if (t.is_boundary_edge(e)) {
+          add_one(boundary_degree[t.edge_vertices_[e][0]]);
+          add_one(boundary_degree[t.edge_vertices_[e][1]]);
+          loops.unite(t.edge_vertices_[e][0], t.edge_vertices_[e][1]);
+        }
+    });
+    BlockProblems pinched(vblocks);
+    std::vector<int64_t> roots(static_cast<std::size_t>(vblocks), 0);
+    parallel_chunks(nv, vblocks, vertex_loop_threads,
+                    [&](int64_t b, int64_t begin, int64_t end, int) {
+                      for (int64_t v = begin; v < end; ++v) {
+                        if (boundary_degree[v] == 0)
+                          continue;
+                        roots[b] += loops.find(v) == v;
+                        if (boundary_degree[v] != 2)
+                          pinched[b].add("non-manifold vertex", Severity::Error,
+                                         "point " + std::to_string(t.vertex_point_[v]) +
+                                             " touches " + std::to_string(boundary_degree[v]) +
+                                             " boundary edges (a pinch: two boundary loops meet "
+                                             "there)");
+                      }
+                    });
+    pinched.append_to(problems);
+    for (int64_t r : roots)
+      t.boundary_loops_ += r;
   }
 
   // Vertices whose cells form more than one fan (pinched at an interior vertex), found by
   // counting, per vertex, the cells and the manifold edges that join them around it.
-  std::vector<int64_t> vcells(t.vertex_point_.size(), 0), vlinks(t.vertex_point_.size(), 0);
-  for (int64_t c = 0; c < nc; ++c)
-    for (int k = 0; k < 3; ++k)
-      ++vcells[t.cell_vertices_[c][k]];
-  for (int64_t e = 0; e < t.num_edges(); ++e)
-    if (t.edge_cell_count(e) == 2) {
-      ++vlinks[t.edge_vertices_[e][0]];
-      ++vlinks[t.edge_vertices_[e][1]];
-    }
-  for (std::size_t v = 0; v < vcells.size(); ++v) {
-    // One fan: a cycle (links == cells, no boundary) or a path (links == cells - 1).
-    const bool ok = boundary_degree[v] == 0
-                        ? vlinks[v] == vcells[v]
-                        : (boundary_degree[v] == 2 && vlinks[v] == vcells[v] - 1);
-    if (!ok && boundary_degree[v] <= 2 && t.num_edges() > 0 &&
-        problems.count("non-manifold edge") == 0)
-      problems.add("non-manifold vertex", Severity::Error,
-                   "point " + std::to_string(t.vertex_point_[v]) +
-                       ": its cells form more than one fan (two parts of the surface touch at a "
-                       "single vertex)");
-  }
+  std::vector<int64_t> vcells(static_cast<std::size_t>(nv), 0), vlinks(vcells.size(), 0);
+  parallel_for(nc, cell_threads, [&](int64_t begin, int64_t end, int) {
+    for (int64_t c = begin; c < end; ++c)
+      for (int k = 0; k < 3; ++k)
+        add_one(vcells[t.cell_vertices_[c][k]]);
+  });
+  parallel_for(ne, edge_threads, [&](int64_t begin, int64_t end, int) {
+    for (int64_t e = begin; e < end; ++e)
+      if (t.edge_cell_count(e) == 2) {
+        add_one(vlinks[t.edge_vertices_[e][0]]);
+        add_one(vlinks[t.edge_vertices_[e][1]]);
+      }
+  });
+  const bool nonmanifold_edges = problems.count("non-manifold edge") > 0;
+  BlockProblems fans(vblocks);
+  parallel_chunks(
+      nv, vblocks, vertex_loop_threads, [&](int64_t b, int64_t begin, int64_t end, int) {
+        for (int64_t v = begin; v < end; ++v) {
+          // One fan: a cycle (links == cells, no boundary) or a path (links == cells - 1).
+          const bool ok = boundary_degree[v] == 0
+                              ? vlinks[v] == vcells[v]
+                              : (boundary_degree[v] == 2 && vlinks[v] == vcells[v] - 1);
+          if (!ok && boundary_degree[v] <= 2 && ne > 0 && !nonmanifold_edges)
+            fans[b].add(
+                "non-manifold vertex", Severity::Error,
+                "point " + std::to_string(t.vertex_point_[v]) +
+                    ": its cells form more than one fan (two parts of the surface touch at a "
+                    "single vertex)");
+        }
+      });
+  fans.append_to(problems);
   return t;
 }
 

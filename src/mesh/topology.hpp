@@ -8,6 +8,7 @@
 
 #include "mesh/mesh_input.hpp"
 #include "mesh/problem_log.hpp"
+#include "util/uninitialized_vector.hpp"
 
 #include <array>
 #include <cstdint>
@@ -20,7 +21,8 @@ class Topology {
 public:
   // Builds the skeleton; records non-manifold edges and vertices, repeated corners and
   // inconsistent orientation in `problems`. Cells must reference valid point indices.
-  static Topology build(const MeshInput &input, ProblemLog &problems);
+  // `threads`: most passes run in parallel; the result and the report do not depend on it.
+  static Topology build(const MeshInput &input, ProblemLog &problems, int threads = 1);
 
   int64_t num_vertices() const { return static_cast<int64_t>(vertex_point_.size()); }
   int64_t num_edges() const { return static_cast<int64_t>(edge_vertices_.size()); }
@@ -56,14 +58,15 @@ public:
   int8_t cell_parity(int64_t c) const { return cell_parity_[c]; }
 
 private:
-  std::vector<int64_t> vertex_point_, vertex_cell_;
-  std::vector<int8_t> vertex_corner_;
-  std::vector<std::array<int64_t, 3>> cell_vertices_;
-  std::vector<std::array<int64_t, 2>> edge_vertices_;
-  std::vector<std::array<int64_t, 3>> cell_edges_;
-  std::vector<uint8_t> cell_edge_reversed_;
-  std::vector<int64_t> edge_cell_offset_, edge_cells_;
-  std::vector<int8_t> cell_parity_;
+  // Sized, then filled completely by parallel passes (their pages first touched by those).
+  UninitializedVector<int64_t> vertex_point_, vertex_cell_;
+  UninitializedVector<int8_t> vertex_corner_;
+  UninitializedVector<std::array<int64_t, 3>> cell_vertices_;
+  UninitializedVector<std::array<int64_t, 2>> edge_vertices_;
+  UninitializedVector<std::array<int64_t, 3>> cell_edges_;
+  UninitializedVector<uint8_t> cell_edge_reversed_;
+  UninitializedVector<int64_t> edge_cell_offset_, edge_cells_;
+  UninitializedVector<int8_t> cell_parity_;
   int64_t boundary_loops_ = 0, boundary_edges_ = 0, components_ = 0;
   bool orientable_ = true;
 };
