@@ -21,7 +21,7 @@ Mesh build_mesh(const MeshInput &input, const MeshBuildOptions &options) {
   m.source = input.source;
   m.field_name = input.field_name;
   m.num_points = static_cast<int64_t>(input.points.size());
-  const bool structural_ok = check_input(input, m.problems);
+  const bool structural_ok = check_input(input, m.problems, options.threads);
   if (structural_ok) {
     m.topology = Topology::build(input, m.problems, options.threads);
     check_duplicate_vertices(input, m.topology, m.problems, options.threads);
@@ -44,7 +44,7 @@ Mesh build_mesh_from_samples(const MeshInput &input, const std::vector<CellSampl
     m.problems.add("inconsistent arrays", Severity::Error,
                    std::to_string(samples.size()) + " sample sets for " +
                        std::to_string(input.num_cells()) + " cells");
-  else if (check_input(input, m.problems)) {
+  else if (check_input(input, m.problems, options.threads)) {
     m.topology = Topology::build(input, m.problems, options.threads);
     check_duplicate_vertices(input, m.topology, m.problems, options.threads);
     std::vector<BernsteinTriangle> polys(samples.size());

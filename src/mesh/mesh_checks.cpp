@@ -4,7 +4,10 @@
 #include "poly/lagrange_to_bernstein.hpp"
 #include "poly/lattice.hpp"
 
+#include "util/parallel_for.hpp"
+
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <sstream>
 
@@ -22,9 +25,70 @@ std::string format_double(double v) {
   return s.str();
 }
 
+// The checks of point p: finite coordinates and value, within the magnitude the cell
+// computations can multiply.
+void check_point(const MeshInput &in, int64_t p, ProblemLog &problems) {
+  const auto &x = in.points[p];
+  if (!std::isfinite(x[0]) || !std::isfinite(x[1]) || !std::isfinite(x[2]))
+    problems.add("non-finite point coordinate", Severity::Error,
+                 "point " + std::to_string(p) + " has a NaN or infinite coordinate");
+  else if (std::abs(x[0]) > kMaxMagnitude || std::abs(x[1]) > kMaxMagnitude ||
+           std::abs(x[2]) > kMaxMagnitude)
+    problems.add("coordinate out of range", Severity::Error,
+                 "point " + std::to_string(p) + " has a coordinate beyond 1e100 in magnitude " +
+                     "(products of coordinates would overflow double precision)");
+  if (!std::isfinite(in.values[p]))
+    problems.add("non-finite value", Severity::Error,
+                 "point " + std::to_string(p) + " has value " + std::to_string(in.values[p]));
+  else if (std::abs(in.values[p]) > kMaxMagnitude)
+    problems.add("value out of range", Severity::Error,
+                 "point " + std::to_string(p) + " has value " + format_double(in.values[p]) +
+                     ", beyond 1e100 in magnitude (the Bernstein form and the root isolation "
+                     "would overflow double precision; rescale the field)");
+}
+
+// The checks of cell c (`seen`: scratch): a supported degree with its number of nodes, node ids
+// in range and distinct. False if the cell cannot be used at all.
+bool check_cell(const MeshInput &in, int64_t c, std::vector<int64_t> &seen, ProblemLog &problems) {
+  const int64_t np = static_cast<int64_t>(in.points.size());
+  const int d = in.cell_degree[c];
+  const int64_t n = in.cell_offsets[c + 1] - in.cell_offsets[c];
+  if (d < 1 || n != lattice_size(d)) {
+    problems.add("bad cell", Severity::Error,
+                 "cell " + std::to_string(c) + " has degree " + std::to_string(d) + " but " +
+                     std::to_string(n) + " nodes");
+    return false;
+  }
+  // The conversions to Bernstein form (and the per-edge buffers of Field) stop at kMaxDegree.
+  if (d > kMaxDegree) {
+    problems.add("unsupported degree", Severity::Error,
+                 "cell " + std::to_string(c) + " has degree " + std::to_string(d) + " (at most " +
+                     std::to_string(kMaxDegree) + " supported)");
+    return false;
+  }
+  bool ok = true;
+  seen.assign(in.cell_nodes.begin() + in.cell_offsets[c],
+              in.cell_nodes.begin() + in.cell_offsets[c + 1]);
+  for (int64_t id : seen)
+    if (id < 0 || id >= np) {
+      problems.add("missing node", Severity::Error,
+                   "cell " + std::to_string(c) + " refers to point " + std::to_string(id) +
+                       ", but there are " + std::to_string(np) + " points");
+      ok = false;
+      break;
+    }
+  std::sort(seen.begin(), seen.end());
+  if (std::adjacent_find(seen.begin(), seen.end()) != seen.end())
+    problems.add("inconsistent nodes", Severity::Error,
+                 "cell " + std::to_string(c) + " uses point " +
+                     std::to_string(*std::adjacent_find(seen.begin(), seen.end())) +
+                     " for two of its nodes");
+  return ok;
+}
+
 } // namespace
 
-bool check_input(const MeshInput &in, ProblemLog &problems) {
+bool check_input(const MeshInput &in, ProblemLog &problems, int threads) {
   bool ok = true;
   const int64_t np = static_cast<int64_t>(in.points.size());
   if (in.values.size() != in.points.size()) {
@@ -42,25 +106,16 @@ bool check_input(const MeshInput &in, ProblemLog &problems) {
     problems.add("empty mesh", Severity::Error, "the mesh has no triangle cells");
     return false;
   }
-  for (int64_t p = 0; p < np; ++p) {
-    const auto &x = in.points[p];
-    if (!std::isfinite(x[0]) || !std::isfinite(x[1]) || !std::isfinite(x[2]))
-      problems.add("non-finite point coordinate", Severity::Error,
-                   "point " + std::to_string(p) + " has a NaN or infinite coordinate");
-    else if (std::abs(x[0]) > kMaxMagnitude || std::abs(x[1]) > kMaxMagnitude ||
-             std::abs(x[2]) > kMaxMagnitude)
-      problems.add("coordinate out of range", Severity::Error,
-                   "point " + std::to_string(p) + " has a coordinate beyond 1e100 in magnitude " +
-                       "(products of coordinates would overflow double precision)");
-    if (!std::isfinite(in.values[p]))
-      problems.add("non-finite value", Severity::Error,
-                   "point " + std::to_string(p) + " has value " + std::to_string(in.values[p]));
-    else if (std::abs(in.values[p]) > kMaxMagnitude)
-      problems.add("value out of range", Severity::Error,
-                   "point " + std::to_string(p) + " has value " + format_double(in.values[p]) +
-                       ", beyond 1e100 in magnitude (the Bernstein form and the root isolation "
-                       "would overflow double precision; rescale the field)");
-  }
+  // Points, then cells, in fixed blocks on threads (problems appended in block order).
+  const int64_t point_blocks = problem_blocks(np);
+  BlockProblems point_problems(point_blocks);
+  parallel_chunks(np, point_blocks, threads_for(np, threads, 65536),
+                  [&](int64_t block, int64_t begin, int64_t end, int) {
+                    ProblemLog &log = point_problems[block];
+                    for (int64_t p = begin; p < end; ++p)
+                      check_point(in, p, log);
+                  });
+  point_problems.append_to(problems);
   double lo = INFINITY, hi = -INFINITY;
   for (double v : in.values)
     if (std::isfinite(v)) {
@@ -75,42 +130,19 @@ bool check_input(const MeshInput &in, ProblemLog &problems) {
          "field";
     problems.add("value range too small", Severity::Error, m.str());
   }
-  std::vector<int64_t> seen;
-  for (std::size_t c = 0; c < in.cell_degree.size(); ++c) {
-    const int d = in.cell_degree[c];
-    const int64_t n = in.cell_offsets[c + 1] - in.cell_offsets[c];
-    if (d < 1 || n != lattice_size(d)) {
-      problems.add("bad cell", Severity::Error,
-                   "cell " + std::to_string(c) + " has degree " + std::to_string(d) + " but " +
-                       std::to_string(n) + " nodes");
-      ok = false;
-      continue;
-    }
-    // The conversions to Bernstein form (and the per-edge buffers of Field) stop at kMaxDegree.
-    if (d > kMaxDegree) {
-      problems.add("unsupported degree", Severity::Error,
-                   "cell " + std::to_string(c) + " has degree " + std::to_string(d) + " (at most " +
-                       std::to_string(kMaxDegree) + " supported)");
-      ok = false;
-      continue;
-    }
-    seen.assign(in.cell_nodes.begin() + in.cell_offsets[c],
-                in.cell_nodes.begin() + in.cell_offsets[c + 1]);
-    for (int64_t id : seen)
-      if (id < 0 || id >= np) {
-        problems.add("missing node", Severity::Error,
-                     "cell " + std::to_string(c) + " refers to point " + std::to_string(id) +
-                         ", but there are " + std::to_string(np) + " points");
-        ok = false;
-        break;
-      }
-    std::sort(seen.begin(), seen.end());
-    if (std::adjacent_find(seen.begin(), seen.end()) != seen.end())
-      problems.add("inconsistent nodes", Severity::Error,
-                   "cell " + std::to_string(c) + " uses point " +
-                       std::to_string(*std::adjacent_find(seen.begin(), seen.end())) +
-                       " for two of its nodes");
-  }
+  const int64_t nc = static_cast<int64_t>(in.cell_degree.size());
+  const int64_t cell_blocks = problem_blocks(nc);
+  BlockProblems cell_problems(cell_blocks);
+  std::atomic<bool> cells_ok{true};
+  parallel_chunks(nc, cell_blocks, threads_for(nc, threads, 32768),
+                  [&](int64_t block, int64_t begin, int64_t end, int) {
+                    std::vector<int64_t> seen;
+                    for (int64_t c = begin; c < end; ++c)
+                      if (!check_cell(in, c, seen, cell_problems[block]))
+                        cells_ok.store(false, std::memory_order_relaxed);
+                  });
+  cell_problems.append_to(problems);
+  ok = ok && cells_ok.load();
   return ok && problems.count("inconsistent nodes") == 0;
 }
 

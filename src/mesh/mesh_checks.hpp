@@ -21,7 +21,7 @@ inline constexpr double kMinValueRange = 1e-140;
 // repeated within a cell, finite point coordinates, finite values of at most kMaxAbsValue
 // spanning 0 or at least kMinValueRange. Returns
 // false if the input is too broken to build a topology from (the problems say why).
-bool check_input(const MeshInput &input, ProblemLog &problems);
+bool check_input(const MeshInput &input, ProblemLog &problems, int threads = 1);
 
 // Distinct vertices (cell corners) at the same position, within 1e-10 of the bounding-box
 // diagonal: a crack in the mesh (merge_duplicate_points repairs it).

@@ -3,6 +3,7 @@
 // thread (passes start a second thread only from 16k-65k items), and the counts match what the
 // meshes are built to have.
 #include "mesh/field.hpp"
+#include "mesh/mesh_checks.hpp"
 #include "mesh/topology.hpp"
 #include "test_meshes.hpp"
 #include "util/concurrent_sets.hpp"
@@ -11,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <random>
 
@@ -182,6 +184,37 @@ TEST(Topology, SameProblemsOnAnyThreadCount) {
   Field::build(in, two.topology, p2, 2);
   EXPECT_EQ(p1.count("discontinuous field across an edge"), 10);
   EXPECT_EQ(p1.summary(), p2.summary());
+}
+
+TEST(MeshChecks, SameInputReportOnAnyThreadCount) {
+  // Bad points and cells spread over a large input: the same verdict and report on 1, 2 and 3
+  // threads, with the counts the input is built to have.
+  std::mt19937_64 rng(13);
+  std::vector<Vec3> v;
+  std::vector<std::array<int64_t, 3>> t;
+  two_grids(rng, v, t);
+  MeshInput in = testing::lagrange_mesh(
+      v, t, [](int64_t) { return 2; }, nullptr, nullptr, rng);
+  const int64_t np = static_cast<int64_t>(in.points.size());
+  const int64_t nc = static_cast<int64_t>(in.num_cells());
+  for (int k = 0; k < 7; ++k) {
+    in.points[static_cast<std::size_t>(k * np / 7)][1] = std::nan("");
+    in.values[static_cast<std::size_t>(k * np / 7 + 3)] = 1e120;
+    in.cell_nodes[in.cell_offsets[k * nc / 7 + 5] + 1] = np + k; // missing point
+    in.cell_nodes[in.cell_offsets[k * nc / 7 + 9] + 4] =
+        in.cell_nodes[in.cell_offsets[k * nc / 7 + 9] + 2]; // a node twice
+  }
+  ProblemLog one, two, three;
+  const bool ok1 = check_input(in, one, 1);
+  EXPECT_EQ(check_input(in, two, 2), ok1);
+  EXPECT_EQ(check_input(in, three, 3), ok1);
+  EXPECT_FALSE(ok1);
+  EXPECT_EQ(one.count("non-finite point coordinate"), 7);
+  EXPECT_EQ(one.count("value out of range"), 7);
+  EXPECT_EQ(one.count("missing node"), 7);
+  EXPECT_EQ(one.count("inconsistent nodes"), 7);
+  EXPECT_EQ(one.summary(), two.summary());
+  EXPECT_EQ(one.summary(), three.summary());
 }
 
 TEST(ConcurrentSets, SamePartitionAsSerialUnions) {
