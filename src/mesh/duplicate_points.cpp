@@ -1,7 +1,7 @@
 #include "mesh/duplicate_points.hpp"
 
 #include "error.hpp"
-#include "tree/union_find.hpp"
+#include "util/concurrent_sets.hpp"
 #include "util/parallel_for.hpp"
 #include "util/parallel_sort.hpp"
 #include "util/uninitialized_vector.hpp"
@@ -51,11 +51,16 @@ std::vector<int64_t> coincident_points(const std::vector<Vec3> &points,
   std::vector<int64_t> result(candidates.begin(), candidates.end());
   if (n < 2 || !(tolerance > 0) || !std::isfinite(tolerance))
     return result;
-  Vec3 lo = points[candidates[0]];
+  Vec3 lo = points[candidates[0]], hi = lo;
   for (int64_t c : candidates)
-    for (int i = 0; i < 3; ++i)
+    for (int i = 0; i < 3; ++i) {
       lo[i] = std::min(lo[i], points[c][i]);
-  UnionFind uf(n);
+      hi[i] = std::max(hi[i], points[c][i]);
+    }
+  // An axis along which every point has the same coordinate (z of a planar mesh) has no
+  // neighbouring cells to look in: no point is "near a face" across it.
+  const bool spread[3] = {hi[0] > lo[0], hi[1] > lo[1], hi[2] > lo[2]};
+  ConcurrentSets uf(static_cast<int64_t>(n), threads);
   const double tol2 = tolerance * tolerance;
   auto close = [&](std::size_t i, std::size_t j) {
     const Vec3 &p = points[candidates[i]], &q = points[candidates[j]];
@@ -82,6 +87,8 @@ std::vector<int64_t> coincident_points(const std::vector<Vec3> &points,
       sorted[i] = {key, static_cast<std::size_t>(i)};
       uint8_t near = 0;
       for (int ax = 0; ax < 3; ++ax) {
+        if (!spread[ax])
+          continue;
         const double x = p[ax] - lo[ax];
         // Within two tolerances (a margin for the rounding of the keys).
         if (x - 2 * tolerance < static_cast<double>(key[ax]) * h)
@@ -133,46 +140,63 @@ std::vector<int64_t> coincident_points(const std::vector<Vec3> &points,
     }
     a = b;
   }
-  // Points within the tolerance of a face of their coarse cell: against the neighbouring cells.
-  for (const auto &[key, i] : sorted) {
-    const unsigned f = faces[i];
-    if (f == 0)
-      continue;
-    int lo_side[3], hi_side[3];
-    for (int ax = 0; ax < 3; ++ax) {
-      lo_side[ax] = (f >> (2 * ax)) & 1u ? -1 : 0;
-      hi_side[ax] = (f >> (2 * ax + 1)) & 1u ? 1 : 0;
-    }
-    for (int dx = lo_side[0]; dx <= hi_side[0]; ++dx)
-      for (int dy = lo_side[1]; dy <= hi_side[1]; ++dy)
-        for (int dz = lo_side[2]; dz <= hi_side[2]; ++dz) {
-          if (dx == 0 && dy == 0 && dz == 0)
-            continue;
-          const Key k = {key[0] + dx, key[1] + dy, key[2] + dz};
-          const auto b =
-              std::lower_bound(sorted.begin(), sorted.end(), std::make_pair(k, std::size_t{0}));
-          if (b == sorted.end() || b->first != k)
-            continue;
-          const std::size_t start = static_cast<std::size_t>(b - sorted.begin());
-          const auto c = std::lower_bound(crowded_at.begin(), crowded_at.end(),
-                                          std::make_pair(start, std::size_t{0}));
-          if (c != crowded_at.end() && c->first == start) {
-            search_fine(crowded[c->second], i);
-            continue;
+  // Points within the tolerance of a face of their coarse cell: against the neighbouring cells,
+  // in key order (neighbouring lookups share their search paths; a flat mesh has every point
+  // near a face), on threads (unions commute).
+  parallel_for(count, threads_for(count, threads, 65536), [&](int64_t begin, int64_t end, int) {
+    for (int64_t at = begin; at < end; ++at) {
+      const auto &[key, i] = sorted[static_cast<std::size_t>(at)];
+      const unsigned f = faces[i];
+      if (f == 0)
+        continue;
+      int lo_side[3], hi_side[3];
+      for (int ax = 0; ax < 3; ++ax) {
+        lo_side[ax] = (f >> (2 * ax)) & 1u ? -1 : 0;
+        hi_side[ax] = (f >> (2 * ax + 1)) & 1u ? 1 : 0;
+      }
+      for (int dx = lo_side[0]; dx <= hi_side[0]; ++dx)
+        for (int dy = lo_side[1]; dy <= hi_side[1]; ++dy)
+          for (int dz = lo_side[2]; dz <= hi_side[2]; ++dz) {
+            if (dx == 0 && dy == 0 && dz == 0)
+              continue;
+            const Key k = {key[0] + dx, key[1] + dy, key[2] + dz};
+            const auto b =
+                std::lower_bound(sorted.begin(), sorted.end(), std::make_pair(k, std::size_t{0}));
+            if (b == sorted.end() || b->first != k)
+              continue;
+            const std::size_t start = static_cast<std::size_t>(b - sorted.begin());
+            const auto c = std::lower_bound(crowded_at.begin(), crowded_at.end(),
+                                            std::make_pair(start, std::size_t{0}));
+            if (c != crowded_at.end() && c->first == start) {
+              search_fine(crowded[c->second], i);
+              continue;
+            }
+            for (auto it = b; it != sorted.end() && it->first == k; ++it)
+              if (close(i, it->second))
+                uf.unite(static_cast<int64_t>(i), static_cast<int64_t>(it->second));
           }
-          for (auto it = b; it != sorted.end() && it->first == k; ++it)
-            if (close(i, it->second))
-              uf.unite(static_cast<int64_t>(i), static_cast<int64_t>(it->second));
-        }
+    }
+  });
+  // Each group's root is its first candidate: with ascending candidates (the mesh's vertices,
+  // every point) also its smallest id; otherwise the smallest is looked for.
+  UninitializedVector<int64_t> root(n);
+  parallel_for(count, threads_for(count, threads, 65536), [&](int64_t begin, int64_t end, int) {
+    for (int64_t i = begin; i < end; ++i)
+      root[i] = uf.find(i);
+  });
+  if (std::is_sorted(candidates.begin(), candidates.end())) {
+    for (std::size_t i = 0; i < n; ++i)
+      result[i] = candidates[root[i]];
+    return result;
   }
   std::vector<int64_t> smallest(n, -1);
   for (std::size_t i = 0; i < n; ++i) {
-    int64_t &m = smallest[uf.find(static_cast<int64_t>(i))];
+    int64_t &m = smallest[root[i]];
     if (m < 0 || candidates[i] < m)
       m = candidates[i];
   }
   for (std::size_t i = 0; i < n; ++i)
-    result[i] = smallest[uf.find(static_cast<int64_t>(i))];
+    result[i] = smallest[root[i]];
   return result;
 }
 

@@ -2,6 +2,7 @@
 // build bit for bit, on meshes large enough that every parallel pass runs on more than one
 // thread (passes start a second thread only from 16k-65k items), and the counts match what the
 // meshes are built to have.
+#include "mesh/duplicate_points.hpp"
 #include "mesh/field.hpp"
 #include "mesh/mesh_checks.hpp"
 #include "mesh/topology.hpp"
@@ -14,6 +15,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <numeric>
 #include <random>
 
 namespace hoct {
@@ -215,6 +217,46 @@ TEST(MeshChecks, SameInputReportOnAnyThreadCount) {
   EXPECT_EQ(one.count("inconsistent nodes"), 7);
   EXPECT_EQ(one.summary(), two.summary());
   EXPECT_EQ(one.summary(), three.summary());
+}
+
+TEST(DuplicatePoints, PlantedDuplicatesOnAnyThreadCount) {
+  // 160,000 jittered lattice points one unit apart, with a copy 0.5 tolerances away planted next
+  // to every 997th (found: same group) and one 2 tolerances away next to every 991st (not).
+  // Candidates in ascending and in shuffled order, on 1, 2 and 3 threads: each point's group is
+  // represented by its smallest id.
+  const double tol = 1e-3;
+  std::mt19937_64 rng(21);
+  std::uniform_real_distribution<double> J(-0.1, 0.1), U(-1, 1);
+  std::vector<Vec3> pts;
+  for (int j = 0; j < 400; ++j)
+    for (int i = 0; i < 400; ++i)
+      pts.push_back({i + J(rng), j + J(rng), J(rng)});
+  const int64_t lattice = static_cast<int64_t>(pts.size());
+  std::vector<int64_t> expected(pts.size());
+  std::iota(expected.begin(), expected.end(), 0);
+  auto plant = [&](int64_t p, double distance) {
+    Vec3 d{U(rng), U(rng), U(rng)};
+    const double len = std::hypot(d[0], d[1], d[2]);
+    const Vec3 &q = pts[static_cast<std::size_t>(p)];
+    pts.push_back(
+        {q[0] + distance * d[0] / len, q[1] + distance * d[1] / len, q[2] + distance * d[2] / len});
+    expected.push_back(distance < tol ? p : static_cast<int64_t>(pts.size()) - 1);
+  };
+  for (int64_t p = 0; p < lattice; p += 997)
+    plant(p, 0.5 * tol);
+  for (int64_t p = 5; p < lattice; p += 991)
+    plant(p, 2 * tol);
+  std::vector<int64_t> ascending(pts.size());
+  std::iota(ascending.begin(), ascending.end(), 0);
+  std::vector<int64_t> shuffled = ascending;
+  std::shuffle(shuffled.begin(), shuffled.end(), rng);
+  for (int threads : {1, 2, 3}) {
+    const std::vector<int64_t> a = coincident_points(pts, ascending, tol, threads);
+    ASSERT_EQ(a, expected) << threads;
+    const std::vector<int64_t> b = coincident_points(pts, shuffled, tol, threads);
+    for (std::size_t i = 0; i < shuffled.size(); ++i)
+      ASSERT_EQ(b[i], expected[static_cast<std::size_t>(shuffled[i])]) << threads << " " << i;
+  }
 }
 
 TEST(ConcurrentSets, SamePartitionAsSerialUnions) {
