@@ -132,10 +132,13 @@ Field Field::build(const MeshInput &in, const Topology &topo, ProblemLog &proble
   });
   block_problems.append_to(problems);
 
-  f.vertex_value_.resize(topo.num_vertices());
-  for (int64_t v = 0; v < topo.num_vertices(); ++v)
-    f.vertex_value_[v] = in.values[topo.vertex_point(v)];
-  f.pin_edge_ends(topo);
+  const int64_t nv = topo.num_vertices();
+  f.vertex_value_.resize(nv);
+  parallel_for(nv, threads_for(nv, threads, 65536), [&](int64_t begin, int64_t end, int) {
+    for (int64_t v = begin; v < end; ++v)
+      f.vertex_value_[v] = in.values[topo.vertex_point(v)];
+  });
+  f.pin_edge_ends(topo, threads);
 
   // Cell polynomials from the node values (written in place; raised where an edge has a higher
   // degree), then the shared edges.
@@ -171,15 +174,21 @@ void Field::assemble_cells(const Topology &topo, const std::vector<int> &cell_de
                            const std::function<void(int64_t, int, double *)> &cell, int threads) {
   const int64_t nc = topo.num_cells();
   degree_.resize(nc);
-  offset_.assign(nc + 1, 0);
+  offset_.resize(nc + 1);
+  const int cell_threads = threads_for(nc, threads, 32768);
+  parallel_for(nc, cell_threads, [&](int64_t begin, int64_t end, int) {
+    for (int64_t c = begin; c < end; ++c) {
+      int d = cell_degree[c];
+      for (int k = 0; k < 3; ++k)
+        d = std::max(d, static_cast<int>(edge_degree_[topo.cell_edge(c, k)]));
+      degree_[c] = static_cast<uint8_t>(d);
+    }
+  });
   max_degree_ = 0;
+  offset_[0] = 0;
   for (int64_t c = 0; c < nc; ++c) {
-    int d = cell_degree[c];
-    for (int k = 0; k < 3; ++k)
-      d = std::max(d, static_cast<int>(edge_degree_[topo.cell_edge(c, k)]));
-    degree_[c] = static_cast<uint8_t>(d);
-    max_degree_ = std::max(max_degree_, d);
-    offset_[c + 1] = offset_[c] + lattice_size(d);
+    max_degree_ = std::max(max_degree_, static_cast<int>(degree_[c]));
+    offset_[c + 1] = offset_[c] + lattice_size(degree_[c]);
   }
   coef_.resize(offset_[nc]);
   parallel_for(nc, threads_for(nc, threads, 4096), [&](int64_t begin, int64_t end, int) {
@@ -278,7 +287,7 @@ Field Field::build_from_polynomials(const Topology &topo,
                          std::to_string(topo.vertex_point(v)) + " by " +
                          std::to_string(std::abs(val - f.vertex_value_[v])));
     }
-  f.pin_edge_ends(topo);
+  f.pin_edge_ends(topo, 1);
   std::vector<int> degrees(nc);
   for (int64_t c = 0; c < nc; ++c)
     degrees[c] = cells[c].degree();
@@ -293,11 +302,14 @@ Field Field::build_from_polynomials(const Topology &topo,
   return f;
 }
 
-void Field::pin_edge_ends(const Topology &topo) {
-  for (int64_t e = 0; e < topo.num_edges(); ++e) {
-    edge_coef_[edge_offset_[e]] = vertex_value_[topo.edge_vertices(e)[0]];
-    edge_coef_[edge_offset_[e + 1] - 1] = vertex_value_[topo.edge_vertices(e)[1]];
-  }
+void Field::pin_edge_ends(const Topology &topo, int threads) {
+  const int64_t ne = topo.num_edges();
+  parallel_for(ne, threads_for(ne, threads, 65536), [&](int64_t begin, int64_t end, int) {
+    for (int64_t e = begin; e < end; ++e) {
+      edge_coef_[edge_offset_[e]] = vertex_value_[topo.edge_vertices(e)[0]];
+      edge_coef_[edge_offset_[e + 1] - 1] = vertex_value_[topo.edge_vertices(e)[1]];
+    }
+  });
 }
 
 } // namespace hoct

@@ -72,7 +72,7 @@ private:
   void assemble_cells(const Topology &topology, const std::vector<int> &cell_degree,
                       const std::function<void(int64_t, int, double *)> &cell, int threads);
   // Sets each edge polynomial's end coefficients to its vertices' values, bit-exactly.
-  void pin_edge_ends(const Topology &topology);
+  void pin_edge_ends(const Topology &topology, int threads);
 
   std::vector<uint8_t> degree_, input_degree_, edge_degree_;
   std::vector<int64_t> offset_, edge_offset_;

@@ -27,7 +27,7 @@ Mesh build_mesh(const MeshInput &input, const MeshBuildOptions &options) {
     check_duplicate_vertices(input, m.topology, m.problems, options.threads);
     m.field = Field::build(input, m.topology, m.problems, options.threads);
     m.geometry = Geometry::build(input, options.threads);
-    check_geometry(m.geometry, m.topology, m.problems);
+    check_geometry(m.geometry, m.topology, m.problems, options.threads);
     m.complete = true;
   }
   throw_if_invalid(m, input, options);
@@ -62,7 +62,7 @@ Mesh build_mesh_from_samples(const MeshInput &input, const std::vector<CellSampl
     if (fitted) {
       m.field = Field::build_from_polynomials(m.topology, polys, m.problems);
       m.geometry = Geometry::build(input, options.threads);
-      check_geometry(m.geometry, m.topology, m.problems);
+      check_geometry(m.geometry, m.topology, m.problems, options.threads);
       m.complete = true;
     }
   }

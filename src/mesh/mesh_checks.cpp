@@ -5,10 +5,12 @@
 #include "poly/lattice.hpp"
 
 #include "util/parallel_for.hpp"
+#include "util/uninitialized_vector.hpp"
 
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <numeric>
 #include <sstream>
 
 namespace hoct {
@@ -178,101 +180,126 @@ void check_duplicate_vertices(const MeshInput &in, const Topology &topo, Problem
     }
 }
 
-void check_geometry(const Geometry &g, const Topology &topo, ProblemLog &problems) {
+namespace {
+
+// The sign of the Jacobian determinant of planar cell c (+1, -1, or 0 when it vanishes or changes
+// sign inside the cell, which `problems` then records).
+int planar_jacobian_sign(const Geometry &g, int64_t c, double area_tol, ProblemLog &problems) {
+  if (g.is_linear(c)) {
+    // Constant Jacobian: its determinant decides.
+    const auto j = g.jacobian(c, 0, 0);
+    const double det = j[0][0] * j[1][1] - j[0][1] * j[1][0];
+    const int s = det > area_tol ? 1 : det < -area_tol ? -1 : 0;
+    if (s == 0)
+      problems.add("degenerate cell (zero area)", Severity::Error, cell_str(c) + " has zero area");
+    return s;
+  }
+  // det J as a Bernstein polynomial of degree 2(p-1).
+  const BernsteinTriangle x = g.component(c, 0), y = g.component(c, 1);
+  const BernsteinTriangle a = x.du() * y.dv(), b = x.dv() * y.du();
+  std::vector<double> dc(a.coefficients().size());
+  for (std::size_t i = 0; i < dc.size(); ++i)
+    dc[i] = a.coefficients()[i] - b.coefficients()[i];
+  const BernsteinTriangle dj(a.degree(), std::move(dc));
+  auto [lo, hi] = dj.bounds();
+  if (lo > area_tol)
+    return 1;
+  if (hi < -area_tol)
+    return -1;
+  // Not certified by the coefficients: sample densely.
+  double smin = INFINITY, smax = -INFINITY;
+  for_each_sample(std::max(4, 2 * g.degree(c)), [&](double u, double v) {
+    const double val = dj(u, v);
+    smin = std::min(smin, val);
+    smax = std::max(smax, val);
+  });
+  if (smin > area_tol)
+    return 1;
+  if (smax < -area_tol)
+    return -1;
+  if (std::max(std::abs(smin), std::abs(smax)) <= area_tol)
+    problems.add("degenerate cell (zero area)", Severity::Error, cell_str(c) + " has zero area");
+  else
+    problems.add("inverted cell (folded curved cell)", Severity::Error,
+                 cell_str(c) + ": its Jacobian changes sign inside the cell (min " +
+                     std::to_string(smin) + ", max " + std::to_string(smax) + ")");
+  return 0;
+}
+
+// Surface cell c: n = phi_u x phi_v must not vanish nor flip inside it.
+void check_surface_cell(const Geometry &g, int64_t c, double area_tol, ProblemLog &problems) {
+  const int m = g.is_linear(c) ? 1 : std::max(4, 2 * g.degree(c));
+  Vec3 n0{0, 0, 0};
+  {
+    const auto j = g.jacobian(c, 1.0 / 3, 1.0 / 3);
+    n0 = {j[0][1] * j[1][2] - j[0][2] * j[1][1], j[0][2] * j[1][0] - j[0][0] * j[1][2],
+          j[0][0] * j[1][1] - j[0][1] * j[1][0]};
+  }
+  bool degenerate = false, folded = false;
+  for_each_sample(m, [&](double u, double v) {
+    const auto j = g.jacobian(c, u, v);
+    const Vec3 n = {j[0][1] * j[1][2] - j[0][2] * j[1][1], j[0][2] * j[1][0] - j[0][0] * j[1][2],
+                    j[0][0] * j[1][1] - j[0][1] * j[1][0]};
+    const double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    if (len <= area_tol)
+      degenerate = true;
+    else if (n[0] * n0[0] + n[1] * n0[1] + n[2] * n0[2] <= 0)
+      folded = true;
+  });
+  if (degenerate)
+    problems.add("degenerate cell (zero area)", Severity::Error,
+                 cell_str(c) + " has zero area at some point (its map is singular)");
+  else if (folded)
+    problems.add("inverted cell (folded curved cell)", Severity::Error,
+                 cell_str(c) + ": its surface normal flips inside the cell");
+}
+
+} // namespace
+
+void check_geometry(const Geometry &g, const Topology &topo, ProblemLog &problems, int threads) {
   const int64_t nc = g.num_cells();
   const double ext = std::max(g.extent(), 1e-300);
   const double area_tol = 1e-12 * ext * ext;
-  if (g.planar()) {
-    // det J as a Bernstein polynomial of degree 2(p-1); sign relative to a consistent orientation.
-    std::vector<int8_t> sign(nc, 0);
-    int64_t positive = 0, negative = 0;
-    for (int64_t c = 0; c < nc; ++c) {
-      if (g.is_linear(c)) {
-        // Constant Jacobian: its determinant decides.
-        const auto j = g.jacobian(c, 0, 0);
-        const double det = j[0][0] * j[1][1] - j[0][1] * j[1][0];
-        const int s = det > area_tol ? 1 : det < -area_tol ? -1 : 0;
-        if (s == 0)
-          problems.add("degenerate cell (zero area)", Severity::Error,
-                       cell_str(c) + " has zero area");
-        sign[c] = static_cast<int8_t>(s * (topo.orientable() ? topo.cell_parity(c) : 1));
-        positive += sign[c] > 0;
-        negative += sign[c] < 0;
-        continue;
-      }
-      const BernsteinTriangle x = g.component(c, 0), y = g.component(c, 1);
-      const BernsteinTriangle a = x.du() * y.dv(), b = x.dv() * y.du();
-      std::vector<double> dc(a.coefficients().size());
-      for (std::size_t i = 0; i < dc.size(); ++i)
-        dc[i] = a.coefficients()[i] - b.coefficients()[i];
-      const BernsteinTriangle dj(a.degree(), std::move(dc));
-      auto [lo, hi] = dj.bounds();
-      int s = 0;
-      if (lo > area_tol)
-        s = 1;
-      else if (hi < -area_tol)
-        s = -1;
-      else {
-        // Not certified by the coefficients: sample densely.
-        double smin = INFINITY, smax = -INFINITY;
-        for_each_sample(std::max(4, 2 * g.degree(c)), [&](double u, double v) {
-          const double val = dj(u, v);
-          smin = std::min(smin, val);
-          smax = std::max(smax, val);
-        });
-        if (smin > area_tol)
-          s = 1;
-        else if (smax < -area_tol)
-          s = -1;
-        else if (std::max(std::abs(smin), std::abs(smax)) <= area_tol)
-          problems.add("degenerate cell (zero area)", Severity::Error,
-                       cell_str(c) + " has zero area");
-        else
-          problems.add("inverted cell (folded curved cell)", Severity::Error,
-                       cell_str(c) + ": its Jacobian changes sign inside the cell (min " +
-                           std::to_string(smin) + ", max " + std::to_string(smax) + ")");
-      }
-      sign[c] = static_cast<int8_t>(s * (topo.orientable() ? topo.cell_parity(c) : 1));
-      positive += sign[c] > 0;
-      negative += sign[c] < 0;
-    }
-    // The minority orientation (relative to a consistent orientation) is inverted.
-    if (positive > 0 && negative > 0) {
-      const int8_t minority = positive >= negative ? -1 : 1;
-      for (int64_t c = 0; c < nc; ++c)
-        if (sign[c] == minority)
-          problems.add("inverted cell", Severity::Error,
-                       cell_str(c) + " is inverted (its orientation disagrees with its "
-                                     "neighbours': the mesh overlaps itself)");
-    }
+  // Cells in fixed blocks on threads, problems appended in block order.
+  const int64_t blocks = problem_blocks(nc);
+  const int cell_threads = threads_for(nc, threads, 32768);
+  BlockProblems found(blocks);
+  if (!g.planar()) {
+    parallel_chunks(nc, blocks, cell_threads, [&](int64_t b, int64_t begin, int64_t end, int) {
+      for (int64_t c = begin; c < end; ++c)
+        check_surface_cell(g, c, area_tol, found[b]);
+    });
+    found.append_to(problems);
     return;
   }
-  // Surfaces: n = phi_u x phi_v must not vanish nor flip inside a cell.
-  for (int64_t c = 0; c < nc; ++c) {
-    const int m = g.is_linear(c) ? 1 : std::max(4, 2 * g.degree(c));
-    Vec3 n0{0, 0, 0};
-    {
-      const auto j = g.jacobian(c, 1.0 / 3, 1.0 / 3);
-      n0 = {j[0][1] * j[1][2] - j[0][2] * j[1][1], j[0][2] * j[1][0] - j[0][0] * j[1][2],
-            j[0][0] * j[1][1] - j[0][1] * j[1][0]};
+  // Signs relative to a consistent orientation; the minority orientation is inverted.
+  UninitializedVector<int8_t> sign(static_cast<std::size_t>(nc));
+  std::vector<int64_t> positive(static_cast<std::size_t>(blocks), 0), negative(positive);
+  parallel_chunks(nc, blocks, cell_threads, [&](int64_t b, int64_t begin, int64_t end, int) {
+    int64_t pos = 0, neg = 0; // counted here, stored once (the blocks' slots share lines)
+    for (int64_t c = begin; c < end; ++c) {
+      const int s = planar_jacobian_sign(g, c, area_tol, found[b]);
+      sign[c] = static_cast<int8_t>(s * (topo.orientable() ? topo.cell_parity(c) : 1));
+      pos += sign[c] > 0;
+      neg += sign[c] < 0;
     }
-    bool degenerate = false, folded = false;
-    for_each_sample(m, [&](double u, double v) {
-      const auto j = g.jacobian(c, u, v);
-      const Vec3 n = {j[0][1] * j[1][2] - j[0][2] * j[1][1], j[0][2] * j[1][0] - j[0][0] * j[1][2],
-                      j[0][0] * j[1][1] - j[0][1] * j[1][0]};
-      const double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-      if (len <= area_tol)
-        degenerate = true;
-      else if (n[0] * n0[0] + n[1] * n0[1] + n[2] * n0[2] <= 0)
-        folded = true;
+    positive[b] = pos;
+    negative[b] = neg;
+  });
+  found.append_to(problems);
+  const int64_t pos = std::accumulate(positive.begin(), positive.end(), int64_t{0});
+  const int64_t neg = std::accumulate(negative.begin(), negative.end(), int64_t{0});
+  if (pos > 0 && neg > 0) {
+    const int8_t minority = pos >= neg ? -1 : 1;
+    BlockProblems inverted(blocks);
+    parallel_chunks(nc, blocks, cell_threads, [&](int64_t b, int64_t begin, int64_t end, int) {
+      for (int64_t c = begin; c < end; ++c)
+        if (sign[c] == minority)
+          inverted[b].add("inverted cell", Severity::Error,
+                          cell_str(c) + " is inverted (its orientation disagrees with its "
+                                        "neighbours': the mesh overlaps itself)");
     });
-    if (degenerate)
-      problems.add("degenerate cell (zero area)", Severity::Error,
-                   cell_str(c) + " has zero area at some point (its map is singular)");
-    else if (folded)
-      problems.add("inverted cell (folded curved cell)", Severity::Error,
-                   cell_str(c) + ": its surface normal flips inside the cell");
+    inverted.append_to(problems);
   }
 }
 

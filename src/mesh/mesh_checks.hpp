@@ -32,6 +32,7 @@ void check_duplicate_vertices(const MeshInput &input, const Topology &topology,
 // cell's map, in Bernstein form (certified where its coefficients share a sign, else sampled), must
 // be bounded away from zero and agree in sign with a consistent orientation of the mesh. Surfaces:
 // the normal must not vanish and must not flip within a cell.
-void check_geometry(const Geometry &geometry, const Topology &topology, ProblemLog &problems);
+void check_geometry(const Geometry &geometry, const Topology &topology, ProblemLog &problems,
+                    int threads = 1);
 
 } // namespace hoct

@@ -179,7 +179,7 @@ Topology Topology::build(const MeshInput &in, ProblemLog &problems, int threads)
     BlockProblems found(vblocks);
     std::vector<int64_t> boundary(static_cast<std::size_t>(vblocks), 0);
     parallel_chunks(nv, vblocks, vertex_threads, [&](int64_t b, int64_t begin, int64_t end, int) {
-      int64_t e = edge_first[b];
+      int64_t e = edge_first[b], boundary_here = 0;
       for (int64_t lo = begin; lo < end; ++lo)
         for (int64_t i = bucket[lo]; i < bucket[lo + 1]; ++e) {
           int64_t j = i;
@@ -197,7 +197,7 @@ Topology Topology::build(const MeshInput &in, ProblemLog &problems, int threads)
           }
           const int64_t count = j - i;
           if (count == 1)
-            ++boundary[b];
+            ++boundary_here;
           if (count > 2) {
             std::ostringstream m;
             m << "edge between points " << t.vertex_point_[lo] << " and " << t.vertex_point_[hi]
@@ -214,6 +214,7 @@ Topology Topology::build(const MeshInput &in, ProblemLog &problems, int threads)
           }
           i = j;
         }
+      boundary[b] = boundary_here; // once per block: the blocks' slots share cache lines
     });
     found.append_to(problems);
     for (int64_t n : boundary)
@@ -322,10 +323,11 @@ Topology Topology::build(const MeshInput &in, ProblemLog &problems, int threads)
     std::vector<int64_t> roots(static_cast<std::size_t>(vblocks), 0);
     parallel_chunks(nv, vblocks, vertex_loop_threads,
                     [&](int64_t b, int64_t begin, int64_t end, int) {
+                      int64_t roots_here = 0;
                       for (int64_t v = begin; v < end; ++v) {
                         if (boundary_degree[v] == 0)
                           continue;
-                        roots[b] += loops.find(v) == v;
+                        roots_here += loops.find(v) == v;
                         if (boundary_degree[v] != 2)
                           pinched[b].add("non-manifold vertex", Severity::Error,
                                          "point " + std::to_string(t.vertex_point_[v]) +
@@ -333,6 +335,7 @@ Topology Topology::build(const MeshInput &in, ProblemLog &problems, int threads)
                                              " boundary edges (a pinch: two boundary loops meet "
                                              "there)");
                       }
+                      roots[b] = roots_here;
                     });
     pinched.append_to(problems);
     for (int64_t r : roots)

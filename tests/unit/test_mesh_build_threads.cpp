@@ -4,6 +4,7 @@
 // meshes are built to have.
 #include "mesh/duplicate_points.hpp"
 #include "mesh/field.hpp"
+#include "mesh/geometry.hpp"
 #include "mesh/mesh_checks.hpp"
 #include "mesh/topology.hpp"
 #include "test_meshes.hpp"
@@ -257,6 +258,59 @@ TEST(DuplicatePoints, PlantedDuplicatesOnAnyThreadCount) {
     for (std::size_t i = 0; i < shuffled.size(); ++i)
       ASSERT_EQ(b[i], expected[static_cast<std::size_t>(shuffled[i])]) << threads << " " << i;
   }
+}
+
+// Folds quadratic cell c: the middle node of its first edge pulled past the opposite corner.
+void fold(MeshInput &in, int64_t c) {
+  const int64_t *nodes = &in.cell_nodes[in.cell_offsets[c]];
+  const Vec3 far = in.points[nodes[corner_index(2, 2)]];
+  Vec3 &p = in.points[nodes[edge_lattice_index(2, 0, 1)]];
+  for (int i = 0; i < 3; ++i)
+    p[i] += 3 * (far[i] - p[i]);
+}
+
+// check_geometry on 1, 2 and 3 threads: the same report.
+void expect_same_geometry_report(const MeshInput &in, const char *expected_kind) {
+  ProblemLog build_log;
+  const Topology topo = Topology::build(in, build_log, 2);
+  const Geometry g = Geometry::build(in, 2);
+  ProblemLog one, two, three;
+  check_geometry(g, topo, one, 1);
+  check_geometry(g, topo, two, 2);
+  check_geometry(g, topo, three, 3);
+  EXPECT_GT(one.count(expected_kind), 0) << one.summary();
+  EXPECT_EQ(one.summary(), two.summary());
+  EXPECT_EQ(one.summary(), three.summary());
+}
+
+TEST(MeshChecks, SameGeometryReportOnAnyThreadCount) {
+  // Planar: folded curved cells and inverted cells (a vertex pulled across its neighbours)
+  // spread over the grids, quadratic and linear.
+  std::mt19937_64 rng(14);
+  std::vector<Vec3> v;
+  std::vector<std::array<int64_t, 3>> t;
+  two_grids(rng, v, t);
+  MeshInput plane = testing::lagrange_mesh(
+      v, t, [](int64_t c) { return 1 + static_cast<int>(c % 2); }, nullptr, nullptr, rng);
+  const int64_t nc = static_cast<int64_t>(plane.num_cells());
+  for (int k = 0; k < 9; ++k)
+    fold(plane, (k * nc / 9 + 17) | 1); // odd cells are the quadratic ones
+  for (int k = 0; k < 5; ++k) {
+    const int64_t c = k * nc / 5 + 1001;
+    Vec3 &p = plane.points[plane.cell_nodes[plane.cell_offsets[c] +
+                                            corner_index(plane.cell_degree[c], 0)]];
+    p[0] += 4.0 / kGrid;
+  }
+  expect_same_geometry_report(plane, "inverted cell");
+  expect_same_geometry_report(plane, "inverted cell (folded curved cell)");
+  // A surface: a sphere of 67,712 cells, some folded.
+  testing::octahedron(92, v, t);
+  MeshInput sphere = testing::lagrange_mesh(
+      v, t, [](int64_t) { return 2; }, testing::sphere_projection, nullptr, rng);
+  const int64_t ns = static_cast<int64_t>(sphere.num_cells());
+  for (int k = 0; k < 7; ++k)
+    fold(sphere, k * ns / 7 + 3);
+  expect_same_geometry_report(sphere, "inverted cell (folded curved cell)");
 }
 
 TEST(ConcurrentSets, SamePartitionAsSerialUnions) {
