@@ -21,7 +21,7 @@ PipelineResult run_pipeline(const std::string &vtu, int threads, bool with_vtp,
     const MeshInput input = read_mesh(vtu);
     r.read = seconds_since(t);
     t = clock_type::now();
-    mesh = build_mesh(input);
+    mesh = build_mesh(input, {.threads = threads}); // as `hoct tree --threads N` builds it
     r.mesh = seconds_since(t);
   }
   ExactTreeOptions eo;
