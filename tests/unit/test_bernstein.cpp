@@ -2,6 +2,7 @@
 #include "poly/bernstein_triangle.hpp"
 #include "poly/bernstein_univariate.hpp"
 #include "poly/lagrange_node_order.hpp"
+#include "poly/lagrange_to_bernstein.hpp"
 #include "poly/lattice.hpp"
 #include "poly/sample_fit.hpp"
 
@@ -10,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <random>
 
 namespace hoct {
@@ -75,6 +77,27 @@ TEST_P(BernsteinDegree, LagrangeToBernsteinMatchesDirectEvaluationInBothNodeOrde
         EXPECT_NEAR(h[1][0], m.eval(u, v, 1, 1), 1e-7);
         EXPECT_NEAR(h[1][1], m.eval(u, v, 0, 2), 1e-7);
       }
+    }
+  }
+}
+
+TEST(LagrangeToBernstein, SameBitsAsOneDotProductPerCoefficient) {
+  // The conversion computes its dot products four rows at a time; each must still be the plain
+  // j-ordered sum, bit for bit (the trees do not depend on how the conversion is scheduled).
+  std::mt19937_64 rng(8);
+  std::uniform_real_distribution<double> U(-1e3, 1e3);
+  for (int d = 1; d <= kMaxDegree; ++d) {
+    const int n = lattice_size(d);
+    const std::vector<double> &m = lagrange_to_bernstein_triangle(d);
+    std::vector<double> values(n), got(n);
+    for (double &x : values)
+      x = U(rng);
+    bernstein_from_lattice_values(values.data(), d, got.data());
+    for (int i = 0; i < n; ++i) {
+      double s = 0.0;
+      for (int j = 0; j < n; ++j)
+        s += m[static_cast<std::size_t>(i) * n + j] * values[j];
+      ASSERT_EQ(std::memcmp(&s, &got[i], sizeof s), 0) << "degree " << d << " coefficient " << i;
     }
   }
 }
