@@ -141,8 +141,7 @@ std::vector<int64_t> coincident_points(const std::vector<Vec3> &points,
     a = b;
   }
   // Points within the tolerance of a face of their coarse cell: against the neighbouring cells,
-  // in key order (neighbouring lookups share their search paths; a flat mesh has every point
-  // near a face), on threads (unions commute).
+  // in key order (consecutive lookups share their search paths), on threads (unions commute).
   parallel_for(count, threads_for(count, threads, 65536), [&](int64_t begin, int64_t end, int) {
     for (int64_t at = begin; at < end; ++at) {
       const auto &[key, i] = sorted[static_cast<std::size_t>(at)];
