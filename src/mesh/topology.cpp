@@ -81,22 +81,22 @@ Topology Topology::build(const MeshInput &in, ProblemLog &problems, int threads)
 
   t.cell_vertices_.resize(nc);
   {
-    BlockProblems repeated(problem_blocks(nc));
-    parallel_chunks(
-        nc, problem_blocks(nc), cell_threads, [&](int64_t b, int64_t begin, int64_t end, int) {
-          for (int64_t c = begin; c < end; ++c) {
-            const int64_t corner[3] = {corner_point(c, 0), corner_point(c, 1), corner_point(c, 2)};
-            auto &v = t.cell_vertices_[c];
-            for (int k = 0; k < 3; ++k)
-              v[k] = point_vertex[corner[k]];
-            if (v[0] == v[1] || v[1] == v[2] || v[0] == v[2]) {
-              std::ostringstream m;
-              m << "cell " << c << " uses the same corner point twice (points " << corner[0] << ", "
-                << corner[1] << ", " << corner[2] << ")";
-              repeated[b].add("degenerate cell (repeated corner)", Severity::Error, m.str());
-            }
-          }
-        });
+    const int64_t cell_blocks = problem_blocks(nc);
+    BlockProblems repeated(cell_blocks);
+    parallel_chunks(nc, cell_blocks, cell_threads, [&](int64_t b, int64_t begin, int64_t end, int) {
+      for (int64_t c = begin; c < end; ++c) {
+        const int64_t corner[3] = {corner_point(c, 0), corner_point(c, 1), corner_point(c, 2)};
+        auto &v = t.cell_vertices_[c];
+        for (int k = 0; k < 3; ++k)
+          v[k] = point_vertex[corner[k]];
+        if (v[0] == v[1] || v[1] == v[2] || v[0] == v[2]) {
+          std::ostringstream m;
+          m << "cell " << c << " uses the same corner point twice (points " << corner[0] << ", "
+            << corner[1] << ", " << corner[2] << ")";
+          repeated[b].add("degenerate cell (repeated corner)", Severity::Error, m.str());
+        }
+      }
+    });
     repeated.append_to(problems);
   }
   UninitializedVector<int64_t>().swap(point_vertex);

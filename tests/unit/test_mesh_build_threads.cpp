@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <functional>
 #include <numeric>
 #include <random>
 
@@ -87,14 +88,18 @@ void two_grids(std::mt19937_64 &rng, std::vector<Vec3> &v, std::vector<std::arra
   }
 }
 
-TEST(Topology, SameOnAnyThreadCount) {
-  // Consistently oriented: the components by concurrent disjoint sets.
-  std::mt19937_64 rng(11);
+// The two grids as Lagrange cells of degree degree_of(c), with random node values.
+MeshInput two_grid_mesh(uint64_t seed, const std::function<int(int64_t)> &degree_of) {
+  std::mt19937_64 rng(seed);
   std::vector<Vec3> v;
   std::vector<std::array<int64_t, 3>> t;
   two_grids(rng, v, t);
-  const MeshInput in = testing::lagrange_mesh(
-      v, t, [](int64_t c) { return 1 + static_cast<int>(c % 2); }, nullptr, nullptr, rng);
+  return testing::lagrange_mesh(v, t, degree_of, nullptr, nullptr, rng);
+}
+
+TEST(Topology, SameOnAnyThreadCount) {
+  // Consistently oriented: the components by concurrent disjoint sets.
+  const MeshInput in = two_grid_mesh(11, [](int64_t c) { return 1 + static_cast<int>(c % 2); });
   const Built one = build(in, 1), two = build(in, 2), three = build(in, 3);
   // What the mesh is built to be: two disks with kHoles holes each.
   const int64_t squares = int64_t{kGrid} * kGrid - kHoles;
@@ -192,12 +197,7 @@ TEST(Topology, SameProblemsOnAnyThreadCount) {
 TEST(MeshChecks, SameInputReportOnAnyThreadCount) {
   // Bad points and cells spread over a large input: the same verdict and report on 1, 2 and 3
   // threads, with the counts the input is built to have.
-  std::mt19937_64 rng(13);
-  std::vector<Vec3> v;
-  std::vector<std::array<int64_t, 3>> t;
-  two_grids(rng, v, t);
-  MeshInput in = testing::lagrange_mesh(
-      v, t, [](int64_t) { return 2; }, nullptr, nullptr, rng);
+  MeshInput in = two_grid_mesh(13, [](int64_t) { return 2; });
   const int64_t np = static_cast<int64_t>(in.points.size());
   const int64_t nc = static_cast<int64_t>(in.num_cells());
   for (int k = 0; k < 7; ++k) {
@@ -286,12 +286,7 @@ void expect_same_geometry_report(const MeshInput &in, const char *expected_kind)
 TEST(MeshChecks, SameGeometryReportOnAnyThreadCount) {
   // Planar: folded curved cells and inverted cells (a vertex pulled across its neighbours)
   // spread over the grids, quadratic and linear.
-  std::mt19937_64 rng(14);
-  std::vector<Vec3> v;
-  std::vector<std::array<int64_t, 3>> t;
-  two_grids(rng, v, t);
-  MeshInput plane = testing::lagrange_mesh(
-      v, t, [](int64_t c) { return 1 + static_cast<int>(c % 2); }, nullptr, nullptr, rng);
+  MeshInput plane = two_grid_mesh(14, [](int64_t c) { return 1 + static_cast<int>(c % 2); });
   const int64_t nc = static_cast<int64_t>(plane.num_cells());
   for (int k = 0; k < 9; ++k)
     fold(plane, (k * nc / 9 + 17) | 1); // odd cells are the quadratic ones
@@ -304,6 +299,9 @@ TEST(MeshChecks, SameGeometryReportOnAnyThreadCount) {
   expect_same_geometry_report(plane, "inverted cell");
   expect_same_geometry_report(plane, "inverted cell (folded curved cell)");
   // A surface: a sphere of 67,712 cells, some folded.
+  std::mt19937_64 rng(15);
+  std::vector<Vec3> v;
+  std::vector<std::array<int64_t, 3>> t;
   testing::octahedron(92, v, t);
   MeshInput sphere = testing::lagrange_mesh(
       v, t, [](int64_t) { return 2; }, testing::sphere_projection, nullptr, rng);
