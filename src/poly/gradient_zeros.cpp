@@ -57,11 +57,46 @@ struct Monomial {
   // Bound on |computed - exact| of operator()(u, v): gamma_{4d+4} times the Horner sum of the
   // absolute values (Higham, Accuracy and Stability, 5.1), with margin.
   double error_bound(double u, double v) const {
-    const double r = dispatch_degree(
-        d, [&](auto D) { return horner<D.value, true>(a, d, std::abs(u), std::abs(v)); });
+    return error_bound_of(dispatch_degree(
+        d, [&](auto D) { return horner<D.value, true>(a, d, std::abs(u), std::abs(v)); }));
+  }
+  // The same from the Horner sum of the absolute values r at (|u|, |v|).
+  double error_bound_of(double r) const {
     return 2 * (4 * d + 6) * std::numeric_limits<double>::epsilon() * r;
   }
 };
+
+// K polynomials of one degree at one point: horner<D, Abs> of each (the same operations, so the
+// same bits), the K chains interleaved so that their latencies overlap.
+template <int D, bool Abs, int K>
+void horner_k(const double *const a[K], int d_run, double u, double v, double out[K]) {
+  const int d = D >= 0 ? D : d_run;
+  double r[K] = {};
+  for (int i = d; i >= 0; --i) {
+    const std::size_t row = static_cast<std::size_t>(i) * (d + 1);
+    double s[K] = {};
+    for (int j = d - i; j >= 0; --j)
+      for (int k = 0; k < K; ++k)
+        s[k] = s[k] * v + (Abs ? std::abs(a[k][row + j]) : a[k][row + j]);
+    for (int k = 0; k < K; ++k)
+      r[k] = r[k] * u + s[k];
+  }
+  for (int k = 0; k < K; ++k)
+    out[k] = r[k];
+}
+
+// operator() (Abs = false) or the sum behind error_bound (Abs = true) of K polynomials of one
+// degree at (u, v) at once.
+template <bool Abs, int K>
+void evaluate(const Monomial *const p[K], double u, double v, double out[K]) {
+  const double *a[K];
+  for (int k = 0; k < K; ++k)
+    a[k] = p[k]->a;
+  const int d = p[0]->d;
+  dispatch_degree(d, [&](auto D) {
+    horner_k<D.value, Abs, K>(a, d, Abs ? std::abs(u) : u, Abs ? std::abs(v) : v, out);
+  });
+}
 
 // The partial derivative of p in u (or v), of degree max(d - 1, 0), into storage at `out`.
 Monomial derivative(const Monomial &p, bool in_u, double *out) {
@@ -124,14 +159,22 @@ Iv combination_range(double s, const Taylor &P, double t, const Taylor &Q, doubl
 }
 
 // True if every coefficient exceeds `margin` in absolute value with one common sign: the
-// polynomial has no zero on the box.
+// polynomial has no zero on the box. (Stops at the first coefficient against the sign of the
+// first: most boxes that survive fail early.)
 bool excludes_zero(const double *c, std::size_t n, double margin) {
-  double lo = c[0], hi = c[0];
-  for (std::size_t i = 1; i < n; ++i) {
-    lo = std::min(lo, c[i]);
-    hi = std::max(hi, c[i]);
+  if (c[0] > margin) {
+    for (std::size_t i = 1; i < n; ++i)
+      if (!(c[i] > margin))
+        return false;
+    return true;
   }
-  return lo > margin || hi < -margin;
+  if (c[0] < -margin) {
+    for (std::size_t i = 1; i < n; ++i)
+      if (!(c[i] < -margin))
+        return false;
+    return true;
+  }
+  return false;
 }
 
 // No common zero of p and q on the box if a p + b q has one sign there, with (a, b) the
@@ -407,15 +450,36 @@ GradientZeros search_zeros(const BernsteinTriangle &g, const GradientZeroOptions
                  muv = derivative(mu, false, hessian_store + hsz),
                  mvv = derivative(mv, false, hessian_store + 2 * hsz);
   double *taylor_store = hessian_store + 3 * hsz;
+  const Monomial *const gradient[2] = {&mu, &mv};
+  const Monomial *const hessian[3] = {&muu, &muv, &mvv};
+  // The gradient (g[0], g[1]) and the Hessian's entries (h[0] = uu, h[1] = uv, h[2] = vv) at
+  // a point, each polynomial evaluated as by its operator().
+  auto gradient_at = [&](double u, double v, double g[2]) {
+    evaluate<false, 2>(gradient, u, v, g);
+  };
+  auto hessian_at = [&](double u, double v, double h[3]) { evaluate<false, 3>(hessian, u, v, h); };
 
   // Newton's method from (u, v); gives up when the iterate leaves the square of half-width
   // `reach` around (cu, cv) (it is then heading for another zero or diverging).
-  // `last` receives the size |du| + |dv| of the last step taken.
+  // `last` receives the size |du| + |dv| of the last step taken, `farthest` the largest
+  // max(|u - cu|, |v - cv|) of the iterates (so that a run with a smaller reach gives up iff
+  // farthest exceeds it, and is otherwise the same run). `start` may hold the gradient and the
+  // Hessian at the starting point, already evaluated.
+  struct Jet {
+    double g[2], h[3];
+  };
   auto newton = [&](double &u, double &v, double cu = 0.5, double cv = 0.5, double reach = 10,
-                    int max_iterations = 40, double *last = nullptr) {
+                    int max_iterations = 40, double *last = nullptr, double *farthest = nullptr,
+                    const Jet *start = nullptr) {
     for (int it = 0; it < max_iterations; ++it) {
-      const double fu = mu(u, v), fv = mv(u, v);
-      const double a = muu(u, v), b = muv(u, v), c = mvv(u, v);
+      Jet j;
+      if (it == 0 && start) {
+        j = *start;
+      } else {
+        gradient_at(u, v, j.g);
+        hessian_at(u, v, j.h);
+      }
+      const double fu = j.g[0], fv = j.g[1], a = j.h[0], b = j.h[1], c = j.h[2];
       const double det = a * c - b * b;
       if (!(std::abs(det) > 0))
         return false;
@@ -424,6 +488,8 @@ GradientZeros search_zeros(const BernsteinTriangle &g, const GradientZeroOptions
       v -= dv;
       if (last)
         *last = std::abs(du) + std::abs(dv);
+      if (farthest)
+        *farthest = std::max(*farthest, std::max(std::abs(u - cu), std::abs(v - cv)));
       if (!std::isfinite(u) || !std::isfinite(v) || std::abs(u - cu) > reach ||
           std::abs(v - cv) > reach)
         return false;
@@ -433,31 +499,60 @@ GradientZeros search_zeros(const BernsteinTriangle &g, const GradientZeroOptions
     return true;
   };
 
-  // Krawczyk on the box centred at (cx, cy) with half-widths (rx, ry), around the point (x, y)
-  // inside it: 1 = a unique zero in the box, -1 = no zero in the box, 0 = undecided.
-  auto krawczyk = [&](double cx, double cy, double rx, double ry, double x, double y) {
-    const double a = muu(x, y), b = muv(x, y), c = mvv(x, y);
+  // Krawczyk on boxes centred at (cx, cy) around the point (x, y) inside them: what does not
+  // depend on the box's half-widths, computed once (the Hessian's entries expanded at the
+  // centre into taylor_store, so one preparation is live at a time).
+  struct KrawczykAt {
+    bool usable = false; // the Hessian at (x, y) is invertible
+    double cx, cy, x, y, y00, y01, y10, y11;
+    Taylor huu, huv, hvv;
+    Iv F0, F1;
+  };
+  auto krawczyk_at = [&](double cx, double cy, double x, double y) {
+    KrawczykAt k;
+    double h[3];
+    hessian_at(x, y, h);
+    const double a = h[0], b = h[1], c = h[2];
     const double det = a * c - b * b;
     if (!(std::abs(det) > 0) || !std::isfinite(det))
-      return 0;
-    const double y00 = c / det, y01 = -b / det, y10 = -b / det, y11 = a / det;
+      return k;
+    k.usable = true;
+    k.cx = cx;
+    k.cy = cy;
+    k.x = x;
+    k.y = y;
+    k.y00 = c / det;
+    k.y01 = -b / det;
+    k.y10 = -b / det;
+    k.y11 = a / det;
     // M = I - Y J(X), each entry enclosed as one polynomial (the combination of the Hessian's
     // entries formed first): entry-wise intervals of J(X) lose the cancellation in Y J(X), which
     // for an ill-conditioned Hessian (thin cells) leaves M far from contracting on any box.
     // The Hessian's entries expanded once at the centre; each entry of M is a combination.
-    const Taylor huu = expand(muu, cx, cy, taylor_store),
-                 huv = expand(muv, cx, cy, taylor_store + hsz),
-                 hvv = expand(mvv, cx, cy, taylor_store + 2 * hsz);
-    const Iv M00 = Iv{1, 1} + (-1.0) * combination_range(y00, huu, y01, huv, rx, ry);
-    const Iv M01 = (-1.0) * combination_range(y00, huv, y01, hvv, rx, ry);
-    const Iv M10 = (-1.0) * combination_range(y10, huu, y11, huv, rx, ry);
-    const Iv M11 = Iv{1, 1} + (-1.0) * combination_range(y10, huv, y11, hvv, rx, ry);
-    const double fu = mu(x, y), fv = mv(x, y);
-    const double eu = err_u + mu.error_bound(x, y), ev = err_v + mv.error_bound(x, y);
-    const Iv F0{fu - eu, fu + eu}, F1{fv - ev, fv + ev};
+    k.huu = expand(muu, cx, cy, taylor_store);
+    k.huv = expand(muv, cx, cy, taylor_store + hsz);
+    k.hvv = expand(mvv, cx, cy, taylor_store + 2 * hsz);
+    double f[2], fa[2];
+    gradient_at(x, y, f);
+    evaluate<true, 2>(gradient, x, y, fa);
+    const double eu = err_u + mu.error_bound_of(fa[0]), ev = err_v + mv.error_bound_of(fa[1]);
+    k.F0 = {f[0] - eu, f[0] + eu};
+    k.F1 = {f[1] - ev, f[1] + ev};
+    return k;
+  };
+  // The test on the box with half-widths (rx, ry): 1 = a unique zero in the box, -1 = no zero
+  // in the box, 0 = undecided.
+  auto krawczyk_test = [&](const KrawczykAt &k, double rx, double ry) {
+    if (!k.usable)
+      return 0;
+    const double cx = k.cx, cy = k.cy, x = k.x, y = k.y;
+    const Iv M00 = Iv{1, 1} + (-1.0) * combination_range(k.y00, k.huu, k.y01, k.huv, rx, ry);
+    const Iv M01 = (-1.0) * combination_range(k.y00, k.huv, k.y01, k.hvv, rx, ry);
+    const Iv M10 = (-1.0) * combination_range(k.y10, k.huu, k.y11, k.huv, rx, ry);
+    const Iv M11 = Iv{1, 1} + (-1.0) * combination_range(k.y10, k.huv, k.y11, k.hvv, rx, ry);
     const Iv D0{cx - rx - x, cx + rx - x}, D1{cy - ry - y, cy + ry - y};
-    const Iv K0 = Iv{x, x} + (-1.0) * (y00 * F0 + y01 * F1) + M00 * D0 + M01 * D1;
-    const Iv K1 = Iv{y, y} + (-1.0) * (y10 * F0 + y11 * F1) + M10 * D0 + M11 * D1;
+    const Iv K0 = Iv{x, x} + (-1.0) * (k.y00 * k.F0 + k.y01 * k.F1) + M00 * D0 + M01 * D1;
+    const Iv K1 = Iv{y, y} + (-1.0) * (k.y10 * k.F0 + k.y11 * k.F1) + M10 * D0 + M11 * D1;
     const double slack = 8 * eps * (1 + std::abs(x) + std::abs(y));
     if (K0.hi + slack < cx - rx || K0.lo - slack > cx + rx || K1.hi + slack < cy - ry ||
         K1.lo - slack > cy + ry)
@@ -466,6 +561,10 @@ GradientZeros search_zeros(const BernsteinTriangle &g, const GradientZeroOptions
         K1.hi + slack < cy + ry)
       return 1;
     return 0;
+  };
+  // Both at once, for a single box centred at (cx, cy) with half-widths (rx, ry).
+  auto krawczyk = [&](double cx, double cy, double rx, double ry, double x, double y) {
+    return krawczyk_test(krawczyk_at(cx, cy, x, y), rx, ry);
   };
 
   struct Found {
@@ -478,7 +577,8 @@ GradientZeros search_zeros(const BernsteinTriangle &g, const GradientZeroOptions
   // the larger it is, the fewer boxes around the zero need subdividing. A box centred at the
   // zero with twice f's largest radius contains f.
   auto grown = [&](double x, double y, Found f) {
-    for (double R = 2 * std::max(f.rx, f.ry); R <= 0.5 && krawczyk(x, y, R, R, x, y) == 1; R *= 2)
+    const KrawczykAt k = krawczyk_at(x, y, x, y);
+    for (double R = 2 * std::max(f.rx, f.ry); R <= 0.5 && krawczyk_test(k, R, R) == 1; R *= 2)
       f = {x, y, x, y, R, R, true};
     return f;
   };
@@ -561,7 +661,9 @@ GradientZeros search_zeros(const BernsteinTriangle &g, const GradientZeroOptions
       continue;
     const double hx = 0.5 * b.w, hy = 0.5 * b.wy, wmax = std::max(b.w, b.wy);
     const double cx = b.u0 + hx, cy = b.v0 + hy;
-    if (combination_excludes_zero(current.data(), current.data() + sz, sz, mu(cx, cy), mv(cx, cy),
+    Jet centre;
+    gradient_at(cx, cy, centre.g);
+    if (combination_excludes_zero(current.data(), current.data() + sz, sz, centre.g[0], centre.g[1],
                                   mp, mq))
       continue;
     // Preconditioned by the inverse Hessian at the centre: near a zero the rows of H^-1 grad
@@ -569,7 +671,8 @@ GradientZeros search_zeros(const BernsteinTriangle &g, const GradientZeroOptions
     // even where the components' zero curves are nearly parallel (thin cells in the reference
     // triangle, ill-conditioned Hessians).
     {
-      const double a = muu(cx, cy), bb = muv(cx, cy), c = mvv(cx, cy);
+      hessian_at(cx, cy, centre.h);
+      const double a = centre.h[0], bb = centre.h[1], c = centre.h[2];
       const double det = a * c - bb * bb;
       if (std::isfinite(det) && std::abs(det) > 0 &&
           (combination_excludes_zero(current.data(), current.data() + sz, sz, c, -bb, mp, mq) ||
@@ -589,9 +692,15 @@ GradientZeros search_zeros(const BernsteinTriangle &g, const GradientZeroOptions
     // if they converge (the last below a thousandth of the box), Krawczyk on the square centred
     // at the limit z that covers the box. Success proves z the only zero in that square: the box
     // holds z or nothing, and the certified square may already cover its neighbours.
+    // Both attempts start with the same three steps from the centre: the second reuses them.
+    bool stepped = false, stepped_ok = false;
+    double step_x = cx, step_y = cy, farthest = 0;
     if (!framed && wmax <= 0.5) {
-      double x = cx, y = cy, last = INFINITY;
-      if (newton(x, y, cx, cy, 2 * wmax, 3, &last) && last <= 1e-3 * wmax) {
+      double last = INFINITY;
+      stepped = true;
+      stepped_ok = newton(step_x, step_y, cx, cy, 2 * wmax, 3, &last, &farthest, &centre);
+      double x = step_x, y = step_y;
+      if (stepped_ok && last <= 1e-3 * wmax) {
         const double R = 1.0625 * std::max(std::abs(x - cx) + hx, std::abs(y - cy) + hy);
         if (krawczyk(x, y, R, R, x, y) == 1) {
           newton(x, y); // converges inside the square (Krawczyk)
@@ -605,7 +714,14 @@ GradientZeros search_zeros(const BernsteinTriangle &g, const GradientZeroOptions
       // Certify on the box inflated by a quarter, so zeros on box edges are interior.
       const double rx = 1.25 * hx, ry = 1.25 * hy, r = std::max(rx, ry);
       double x = cx, y = cy;
-      if (!newton(x, y, cx, cy, 2 * r, 3) || std::abs(x - cx) > rx || std::abs(y - cy) > ry) {
+      // The same steps with the reach 2 r < 2 wmax: they give up iff an iterate went farther.
+      const bool ok = stepped ? stepped_ok && farthest <= 2 * r
+                              : newton(x, y, cx, cy, 2 * r, 3, nullptr, nullptr, &centre);
+      if (stepped) {
+        x = step_x;
+        y = step_y;
+      }
+      if (!ok || std::abs(x - cx) > rx || std::abs(y - cy) > ry) {
         x = cx;
         y = cy;
       }

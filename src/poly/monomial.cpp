@@ -3,6 +3,7 @@
 #include "poly/binomial.hpp"
 #include "poly/degree_dispatch.hpp"
 #include "poly/lattice.hpp"
+#include "util/no_vectorize.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -107,7 +108,10 @@ void compose_affine(const double *mono, int d, const Mat2 &b, const Vec2 &c, dou
 
 namespace {
 
-template <int D> double taylor_fixed(const double *mono, int d_run, double x, double y, double *e) {
+// Scalar (util/no_vectorize.hpp): degree 3 70 -> 47 ns.
+template <int D>
+HOCT_NO_VECTORIZE double taylor_fixed(const double *mono, int d_run, double x, double y,
+                                      double *e) {
   const int d = D >= 0 ? D : d_run;
   // e_ab = sum_{i>=a, j>=b} m_ij C(i,a) C(j,b) x^(i-a) y^(j-b), in two passes: along v,
   // t_ib = sum_{j>=b} m_ij C(j,b) y^(j-b) (into e), then along u, e_ab = sum_{i>=a} C(i,a)
@@ -117,10 +121,11 @@ template <int D> double taylor_fixed(const double *mono, int d_run, double x, do
   // sum_ij |m_ij| (1+|x|)^i (1+|y|)^j, returned scaled so that 64 eps times it covers
   // gamma_(4d+2).
   const int w = d + 1;
-  double px[64], py[64];
+  constexpr int kStack = D >= 0 ? D + 1 : 64;
+  double px[kStack], py[kStack];
   double *xs = px, *ys = py;
   std::vector<double> heap;
-  if (w > 64) {
+  if (w > kStack) {
     heap.resize(2 * static_cast<std::size_t>(w));
     xs = heap.data();
     ys = xs + w;

