@@ -1,6 +1,7 @@
 #include "poly/root_isolation.hpp"
 
 #include "poly/degree_dispatch.hpp"
+#include "util/no_vectorize.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -30,6 +31,21 @@ int end_sign(const double *c, int n, bool left) {
   return 0;
 }
 
+// value_and_slope below for a compile-time degree M >= 1. Scalar (util/no_vectorize.hpp), as
+// bernstein_value.
+template <int M>
+HOCT_NO_VECTORIZE void value_and_slope_fixed(const double *c, double s, double t, double &value,
+                                             double &slope) {
+  double w[M + 1];
+  for (int i = 0; i <= M; ++i)
+    w[i] = c[i];
+  for (int r = 1; r < M; ++r)
+    for (int i = 0; i <= M - r; ++i)
+      w[i] = s * w[i] + t * w[i + 1];
+  value = s * w[0] + t * w[1];
+  slope = M * (w[1] - w[0]);
+}
+
 // p(t) and p'(t) in one de Casteljau pass: the last two intermediate values give the derivative.
 // In registers for the usual degrees (the same operations as the run-time loop).
 void value_and_slope(const double *c, int n, double t, double &value, double &slope) {
@@ -41,15 +57,7 @@ void value_and_slope(const double *c, int n, double t, double &value, double &sl
   const double s = 1.0 - t;
   dispatch_degree(n, [&](auto D) {
     if constexpr (D.value >= 1) {
-      constexpr int m = D.value;
-      double w[m + 1];
-      for (int i = 0; i <= m; ++i)
-        w[i] = c[i];
-      for (int r = 1; r < m; ++r)
-        for (int i = 0; i <= m - r; ++i)
-          w[i] = s * w[i] + t * w[i + 1];
-      value = s * w[0] + t * w[1];
-      slope = m * (w[1] - w[0]);
+      value_and_slope_fixed<D.value>(c, s, t, value, slope);
     } else { // a stack buffer up to degree 31, the heap only above
       double buf[32];
       std::vector<double> heap;
