@@ -183,15 +183,21 @@ bool excludes_zero(const double *c, std::size_t n, double margin) {
 bool combination_excludes_zero(const double *p, const double *q, std::size_t n, double a, double b,
                                double mp, double mq) {
   const double eps = std::numeric_limits<double>::epsilon();
-  bool positive = true, negative = true;
-  for (std::size_t i = 0; i < n && (positive || negative); ++i) {
+  const double base = std::abs(a) * mp + std::abs(b) * mq;
+  // +1: every term above its margin, -1: every term below minus its margin, 0: neither. The
+  // first term decides which sign the others must have; the loop stops at the first that has not.
+  auto side = [&](std::size_t i) {
     const double x = a * p[i], y = b * q[i], h = x + y;
-    const double margin =
-        std::abs(a) * mp + std::abs(b) * mq + 2 * eps * (std::abs(x) + std::abs(y));
-    positive = positive && h > margin;
-    negative = negative && h < -margin;
-  }
-  return positive || negative;
+    const double margin = base + 2 * eps * (std::abs(x) + std::abs(y));
+    return h > margin ? 1 : h < -margin ? -1 : 0;
+  };
+  const int s = n > 0 ? side(0) : 0;
+  if (s == 0)
+    return false;
+  for (std::size_t i = 1; i < n; ++i)
+    if (side(i) != s)
+      return false;
+  return true;
 }
 
 GradientZeros search_zeros(const BernsteinTriangle &g, const GradientZeroOptions &opt, double scale,
