@@ -85,7 +85,12 @@ EdgeNodes find_edge_nodes(const Topology &topo, const Field &field, const EdgeNo
   // the thread count, and there are a few growing buffers instead of one per block.
   const int64_t blocks = std::max<int64_t>(1, std::min<int64_t>(ne, 256));
   const int threads = std::max(1, opt.threads);
-  std::vector<UninitializedVector<EdgeNode>> worker_nodes(static_cast<std::size_t>(threads));
+  // Each worker's buffer on a cache line of its own: side by side, the vectors' end pointers
+  // (written at every push) shared a line between the threads.
+  struct alignas(64) WorkerNodes {
+    UninitializedVector<EdgeNode> nodes;
+  };
+  std::vector<WorkerNodes> worker_nodes(static_cast<std::size_t>(threads));
   struct BlockSource {
     int worker;
     std::size_t begin, count;
@@ -93,10 +98,13 @@ EdgeNodes find_edge_nodes(const Topology &topo, const Field &field, const EdgeNo
   std::vector<BlockSource> source(static_cast<std::size_t>(blocks));
   out.offset[0] = 0;
   parallel_for(blocks, threads, [&](int64_t b0, int64_t b1, int worker) {
-    UninitializedVector<EdgeNode> &nodes = worker_nodes[static_cast<std::size_t>(worker)];
+    UninitializedVector<EdgeNode> &nodes = worker_nodes[static_cast<std::size_t>(worker)].nodes;
     for (int64_t b = b0; b < b1; ++b) {
       const std::size_t begin = nodes.size();
-      for (int64_t e = ne * b / blocks; e < ne * (b + 1) / blocks; ++e) {
+      // The block's bounds in locals: in the condition they were a 64-bit division per edge
+      // (the stores below may alias them), a quarter of this loop's time.
+      const int64_t first = ne * b / blocks, last = ne * (b + 1) / blocks;
+      for (int64_t e = first; e < last; ++e) {
         const std::size_t before = nodes.size();
         out.degeneracy[e] = edge_nodes_of(field.edge_coefficients(e), value_scale, opt, nodes);
         out.offset[e + 1] = static_cast<int64_t>(nodes.size() - before);
@@ -113,20 +121,21 @@ EdgeNodes find_edge_nodes(const Topology &topo, const Field &field, const EdgeNo
     in_order = in_order && source[b].worker == 0 &&
                source[b].begin == static_cast<std::size_t>(block_base[b]);
   if (in_order)
-    out.nodes = std::move(worker_nodes[0]);
+    out.nodes = std::move(worker_nodes[0].nodes);
   else
     out.nodes.resize(static_cast<std::size_t>(block_base[blocks]));
-  parallel_for(blocks, threads_for(ne, opt.threads, 65536), [&](int64_t b0, int64_t b1, int) {
+  parallel_for(blocks, threads_for(ne, opt.threads, 16384), [&](int64_t b0, int64_t b1, int) {
     for (int64_t b = b0; b < b1; ++b) {
       int64_t sum = block_base[b];
-      for (int64_t e = ne * b / blocks; e < ne * (b + 1) / blocks; ++e) {
+      const int64_t first = ne * b / blocks, last = ne * (b + 1) / blocks;
+      for (int64_t e = first; e < last; ++e) {
         sum += out.offset[e + 1];
         out.offset[e + 1] = sum;
       }
       const BlockSource &src = source[b];
       if (in_order)
         continue;
-      const auto from = worker_nodes[static_cast<std::size_t>(src.worker)].begin() +
+      const auto from = worker_nodes[static_cast<std::size_t>(src.worker)].nodes.begin() +
                         static_cast<std::ptrdiff_t>(src.begin);
       std::copy(from, from + static_cast<std::ptrdiff_t>(src.count),
                 out.nodes.begin() + static_cast<std::ptrdiff_t>(block_base[b]));
