@@ -467,16 +467,13 @@ GradientZeros search_zeros(const BernsteinTriangle &g, const GradientZeroOptions
 
   // Newton's method from (u, v); gives up when the iterate leaves the square of half-width
   // `reach` around (cu, cv) (it is then heading for another zero or diverging).
-  // `last` receives the size |du| + |dv| of the last step taken, `farthest` the largest
-  // max(|u - cu|, |v - cv|) of the iterates (so that a run with a smaller reach gives up iff
-  // farthest exceeds it, and is otherwise the same run). `start` may hold the gradient and the
-  // Hessian at the starting point, already evaluated.
+  // `last` receives the size |du| + |dv| of the last step taken. `start` may hold the gradient
+  // and the Hessian at the starting point, already evaluated.
   struct Jet {
     double g[2], h[3];
   };
   auto newton = [&](double &u, double &v, double cu = 0.5, double cv = 0.5, double reach = 10,
-                    int max_iterations = 40, double *last = nullptr, double *farthest = nullptr,
-                    const Jet *start = nullptr) {
+                    int max_iterations = 40, double *last = nullptr, const Jet *start = nullptr) {
     for (int it = 0; it < max_iterations; ++it) {
       Jet j;
       if (it == 0 && start) {
@@ -494,8 +491,6 @@ GradientZeros search_zeros(const BernsteinTriangle &g, const GradientZeroOptions
       v -= dv;
       if (last)
         *last = std::abs(du) + std::abs(dv);
-      if (farthest)
-        *farthest = std::max(*farthest, std::max(std::abs(u - cu), std::abs(v - cv)));
       if (!std::isfinite(u) || !std::isfinite(v) || std::abs(u - cu) > reach ||
           std::abs(v - cv) > reach)
         return false;
@@ -698,14 +693,11 @@ GradientZeros search_zeros(const BernsteinTriangle &g, const GradientZeroOptions
     // if they converge (the last below a thousandth of the box), Krawczyk on the square centred
     // at the limit z that covers the box. Success proves z the only zero in that square: the box
     // holds z or nothing, and the certified square may already cover its neighbours.
-    // Both attempts start with the same three steps from the centre: the second reuses them.
-    bool stepped = false, stepped_ok = false;
-    double step_x = cx, step_y = cy, farthest = 0;
-    if (!framed && wmax <= 0.5) {
-      double last = INFINITY;
-      stepped = true;
-      stepped_ok = newton(step_x, step_y, cx, cy, 2 * wmax, 3, &last, &farthest, &centre);
-      double x = step_x, y = step_y;
+    const bool stepped = !framed && wmax <= 0.5;
+    bool stepped_ok = false; // the three steps neither failed nor left the reach
+    if (stepped) {
+      double x = cx, y = cy, last = INFINITY;
+      stepped_ok = newton(x, y, cx, cy, 2 * wmax, 3, &last, &centre);
       if (stepped_ok && last <= 1e-3 * wmax) {
         const double R = 1.0625 * std::max(std::abs(x - cx) + hx, std::abs(y - cy) + hy);
         if (krawczyk(x, y, R, R, x, y) == 1) {
@@ -716,21 +708,17 @@ GradientZeros search_zeros(const BernsteinTriangle &g, const GradientZeroOptions
         }
       }
     }
-    // Krawczyk on the box itself, around the centre or the Newton point if it stayed inside:
-    // where Newton converged it adds nothing to the attempt above, around its limit (decisive on
-    // 2 of 275 such boxes of the heater, none of the other datasets): then the box is split.
-    if (wmax <= 0.25 && !(stepped && stepped_ok)) {
+    // Krawczyk on the box itself, around the point three Newton steps from the centre reach if
+    // it stays in the box, else the centre. Not where the steps above succeeded: this adds
+    // nothing to the attempt around their limit (it was decisive on 2 of 275 such boxes of the
+    // heater, none of the other datasets), and the box is split. Where they failed, the same
+    // steps with a smaller reach fail too: the centre.
+    if (wmax <= 0.25 && !stepped_ok) {
       // Certify on the box inflated by a quarter, so zeros on box edges are interior.
       const double rx = 1.25 * hx, ry = 1.25 * hy, r = std::max(rx, ry);
       double x = cx, y = cy;
-      // The same steps with the reach 2 r < 2 wmax: they give up iff an iterate went farther.
-      const bool ok = stepped ? stepped_ok && farthest <= 2 * r
-                              : newton(x, y, cx, cy, 2 * r, 3, nullptr, nullptr, &centre);
-      if (stepped) {
-        x = step_x;
-        y = step_y;
-      }
-      if (!ok || std::abs(x - cx) > rx || std::abs(y - cy) > ry) {
+      if (stepped || !newton(x, y, cx, cy, 2 * r, 3, nullptr, &centre) || std::abs(x - cx) > rx ||
+          std::abs(y - cy) > ry) {
         x = cx;
         y = cy;
       }
