@@ -18,10 +18,11 @@ PipelineResult run_pipeline(const std::string &vtu, int threads, bool with_vtp,
   Mesh mesh;
   {
     auto t = clock_type::now();
-    const MeshInput input = read_mesh(vtu);
+    MeshInput input = read_mesh(vtu);
     r.read = seconds_since(t);
     t = clock_type::now();
-    mesh = build_mesh(input, {.threads = threads}); // as `hoct tree --threads N` builds it
+    // As `hoct tree --threads N` builds it: consuming the input (its arrays freed in the build).
+    mesh = build_mesh(std::move(input), {.threads = threads});
     r.mesh = seconds_since(t);
   }
   ExactTreeOptions eo;

@@ -57,8 +57,9 @@ void run_tree(const TreeOptions &o) {
   if (o.linear && o.refine > 0)
     throw Error("--linear and --refine exclude each other");
   const auto t0 = clock::now();
-  const LoadedMesh lm =
-      load_mesh(o.file, o.scalar, /*strict=*/false, o.merge.tolerance(), o.threads);
+  // Only --linear reads the input's nodes again: elsewhere the mesh holds all the tree needs.
+  const LoadedMesh lm = load_mesh(o.file, o.scalar, /*strict=*/false, o.merge.tolerance(),
+                                  o.threads, /*keep_input=*/o.linear);
   const std::vector<std::string> forced = check_domain(lm.mesh, o.file, o.force);
   for (const auto &why : forced)
     std::fprintf(stderr, "hoct: warning: --force: %s\n", why.c_str());

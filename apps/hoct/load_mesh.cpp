@@ -12,7 +12,7 @@
 namespace hoct::cli {
 
 LoadedMesh load_mesh(const std::string &path, const std::string &scalar, bool strict,
-                     double merge_tolerance, int threads) {
+                     double merge_tolerance, int threads, bool keep_input) {
   using clock = std::chrono::steady_clock;
   LoadedMesh r;
   const auto t0 = clock::now();
@@ -26,7 +26,8 @@ LoadedMesh load_mesh(const std::string &path, const std::string &scalar, bool st
                    static_cast<long long>(m.merged_points), path.c_str(), merge_tolerance);
   }
   const auto t1 = clock::now();
-  r.mesh = build_mesh(r.input, {.throw_on_error = strict, .threads = thread_count(threads)});
+  const MeshBuildOptions build{.throw_on_error = strict, .threads = thread_count(threads)};
+  r.mesh = keep_input ? build_mesh(r.input, build) : build_mesh(std::move(r.input), build);
   const auto t2 = clock::now();
   r.read_seconds = std::chrono::duration<double>(t1 - t0).count();
   r.build_seconds = std::chrono::duration<double>(t2 - t1).count();

@@ -10,7 +10,9 @@
 namespace hoct::cli {
 
 struct LoadedMesh {
-  MeshInput input; // as read (Lagrange nodes), for the commands that need the nodes themselves
+  // As read (Lagrange nodes), for the commands that need the nodes themselves (keep_input);
+  // else empty: the mesh build consumed it.
+  MeshInput input;
   Mesh mesh;
   double read_seconds = 0, build_seconds = 0;
 };
@@ -18,9 +20,11 @@ struct LoadedMesh {
 // Reads `path` (any supported format) and builds the mesh. With strict = true, any error-level
 // problem throws hoct::Error listing them. With merge_tolerance >= 0, points closer than that
 // (relative to the bounding-box diagonal) are merged first (mesh/duplicate_points.hpp).
-// `threads` (0: all cores) converts the cells to Bernstein form in parallel.
+// `threads` (0: all cores) converts the cells to Bernstein form in parallel. Without
+// keep_input the build consumes the input (build_mesh(MeshInput &&)): its arrays are released
+// as the mesh takes their place (at 4M cubic cells the input is over a third of the memory).
 LoadedMesh load_mesh(const std::string &path, const std::string &scalar, bool strict,
-                     double merge_tolerance = -1, int threads = 1);
+                     double merge_tolerance = -1, int threads = 1, bool keep_input = false);
 
 // --merge-duplicates[=TOL] of a command.
 struct MergeOption {

@@ -14,9 +14,9 @@ void throw_if_invalid(const Mesh &m, const MeshInput &input, const MeshBuildOpti
                 ": the mesh is not valid:\n" + m.problems.summary());
 }
 
-} // namespace
-
-Mesh build_mesh(const MeshInput &input, const MeshBuildOptions &options) {
+// Both build_mesh: with `consumed` (the input itself), its arrays are released along the way.
+// The geometry is built before the field: the field needs every array but the points.
+Mesh build(const MeshInput &input, MeshInput *consumed, const MeshBuildOptions &options) {
   Mesh m;
   m.source = input.source;
   m.field_name = input.field_name;
@@ -25,13 +25,31 @@ Mesh build_mesh(const MeshInput &input, const MeshBuildOptions &options) {
   if (structural_ok) {
     m.topology = Topology::build(input, m.problems, options.threads);
     check_duplicate_vertices(input, m.topology, m.problems, options.threads);
-    m.field = Field::build(input, m.topology, m.problems, options.threads);
     m.geometry = Geometry::build(input, options.threads);
+    if (consumed)
+      std::vector<Vec3>().swap(consumed->points);
+    m.field = Field::build(input, m.topology, m.problems, options.threads);
     check_geometry(m.geometry, m.topology, m.problems, options.threads);
     m.complete = true;
   }
+  if (consumed) {
+    MeshInput names;
+    names.source = std::move(consumed->source);
+    names.field_name = std::move(consumed->field_name);
+    *consumed = std::move(names);
+  }
   throw_if_invalid(m, input, options);
   return m;
+}
+
+} // namespace
+
+Mesh build_mesh(const MeshInput &input, const MeshBuildOptions &options) {
+  return build(input, nullptr, options);
+}
+
+Mesh build_mesh(MeshInput &&input, const MeshBuildOptions &options) {
+  return build(input, &input, options);
 }
 
 Mesh build_mesh_from_samples(const MeshInput &input, const std::vector<CellSamples> &samples,

@@ -32,6 +32,11 @@ struct MeshBuildOptions {
 };
 
 Mesh build_mesh(const MeshInput &input, const MeshBuildOptions &options = {});
+// The same mesh (and report) from an input that is consumed: each of its arrays is released as
+// soon as the build no longer needs it (the points once the geometry is built, the rest once
+// the field is), so that the input and the finished mesh are never all in memory together.
+// The input is left empty but for its source and field names.
+Mesh build_mesh(MeshInput &&input, const MeshBuildOptions &options = {});
 
 // Values of one cell's polynomial at arbitrary parametric positions (the thesis' general case).
 struct CellSamples {
