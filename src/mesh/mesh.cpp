@@ -3,6 +3,7 @@
 #include "error.hpp"
 #include "mesh/mesh_checks.hpp"
 #include "poly/sample_fit.hpp"
+#include "util/page_pool.hpp"
 
 namespace hoct {
 
@@ -17,6 +18,9 @@ void throw_if_invalid(const Mesh &m, const MeshInput &input, const MeshBuildOpti
 // Both build_mesh: with `consumed` (the input itself), its arrays are released along the way.
 // The geometry is built before the field: the field needs every array but the points.
 Mesh build(const MeshInput &input, MeshInput *consumed, const MeshBuildOptions &options) {
+  // The topology's large temporaries (its edge records: 48 bytes per cell) give their pages to
+  // the geometry and the field built after them.
+  const PageReuseScope reuse_pages;
   Mesh m;
   m.source = input.source;
   m.field_name = input.field_name;
