@@ -19,6 +19,7 @@
 #include <vtkUnstructuredGrid.h>
 
 #include <exception>
+#include <utility>
 
 vtkStandardNewMacro(vtkHoctContourTree);
 
@@ -60,11 +61,12 @@ int vtkHoctContourTree::RequestData(vtkInformation *, vtkInformationVector **inp
     return 0;
   }
   try {
-    // The same library calls as `hoct tree` (apps/hoct/cmd_tree.cpp).
-    const hoct::MeshInput mesh_input =
+    // The same library calls as `hoct tree` (apps/hoct/cmd_tree.cpp), the mesh built from an
+    // input it consumes (its arrays released as the mesh takes their place).
+    hoct::MeshInput mesh_input =
         hoct::paraview::mesh_input_from_grid(input, this->GetInputArrayToProcess(0, inputVector));
     this->UpdateProgress(0.1);
-    const hoct::Mesh mesh = hoct::build_mesh(mesh_input, {.throw_on_error = true});
+    const hoct::Mesh mesh = hoct::build_mesh(std::move(mesh_input), {.throw_on_error = true});
     const std::string problem = hoct::domain_problem(mesh.topology);
     if (!problem.empty()) {
       throw hoct::Error("the input grid: " + problem);
