@@ -8,6 +8,7 @@
 #include "util/uninitialized_vector.hpp"
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cmath>
 #include <numeric>
@@ -109,21 +110,31 @@ bool check_input(const MeshInput &in, ProblemLog &problems, int threads) {
     return false;
   }
   // Points, then cells, in fixed blocks on threads (problems appended in block order).
+  // The finite values' range in the same pass, per block (min and max are exact: the same
+  // range on any thread count).
   const int64_t point_blocks = problem_blocks(np);
   BlockProblems point_problems(point_blocks);
+  std::vector<std::array<double, 2>> block_range(static_cast<std::size_t>(point_blocks));
   parallel_chunks(np, point_blocks, threads_for(np, threads, 65536),
                   [&](int64_t block, int64_t begin, int64_t end, int) {
                     ProblemLog &log = point_problems[block];
-                    for (int64_t p = begin; p < end; ++p)
+                    double block_lo = INFINITY, block_hi = -INFINITY;
+                    for (int64_t p = begin; p < end; ++p) {
                       check_point(in, p, log);
+                      const double v = in.values[p];
+                      if (std::isfinite(v)) {
+                        block_lo = std::min(block_lo, v);
+                        block_hi = std::max(block_hi, v);
+                      }
+                    }
+                    block_range[block] = {block_lo, block_hi};
                   });
   point_problems.append_to(problems);
   double lo = INFINITY, hi = -INFINITY;
-  for (double v : in.values)
-    if (std::isfinite(v)) {
-      lo = std::min(lo, v);
-      hi = std::max(hi, v);
-    }
+  for (const auto &[block_lo, block_hi] : block_range) {
+    lo = std::min(lo, block_lo);
+    hi = std::max(hi, block_hi);
+  }
   if (hi > lo && hi - lo < kMinValueRange) {
     std::ostringstream m;
     m << "the values span only " << hi - lo << " (from " << lo << " to " << hi << "), less than "

@@ -221,6 +221,34 @@ TEST(MeshChecks, BadInputData) {
   EXPECT_EQ(e.problems.count("empty mesh"), 1);
 }
 
+TEST(MeshChecks, TinyValueRangeIsRefused) {
+  // Values spanning less than kMinValueRange (products of derivatives would underflow): refused
+  // with the finite values' range. On a grid of 20,000 points the range is gathered from several
+  // blocks of points, its ends in different ones; a NaN elsewhere does not enter it.
+  std::mt19937_64 rng(4);
+  std::vector<Vec3> v;
+  std::vector<std::array<int64_t, 3>> t;
+  testing::square_grid(140, rng, v, t);
+  MeshInput tiny = linear_mesh(v, t);
+  ASSERT_GT(tiny.points.size(), 3 * 4096u);
+  for (std::size_t i = 0; i < tiny.values.size(); ++i)
+    tiny.values[i] = 1e-160 * static_cast<double>((i * 7919) % 1000);
+  tiny.values[100] = 5e-145;    // the largest, in the first block
+  tiny.values[15000] = -2e-145; // the smallest, in the fourth
+  tiny.values[9000] = std::numeric_limits<double>::quiet_NaN();
+  for (int threads : {1, 2}) {
+    const Mesh m = build_mesh(tiny, {.throw_on_error = false, .threads = threads});
+    EXPECT_TRUE(message_contains(m, "value range too small", "from -2e-145 to 5e-145"))
+        << m.problems.summary();
+    EXPECT_TRUE(message_contains(m, "non-finite value", "point 9000"));
+  }
+  // A range of 1e-100 is accepted.
+  MeshInput small = linear_mesh(v, t);
+  for (std::size_t i = 0; i < small.values.size(); ++i)
+    small.values[i] = 1e-100 * v[i][0];
+  EXPECT_EQ(build_mesh(small, {false}).problems.count("value range too small"), 0);
+}
+
 TEST(MeshChecks, CurvedCellFoldedInside) {
   // A quadratic cell whose hypotenuse midpoint node is pulled across the opposite corner.
   MeshInput m;
