@@ -30,44 +30,23 @@ struct Box {
   std::size_t offset;
 };
 
-// Nested Horner of sum a[i * (d+1) + j] u^i v^j, or (Abs) of sum |a[..]| u^i v^j; degree D,
-// or d at run time when D < 0.
-template <int D, bool Abs> double horner(const double *a, int d_run, double u, double v) {
-  const int d = D >= 0 ? D : d_run;
-  double r = 0;
-  for (int i = d; i >= 0; --i) {
-    const double *row = &a[static_cast<std::size_t>(i) * (d + 1)];
-    double s = 0;
-    for (int j = d - i; j >= 0; --j)
-      s = s * v + (Abs ? std::abs(row[j]) : row[j]);
-    r = r * u + s;
-  }
-  return r;
-}
-
 // A polynomial in monomial form a[i * (d+1) + j] u^i v^j (a view of scratch storage),
-// evaluated by nested Horner with a rigorous bound on the rounding error.
+// evaluated by nested Horner (evaluate below) with a rigorous bound on the rounding error.
 struct Monomial {
   double *a = nullptr;
   int d = 0;
   std::size_t size() const { return static_cast<std::size_t>(d + 1) * (d + 1); }
-  double operator()(double u, double v) const {
-    return dispatch_degree(d, [&](auto D) { return horner<D.value, false>(a, d, u, v); });
-  }
-  // Bound on |computed - exact| of operator()(u, v): gamma_{4d+4} times the Horner sum of the
-  // absolute values (Higham, Accuracy and Stability, 5.1), with margin.
-  double error_bound(double u, double v) const {
-    return error_bound_of(dispatch_degree(
-        d, [&](auto D) { return horner<D.value, true>(a, d, std::abs(u), std::abs(v)); }));
-  }
-  // The same from the Horner sum of the absolute values r at (|u|, |v|).
+  // Bound on |computed - exact| of its Horner value at (u, v), from r, the Horner sum of the
+  // absolute values at (|u|, |v|): gamma_{4d+4} times r (Higham, Accuracy and Stability, 5.1),
+  // with margin.
   double error_bound_of(double r) const {
     return 2 * (4 * d + 6) * std::numeric_limits<double>::epsilon() * r;
   }
 };
 
-// K polynomials of one degree at one point: horner<D, Abs> of each (the same operations, so the
-// same bits), the K chains interleaved so that their latencies overlap.
+// Nested Horner of K polynomials of one degree at one point, sum a[k][i * (d+1) + j] u^i v^j
+// (or, Abs, of the absolute values), degree D (or d at run time when D < 0); the K chains
+// interleaved so that their latencies overlap, each the same operations as on its own.
 template <int D, bool Abs, int K>
 void horner_k(const double *const a[K], int d_run, double u, double v, double out[K]) {
   const int d = D >= 0 ? D : d_run;
@@ -85,8 +64,8 @@ void horner_k(const double *const a[K], int d_run, double u, double v, double ou
     out[k] = r[k];
 }
 
-// operator() (Abs = false) or the sum behind error_bound (Abs = true) of K polynomials of one
-// degree at (u, v) at once.
+// The values (Abs = false) or the sums behind error_bound_of (Abs = true, at (|u|, |v|)) of K
+// polynomials of one degree at (u, v) at once.
 template <bool Abs, int K>
 void evaluate(const Monomial *const p[K], double u, double v, double out[K]) {
   const double *a[K];
@@ -459,7 +438,7 @@ GradientZeros search_zeros(const BernsteinTriangle &g, const GradientZeroOptions
   const Monomial *const gradient[2] = {&mu, &mv};
   const Monomial *const hessian[3] = {&muu, &muv, &mvv};
   // The gradient (g[0], g[1]) and the Hessian's entries (h[0] = uu, h[1] = uv, h[2] = vv) at
-  // a point, each polynomial evaluated as by its operator().
+  // a point, each by nested Horner.
   auto gradient_at = [&](double u, double v, double g[2]) {
     evaluate<false, 2>(gradient, u, v, g);
   };
