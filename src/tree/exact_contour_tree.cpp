@@ -62,7 +62,8 @@ struct alignas(64) CellChunk {
   // Connections; node refs >= 0 are global ids, -1 - i is the chunk's i-th interior node.
   UninitializedVector<GraphEdge> join, split;
   std::vector<GeoEdge> geo; // with arc geometry: each connection's path (per cell join, split)
-  int64_t unresolved = 0;   // uncertified interior zeros
+  std::vector<int64_t> fallback_cells; // the chunk's cells that fall back, ascending
+  int64_t unresolved = 0;              // uncertified interior zeros
   PathCounters counters;
 };
 
@@ -226,6 +227,8 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
       }
       fallback[c] =
           why ? why : connect_cell(mesh, en, c, have_polynomial, opt.arc_geometry, scratch, out);
+      if (fallback[c])
+        out.fallback_cells.push_back(c);
     }
   });
   const auto t3 = clock_type::now();
@@ -235,7 +238,7 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
   // then extra lattice nodes on edges of fallback cells, then fallback cells' sub-vertices.
   std::vector<int64_t> node_base(chunks), join_base(chunks), split_base(chunks);
   int64_t next = edge_base + static_cast<int64_t>(en.nodes.size());
-  std::size_t cell_join = 0, cell_split = 0;
+  std::size_t cell_join = 0, cell_split = 0, fallback_count = 0;
   PathCounters counters;
   int64_t unresolved_zeros = 0;
   for (int64_t k = 0; k < chunks; ++k) {
@@ -246,6 +249,7 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
     cell_join += ch.join.size();
     split_base[k] = static_cast<int64_t>(cell_split);
     cell_split += ch.split.size();
+    fallback_count += ch.fallback_cells.size();
     counters.direct += ch.counters.direct;
     counters.traced += ch.counters.traced;
     counters.failed += ch.counters.failed;
@@ -266,10 +270,7 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
   // that adding them does not reallocate (and copy) arrays of millions of nodes.
   const int max_degree = std::max(1, field.max_degree());
   const int K = opt.fallback_refinement > 0 ? opt.fallback_refinement : std::max(4, 2 * max_degree);
-  const std::size_t fallback_room =
-      static_cast<std::size_t>(
-          std::count_if(fallback.begin(), fallback.end(), [](uint8_t f) { return f != 0; })) *
-      static_cast<std::size_t>(lattice_size(K));
+  const std::size_t fallback_room = fallback_count * static_cast<std::size_t>(lattice_size(K));
   UninitializedVector<double> values;
   values.reserve(static_cast<std::size_t>(next) + fallback_room);
   values.resize(static_cast<std::size_t>(next));
@@ -293,8 +294,12 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
       values[v] = field.vertex_value(v);
     }
   });
-  for (std::size_t i = 0; i < en.nodes.size(); ++i)
-    values[edge_base + static_cast<int64_t>(i)] = en.nodes[i].value;
+  const int64_t edge_node_count = static_cast<int64_t>(en.nodes.size());
+  parallel_for(edge_node_count, gather_threads(edge_node_count),
+               [&](int64_t begin, int64_t end, int) {
+                 for (int64_t i = begin; i < end; ++i)
+                   values[edge_base + i] = en.nodes[i].value;
+               });
   // Interior nodes and the cells' connections in global ids, each chunk into its own slots.
   const int64_t gathered = next - edge_base + static_cast<int64_t>(cell_join + cell_split);
   parallel_for(chunks, gather_threads(gathered), [&](int64_t begin, int64_t end, int) {
@@ -323,6 +328,11 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
       geo_edges.push_back({e.a >= 0 ? e.a : base + (-1 - e.a), e.b >= 0 ? e.b : base + (-1 - e.b),
                            std::move(e.inner)});
     }
+  // The fallback cells, ascending (chunks are in cell order).
+  std::vector<int64_t> fallback_cells;
+  fallback_cells.reserve(fallback_count);
+  for (const CellChunk &ch : chunk_out)
+    fallback_cells.insert(fallback_cells.end(), ch.fallback_cells.begin(), ch.fallback_cells.end());
   chunk_out = {};
 
   // Fallback cells: k x k refinement through the edge nodes, PL rule (all sub-edges in both
@@ -334,13 +344,9 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
     return next++;
   };
   std::array<int64_t, 8> reason_count{};
-  int64_t fallback_cells = 0;
   std::array<std::vector<double>, 3> extra;
   std::vector<int64_t> ids;
-  for (int64_t c = 0; c < nc; ++c) {
-    if (!fallback[c])
-      continue;
-    ++fallback_cells;
+  for (const int64_t c : fallback_cells) {
     for (int b = 0; b < 7; ++b)
       if (fallback[c] & (1u << b))
         ++reason_count[b];
@@ -556,7 +562,7 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
   r.add_stat("connections_traced", static_cast<double>(counters.traced));
   r.add_stat("connections_failed", static_cast<double>(counters.failed));
   r.add_stat("descent_steps", static_cast<double>(counters.steps));
-  r.add_stat("fallback_cells", static_cast<double>(fallback_cells));
+  r.add_stat("fallback_cells", static_cast<double>(fallback_count));
   static const char *reason_names[7] = {
       "fallback_constant_cell",       "fallback_critical_curve",  "fallback_uncertified_zero",
       "fallback_zero_near_boundary",  "fallback_degenerate_edge", "fallback_degenerate_edge_node",

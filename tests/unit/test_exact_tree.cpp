@@ -309,10 +309,27 @@ TEST(ExactTree, LinearCellsGiveExactlyThePlTree) {
 }
 
 TEST(ExactTree, IdenticalForAnyThreadCount) {
+  std::vector<std::pair<std::string, Mesh>> meshes;
   for (const std::string name : {"conductor", "random", "sphere"}) {
     DatasetOptions o;
     o.cells = 3000;
-    const Mesh mesh = build_mesh(generate_dataset(name, o));
+    meshes.emplace_back(name, build_mesh(generate_dataset(name, o)));
+  }
+  {
+    // A plateau: constant where x < 0.4, so that fallback cells (refined in the graph assembly,
+    // after the threads' chunks are combined) lie in many chunks.
+    std::mt19937_64 rng(78);
+    std::vector<Vec3> v;
+    std::vector<std::array<int64_t, 3>> t;
+    testing::square_grid(30, rng, v, t);
+    meshes.emplace_back(
+        "plateau",
+        build_mesh(testing::lagrange_mesh(
+            v, t, [](int64_t) { return 3; }, nullptr,
+            [](const Vec3 &p) { return p[0] < 0.4 ? 0.0 : std::sin(9 * (p[0] - 0.4)) * p[1]; },
+            rng)));
+  }
+  for (const auto &[name, mesh] : meshes) {
     ExactTreeOptions one, two, many;
     one.threads = 1;
     two.threads = 2;
@@ -320,6 +337,9 @@ TEST(ExactTree, IdenticalForAnyThreadCount) {
     two.cells_per_thread = many.cells_per_thread = 1; // really use the threads on 3000 cells
     const TreeResult a = exact_contour_tree(mesh, one), b = exact_contour_tree(mesh, two),
                      c = exact_contour_tree(mesh, many);
+    if (name == "plateau") {
+      ASSERT_GT(stat(a, "fallback_cells"), 100);
+    }
     for (const TreeResult *t : {&b, &c}) {
       ASSERT_EQ(t->nodes.size(), a.nodes.size()) << name;
       for (std::size_t i = 0; i < a.nodes.size(); ++i) {
