@@ -1,5 +1,6 @@
 #include "tree/node_order.hpp"
 
+#include "util/parallel_for.hpp"
 #include "util/uninitialized_vector.hpp"
 
 #include <algorithm>
@@ -34,8 +35,9 @@ bool item_less(const Item &a, const Item &b) {
 // and more) and fewer for smaller ranges (about 8 keys per part), each part then sorted the same
 // way with the arrays' roles swapped. Floating-point keys share their leading (exponent) bits in
 // clusters, so a fixed digit would leave most keys in a few buckets; this adapts to every range's
-// own prefix.
-void sort_items(Item *a, Item *b, std::size_t n, bool to_b) {
+// own prefix. With threads > 1 the parts of the first partition are sorted on that many threads
+// (each part as on one; the result is the same).
+void sort_items(Item *a, Item *b, std::size_t n, bool to_b, int threads = 1) {
   if (n <= 48) {
     std::sort(a, a + n, item_less);
     if (to_b)
@@ -72,9 +74,26 @@ void sort_items(Item *a, Item *b, std::size_t n, bool to_b) {
     std::copy(start, start + buckets, fill);
     for (std::size_t i = 0; i < n; ++i)
       b[fill[(a[i].key >> shift) - base]++] = a[i];
-    for (std::size_t k = 0; k < buckets; ++k)
-      if (start[k + 1] > start[k])
-        sort_items(b + start[k], a + start[k], start[k + 1] - start[k], !to_b);
+    auto sort_parts = [&](std::size_t k0, std::size_t k1) {
+      for (std::size_t k = k0; k < k1; ++k)
+        if (start[k + 1] > start[k])
+          sort_items(b + start[k], a + start[k], start[k + 1] - start[k], !to_b);
+    };
+    if (threads <= 1) {
+      sort_parts(0, buckets);
+      return;
+    }
+    // Runs of consecutive parts of about n / chunks keys each (a part is never split), handed
+    // out to the threads in turn.
+    const int64_t chunks = int64_t{16} * threads;
+    auto first_part = [&](int64_t j) {
+      const uint32_t at =
+          static_cast<uint32_t>(n * static_cast<std::size_t>(j) / static_cast<std::size_t>(chunks));
+      return static_cast<std::size_t>(std::lower_bound(start, start + buckets, at) - start);
+    };
+    parallel_chunks(chunks, chunks, threads, [&](int64_t j, int64_t, int64_t, int) {
+      sort_parts(first_part(j), j + 1 == chunks ? buckets : first_part(j + 1));
+    });
   };
   if (bits > kMaxBits) {
     std::vector<uint32_t> start(buckets + 1), fill(buckets);
@@ -88,25 +107,30 @@ void sort_items(Item *a, Item *b, std::size_t n, bool to_b) {
 
 } // namespace
 
-std::vector<int64_t> ascending_order(std::span<const double> values) {
+std::vector<int64_t> ascending_order(std::span<const double> values, int threads) {
   std::vector<int64_t> order(values.size());
-  ascending_order(values, order);
+  ascending_order(values, order, threads);
   return order;
 }
 
-void ascending_order(std::span<const double> values, std::span<int64_t> order) {
-  const std::size_t n = values.size();
+void ascending_order(std::span<const double> values, std::span<int64_t> order, int threads) {
+  const int64_t n = static_cast<int64_t>(values.size());
+  threads = threads_for(n, threads, int64_t{1} << 16);
   UninitializedVector<Item> a, b;
-  a.resize(n);
-  b.resize(n);
-  for (std::size_t i = 0; i < n; ++i)
-    a[i] = {order_key(values[i]), static_cast<int64_t>(i)};
-  if (n < (std::size_t{1} << 32))
-    sort_items(a.data(), b.data(), n, false);
+  a.resize(static_cast<std::size_t>(n));
+  b.resize(static_cast<std::size_t>(n));
+  parallel_for(n, threads, [&](int64_t begin, int64_t end, int) {
+    for (int64_t i = begin; i < end; ++i)
+      a[i] = {order_key(values[i]), i};
+  });
+  if (n < (int64_t{1} << 32))
+    sort_items(a.data(), b.data(), static_cast<std::size_t>(n), false, threads);
   else
     std::sort(a.begin(), a.end(), item_less);
-  for (std::size_t i = 0; i < n; ++i)
-    order[i] = a[i].id;
+  parallel_for(n, threads, [&](int64_t begin, int64_t end, int) {
+    for (int64_t i = begin; i < end; ++i)
+      order[i] = a[i].id;
+  });
 }
 
 } // namespace hoct

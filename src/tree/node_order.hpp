@@ -10,9 +10,10 @@
 namespace hoct {
 
 // The nodes in ascending total order: ascending[r] is the node of rank r. Values must not be
-// NaN (inputs are checked for it).
-std::vector<int64_t> ascending_order(std::span<const double> values);
+// NaN (inputs are checked for it). On `threads` threads from 65,536 values; the same result on
+// any.
+std::vector<int64_t> ascending_order(std::span<const double> values, int threads = 1);
 // The same into `out` (values.size() entries).
-void ascending_order(std::span<const double> values, std::span<int64_t> out);
+void ascending_order(std::span<const double> values, std::span<int64_t> out, int threads = 1);
 
 } // namespace hoct

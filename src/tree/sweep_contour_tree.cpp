@@ -217,11 +217,13 @@ ContourTree sweep_ranked(std::span<const double> values, const SweepEdges &edges
   const int64_t n = static_cast<int64_t>(values.size());
   UninitializedVector<int64_t> order;
   order.resize(static_cast<std::size_t>(n));
-  ascending_order(values, order);
+  ascending_order(values, order, threads);
   UninitializedVector<I> rank;
   rank.resize(static_cast<std::size_t>(n));
-  for (int64_t r = 0; r < n; ++r)
-    rank[order[r]] = static_cast<I>(r);
+  parallel_for(n, threads_for(n, threads, int64_t{1} << 16), [&](int64_t begin, int64_t end, int) {
+    for (int64_t r = begin; r < end; ++r)
+      rank[order[r]] = static_cast<I>(r);
+  });
   const auto t1 = clock_type::now();
   // The split sweep runs upwards over mirrored ranks n - 1 - r.
   const I last = static_cast<I>(n - 1);

@@ -229,11 +229,12 @@ TEST(NodeTotalOrder, AscendingOrderBreaksTiesById) {
 
 TEST(NodeTotalOrder, PartitionSortEqualsComparisonSort) {
   // Values of every sign and magnitude (denormals, infinities, many ties): the radix sort of
-  // the bit patterns against std::sort with the total order (1.1M keys: the 16-bit first pass).
+  // the bit patterns against std::sort with the total order (1.1M keys: the 16-bit first pass;
+  // 300,000 and 1.1M keys also on threads).
   std::mt19937_64 rng(3);
   std::uniform_real_distribution<double> mantissa(-1, 1);
   std::uniform_int_distribution<int> exponent(-1074, 1023), kind(0, 9);
-  for (std::size_t n : {1u, 2u, 17u, 1000u, 100000u, 1100000u}) {
+  for (std::size_t n : {1u, 2u, 17u, 1000u, 100000u, 300000u, 1100000u}) {
     std::vector<double> v(n);
     for (double &x : v) {
       const int k = kind(rng);
@@ -249,6 +250,9 @@ TEST(NodeTotalOrder, PartitionSortEqualsComparisonSort) {
     std::sort(expected.begin(), expected.end(),
               [&](int64_t a, int64_t b) { return node_less(v[a], a, v[b], b); });
     EXPECT_EQ(ascending_order(v), expected) << n;
+    // On threads (from 65,536 keys): the first partition's parts sorted side by side.
+    for (int threads : {2, 3})
+      EXPECT_EQ(ascending_order(v, threads), expected) << n << " keys, " << threads << " threads";
   }
 }
 
