@@ -75,9 +75,9 @@ template <int N> void casteljau_fixed_down(double *w, int to, const std::array<d
 }
 
 void casteljau_down(double *w, int from, int to, const std::array<double, 3> &l) {
-  // The usual degrees (1 to 6), unrolled.
+  // The usual degrees (1 to 8), unrolled.
   const bool fixed = dispatch_degree(from, [&](auto D) {
-    if constexpr (D.value >= 1 && D.value <= 6) {
+    if constexpr (D.value >= 1 && D.value <= 8) {
       casteljau_fixed_down<D.value>(w, to, l);
       return true;
     }
@@ -169,9 +169,9 @@ inline BernsteinTriangle::Jet jet_from_level(double *w, int run_time_degree,
 BernsteinTriangle::Jet BernsteinTriangle::jet_of(std::span<const double> c, int deg, double u,
                                                  double v) {
   const auto l = barycentric(u, v);
-  // The usual degrees (1 to 6): the copy and the steps to degree 2 unrolled, in registers.
+  // The usual degrees (1 to 8): the copy and the steps to degree 2 unrolled, in registers.
   return dispatch_degree(deg, [&](auto D) {
-    if constexpr (D.value >= 1 && D.value <= 6) {
+    if constexpr (D.value >= 1 && D.value <= 8) {
       double w[lattice_size(D.value)];
       for (int i = 0; i < lattice_size(D.value); ++i)
         w[i] = c[i];
@@ -289,9 +289,9 @@ void BernsteinTriangle::restrict_to_segment(const Vec2 &p, const Vec2 &q, double
   // coefficient d-k.
   const auto lp = barycentric(p[0], p[1]);
   const auto lq = barycentric(q[0], q[1]);
-  // The usual degrees (1 to 6), unrolled.
+  // The usual degrees (1 to 8), unrolled.
   const bool fixed = dispatch_degree(d_, [&](auto D) {
-    if constexpr (D.value >= 1 && D.value <= 6) {
+    if constexpr (D.value >= 1 && D.value <= 8) {
       restrict_fixed<D.value>(c_, lp, lq, out);
       return true;
     }

@@ -226,6 +226,44 @@ TEST_P(BernsteinDegree, ArbitrarySamplesRecoverThePolynomial) {
 
 INSTANTIATE_TEST_SUITE_P(Degrees1To8, BernsteinDegree, ::testing::Range(1, 9));
 
+TEST(BernsteinTriangle, GeneralDegreesAgreeWithEvaluation) {
+  // Degrees 1 to 8 take unrolled fixed-degree paths for the jet and the segment restriction
+  // (tested above against analytic values); 9 and more the general ones: against evaluation of
+  // the same Bernstein polynomial (random coefficients, points inside the triangle, where both
+  // round at the level of the coefficients).
+  std::mt19937_64 rng(12);
+  std::uniform_real_distribution<double> U(-1, 1), W(0, 1);
+  auto inside = [&] {
+    double u = W(rng), v = W(rng);
+    if (u + v > 1) {
+      u = 1 - u;
+      v = 1 - v;
+    }
+    return Vec2{u, v};
+  };
+  for (int d : {7, 8, 9, 10, 12}) {
+    std::vector<double> c(lattice_size(d));
+    for (double &x : c)
+      x = U(rng);
+    const BernsteinTriangle b(d, c);
+    const BernsteinTriangle bu = b.du(), bv = b.dv();
+    const double tol = 1e-13 * d * d;
+    for (int trial = 0; trial < 20; ++trial) {
+      const Vec2 p = inside(), q = inside();
+      const BernsteinPoly s = b.restrict_to_segment(p, q);
+      ASSERT_EQ(s.degree(), d);
+      for (double t : {0.0, 0.3, 0.71, 1.0})
+        EXPECT_NEAR(s(t), b(p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1])), tol)
+            << "degree " << d;
+      const BernsteinTriangle::Jet j = b.jet(p[0], p[1]);
+      EXPECT_NEAR(j.value, b(p[0], p[1]), tol) << "degree " << d;
+      EXPECT_NEAR(j.gradient[0], bu(p[0], p[1]), tol * d) << "degree " << d;
+      EXPECT_NEAR(j.gradient[1], bv(p[0], p[1]), tol * d) << "degree " << d;
+      EXPECT_NEAR(j.hessian[0][1], bu.dv()(p[0], p[1]), tol * d * d) << "degree " << d;
+    }
+  }
+}
+
 TEST(SampleFit, RejectsIllConditionedAndInsufficientSamples) {
   // All samples on one line: no quadratic is determined.
   std::vector<Vec2> pos;
