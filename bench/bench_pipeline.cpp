@@ -5,6 +5,7 @@
 #include "io/tree_vtp_writer.hpp"
 #include "mesh/mesh.hpp"
 #include "tree/exact_contour_tree.hpp"
+#include "util/page_pool.hpp"
 
 #include <algorithm>
 #include <utility>
@@ -14,6 +15,8 @@ namespace hoct::bench {
 PipelineResult run_pipeline(const std::string &vtu, int threads, bool with_vtp,
                             const ScratchDir &scratch) {
   PipelineResult r;
+  // As `hoct tree` runs: one page-reuse scope from reading to writing.
+  const PageReuseScope reuse_pages;
   const auto t0 = clock_type::now();
   Mesh mesh;
   {

@@ -126,7 +126,7 @@ private:
 
   // Nodes, in order of first definition.
   TagIndex node_index_;
-  std::vector<Vec3> points_;
+  PooledVector<Vec3> points_;
   std::vector<uint64_t> node_tags_;
 
   // Triangles with node indices into points_, canonical order; their element tags.
@@ -147,7 +147,7 @@ private:
   std::string chosen_;
   int64_t chosen_step_ = 0;
   std::size_t chosen_at_ = 0;
-  std::vector<double> values_;
+  PooledVector<double> values_;
 };
 
 MeshInput MshReader::read() {

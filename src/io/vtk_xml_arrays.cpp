@@ -58,7 +58,7 @@ std::string VtkXmlArrays::encode_inline(const void *data, std::size_t bytes) con
 
 template <class T>
 std::string VtkXmlArrays::element(const std::string &name, const char *type,
-                                  const std::vector<T> &v, int components) {
+                                  std::span<const T> v, int components) {
   std::string e = "<DataArray type=\"" + std::string(type) + "\" Name=\"" + xml_escape(name) +
                   "\" NumberOfComponents=\"" + std::to_string(components) + "\" format=\"";
   const std::size_t bytes = v.size() * sizeof(T);
@@ -93,16 +93,16 @@ std::string VtkXmlArrays::element(const std::string &name, const char *type,
   return e;
 }
 
-std::string VtkXmlArrays::array(const std::string &name, const std::vector<double> &v, int c) {
+std::string VtkXmlArrays::array(const std::string &name, std::span<const double> v, int c) {
   return element(name, "Float64", v, c);
 }
-std::string VtkXmlArrays::array(const std::string &name, const std::vector<int64_t> &v, int c) {
+std::string VtkXmlArrays::array(const std::string &name, std::span<const int64_t> v, int c) {
   return element(name, "Int64", v, c);
 }
-std::string VtkXmlArrays::array(const std::string &name, const std::vector<int32_t> &v, int c) {
+std::string VtkXmlArrays::array(const std::string &name, std::span<const int32_t> v, int c) {
   return element(name, "Int32", v, c);
 }
-std::string VtkXmlArrays::array(const std::string &name, const std::vector<uint8_t> &v, int c) {
+std::string VtkXmlArrays::array(const std::string &name, std::span<const uint8_t> v, int c) {
   return element(name, "UInt8", v, c);
 }
 

@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <ostream>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -18,10 +19,10 @@ public:
 
   // The complete <DataArray ...>...</DataArray> element (inline) or a self-closing one with its
   // offset (appended).
-  std::string array(const std::string &name, const std::vector<double> &v, int components = 1);
-  std::string array(const std::string &name, const std::vector<int64_t> &v, int components = 1);
-  std::string array(const std::string &name, const std::vector<int32_t> &v, int components = 1);
-  std::string array(const std::string &name, const std::vector<uint8_t> &v, int components = 1);
+  std::string array(const std::string &name, std::span<const double> v, int components = 1);
+  std::string array(const std::string &name, std::span<const int64_t> v, int components = 1);
+  std::string array(const std::string &name, std::span<const int32_t> v, int components = 1);
+  std::string array(const std::string &name, std::span<const uint8_t> v, int components = 1);
 
   // Attributes for the <VTKFile> element (byte order, header type, compressor).
   std::string file_attributes() const;
@@ -30,7 +31,7 @@ public:
 
 private:
   template <class T>
-  std::string element(const std::string &name, const char *type, const std::vector<T> &v,
+  std::string element(const std::string &name, const char *type, std::span<const T> v,
                       int components);
   std::string encode_inline(const void *data, std::size_t bytes) const;
 

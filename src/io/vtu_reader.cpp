@@ -84,13 +84,14 @@ private:
   Payload decode_blocks(const uint8_t *p, std::size_t avail, const pugi::xml_node &a) const;
   Payload decode_owned(std::vector<uint8_t> buffer, const pugi::xml_node &a) const;
   template <class S, class T>
-  void convert_binary(const Payload &raw, const pugi::xml_node &a, std::vector<T> &out) const;
+  void convert_binary(const Payload &raw, const pugi::xml_node &a, PooledVector<T> &out) const;
   // Copies a binary array stored as `type` in the machine's byte order straight into dst (room
   // for `expected` values of it); false, with nothing read, for any other array.
   bool read_native(const pugi::xml_node &a, Scalar type, void *dst, std::size_t expected) const;
-  std::vector<double> read_doubles(const pugi::xml_node &a, std::size_t expected) const;
-  std::vector<int64_t> read_ints(const pugi::xml_node &a, std::size_t expected) const;
-  template <class T> std::vector<T> read_array(const pugi::xml_node &a, std::size_t expected) const;
+  PooledVector<double> read_doubles(const pugi::xml_node &a, std::size_t expected) const;
+  PooledVector<int64_t> read_ints(const pugi::xml_node &a, std::size_t expected) const;
+  template <class T>
+  PooledVector<T> read_array(const pugi::xml_node &a, std::size_t expected) const;
 
   std::string path_, scalar_;
   ReadLimits limits_;
@@ -513,7 +514,7 @@ Payload VtuFile::binary_payload(const pugi::xml_node &a) const {
 // integral, and unsigned 64-bit ones must fit a signed one.
 template <class S, class T>
 void VtuFile::convert_binary(const Payload &raw, const pugi::xml_node &a,
-                             std::vector<T> &out) const {
+                             PooledVector<T> &out) const {
   const std::size_t n = raw.size / sizeof(S);
   out.resize(n);
   const bool swap = big_endian_ != (std::endian::native == std::endian::big);
@@ -568,10 +569,10 @@ bool VtuFile::read_native(const pugi::xml_node &a, Scalar type, void *dst,
 }
 
 template <class T>
-std::vector<T> VtuFile::read_array(const pugi::xml_node &a, std::size_t expected) const {
+PooledVector<T> VtuFile::read_array(const pugi::xml_node &a, std::size_t expected) const {
   const TypeInfo &ti = type_of(a);
   const std::string format = a.attribute("format").as_string("ascii");
-  std::vector<T> out;
+  PooledVector<T> out;
   if (format == "ascii") {
     const char *p = a.child_value();
     const char *end = p + std::strlen(p);
@@ -662,10 +663,10 @@ std::vector<T> VtuFile::read_array(const pugi::xml_node &a, std::size_t expected
   return out;
 }
 
-std::vector<double> VtuFile::read_doubles(const pugi::xml_node &a, std::size_t expected) const {
+PooledVector<double> VtuFile::read_doubles(const pugi::xml_node &a, std::size_t expected) const {
   return read_array<double>(a, expected);
 }
-std::vector<int64_t> VtuFile::read_ints(const pugi::xml_node &a, std::size_t expected) const {
+PooledVector<int64_t> VtuFile::read_ints(const pugi::xml_node &a, std::size_t expected) const {
   return read_array<int64_t>(a, expected);
 }
 
@@ -723,7 +724,7 @@ MeshInput VtuFile::read() {
     Vec3 *points = m.points.data() + base;
     // Float64 x, y, z as stored: straight into the points (the common case); else converted.
     if (pc != 3 || !read_native(pa, Scalar::F64, points, static_cast<std::size_t>(np) * 3)) {
-      const std::vector<double> xyz = read_doubles(pa, static_cast<std::size_t>(np) * pc);
+      const PooledVector<double> xyz = read_doubles(pa, static_cast<std::size_t>(np) * pc);
       for (long long i = 0; i < np; ++i)
         points[i] = {xyz[i * pc], xyz[i * pc + 1], pc == 3 ? xyz[i * pc + 2] : 0.0};
     }
@@ -763,7 +764,7 @@ MeshInput VtuFile::read() {
     else if (field != m.field_name)
       fail(where + ": scalar '" + field + "' differs from the first piece's '" + m.field_name +
            "'");
-    std::vector<double> vals = read_doubles(sa, static_cast<std::size_t>(np));
+    PooledVector<double> vals = read_doubles(sa, static_cast<std::size_t>(np));
     for (long long i = 0; i < np; ++i)
       if (!std::isfinite(vals[i]))
         fail(where + ": point " + std::to_string(i) + " has a non-finite value of '" + field + "'");
@@ -777,8 +778,8 @@ MeshInput VtuFile::read() {
                          oa = named_array(cells, "offsets"), ta = named_array(cells, "types");
     if (!ca || !oa || !ta)
       fail(where + ": <Cells> needs the DataArrays connectivity, offsets and types");
-    const std::vector<int64_t> offsets = read_ints(oa, static_cast<std::size_t>(nc));
-    const std::vector<int64_t> types = read_ints(ta, static_cast<std::size_t>(nc));
+    const PooledVector<int64_t> offsets = read_ints(oa, static_cast<std::size_t>(nc));
+    const PooledVector<int64_t> types = read_ints(ta, static_cast<std::size_t>(nc));
     const int64_t nconn = nc ? offsets.back() : 0;
     if (nconn < 0 || static_cast<unsigned long long>(nconn) > file_size_)
       fail(where + ": the last cell offset " + std::to_string(nconn) + " is invalid");
@@ -791,7 +792,7 @@ MeshInput VtuFile::read() {
     if (start == 0) {
       m.cell_nodes = read_ints(ca, static_cast<std::size_t>(nconn));
     } else {
-      const std::vector<int64_t> conn = read_ints(ca, static_cast<std::size_t>(nconn));
+      const PooledVector<int64_t> conn = read_ints(ca, static_cast<std::size_t>(nconn));
       m.cell_nodes.insert(m.cell_nodes.end(), conn.begin(), conn.end());
     }
     m.cell_offsets.reserve(m.cell_offsets.size() + static_cast<std::size_t>(nc));

@@ -13,7 +13,7 @@
 
 namespace hoct {
 
-double bounding_box_diagonal(const std::vector<Vec3> &points) {
+double bounding_box_diagonal(std::span<const Vec3> points) {
   if (points.empty())
     return 0;
   Vec3 lo = points[0], hi = points[0];
@@ -44,7 +44,7 @@ constexpr std::size_t kPairwiseLimit = 64;
 
 } // namespace
 
-std::vector<int64_t> coincident_points(const std::vector<Vec3> &points,
+std::vector<int64_t> coincident_points(std::span<const Vec3> points,
                                        const std::vector<int64_t> &candidates, double tolerance,
                                        int threads) {
   const std::size_t n = candidates.size();

@@ -7,6 +7,7 @@
 #include "mesh/mesh_input.hpp"
 
 #include <cstdint>
+#include <span>
 #include <vector>
 
 namespace hoct {
@@ -14,12 +15,12 @@ namespace hoct {
 // For each of `points[candidates[i]]`, the smallest candidate point id within `tolerance`
 // (Euclidean) of it, transitively (chains of close points form one group); itself if none.
 // `threads`: the grid keys and their sort run in parallel (the result does not depend on it).
-std::vector<int64_t> coincident_points(const std::vector<Vec3> &points,
+std::vector<int64_t> coincident_points(std::span<const Vec3> points,
                                        const std::vector<int64_t> &candidates, double tolerance,
                                        int threads = 1);
 
 // Length of the bounding-box diagonal of the points (0 for none).
-double bounding_box_diagonal(const std::vector<Vec3> &points);
+double bounding_box_diagonal(std::span<const Vec3> points);
 
 struct MergeReport {
   int64_t merged_points = 0; // points replaced by another at the same position

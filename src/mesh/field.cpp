@@ -41,7 +41,7 @@ double Field::value(int64_t c, double u, double v) const { return cell_polynomia
 Field Field::build(const MeshInput &in, const Topology &topo, ProblemLog &problems, int threads) {
   Field f;
   const int64_t nc = topo.num_cells(), ne = topo.num_edges();
-  f.input_degree_ = in.cell_degree;
+  f.input_degree_.assign(in.cell_degree.begin(), in.cell_degree.end());
   if (!in.values.empty()) {
     auto [lo, hi] = std::minmax_element(in.values.begin(), in.values.end());
     f.min_value_ = *lo;

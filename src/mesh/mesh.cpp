@@ -31,7 +31,7 @@ Mesh build(const MeshInput &input, MeshInput *consumed, const MeshBuildOptions &
     check_duplicate_vertices(input, m.topology, m.problems, options.threads);
     m.geometry = Geometry::build(input, options.threads);
     if (consumed)
-      std::vector<Vec3>().swap(consumed->points);
+      PooledVector<Vec3>().swap(consumed->points);
     m.field = Field::build(input, m.topology, m.problems, options.threads);
     check_geometry(m.geometry, m.topology, m.problems, options.threads);
     m.complete = true;

@@ -4,6 +4,8 @@
 // poly/lagrange_node_order.hpp. The core never sees a file format.
 #pragma once
 
+#include "util/uninitialized_vector.hpp"
+
 #include <array>
 #include <cstdint>
 #include <string>
@@ -13,19 +15,22 @@ namespace hoct {
 
 using Vec3 = std::array<double, 3>;
 
+// Its arrays' large buffers come from the page pool (util/page_pool.hpp): inside a PageReuseScope
+// around reading, building and computing, the pages of the input the mesh build consumes serve
+// the arrays built after it.
 struct MeshInput {
   // Every node of the mesh (corner and higher-order nodes), with its 3D position and field value.
-  std::vector<Vec3> points;
-  std::vector<double> values;
+  PooledVector<Vec3> points;
+  PooledVector<double> values;
   std::string field_name; // name of the scalar array, for reports
   std::string source;     // file name or generator description, for messages
 
   // Cells in compressed-row form: the nodes of cell c are
   // cell_nodes[cell_offsets[c] .. cell_offsets[c+1]), (d+1)(d+2)/2 of them for degree d,
   // in canonical lattice order (the three corners first).
-  std::vector<int64_t> cell_offsets{0};
-  std::vector<int64_t> cell_nodes;
-  std::vector<uint8_t> cell_degree;
+  PooledVector<int64_t> cell_offsets{0};
+  PooledVector<int64_t> cell_nodes;
+  PooledVector<uint8_t> cell_degree;
 
   std::size_t num_cells() const { return cell_degree.size(); }
   std::size_t num_points() const { return points.size(); }

@@ -17,8 +17,8 @@ ScalarGraph PlMesh::graph() const {
 
 MeshInput to_mesh_input(const PlMesh &pl) {
   MeshInput m;
-  m.points = pl.points;
-  m.values = pl.values;
+  m.points.assign(pl.points.begin(), pl.points.end());
+  m.values.assign(pl.values.begin(), pl.values.end());
   m.cell_nodes.reserve(pl.triangles.size() * 3);
   for (const auto &t : pl.triangles)
     m.add_cell(1, t.data());
@@ -27,8 +27,8 @@ MeshInput to_mesh_input(const PlMesh &pl) {
 
 PlMesh split_lagrange_cells(const MeshInput &in) {
   PlMesh m;
-  m.points = in.points;
-  m.values = in.values;
+  m.points.assign(in.points.begin(), in.points.end());
+  m.values.assign(in.values.begin(), in.values.end());
   m.source_cell.assign(in.points.size(), -1);
   m.source_uv.assign(in.points.size(), {0.0, 0.0});
   for (std::size_t c = 0; c < in.num_cells(); ++c) {

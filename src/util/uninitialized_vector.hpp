@@ -17,10 +17,12 @@
 
 namespace hoct {
 
-template <class T> struct UninitializedAllocator : std::allocator<T> {
-  template <class U> struct rebind { using other = UninitializedAllocator<U>; };
-  UninitializedAllocator() = default;
-  template <class U> UninitializedAllocator(const UninitializedAllocator<U> &) noexcept {}
+// Large buffers from the page pool, small ones from the heap; elements constructed as by
+// std::allocator (value-initialised on resize).
+template <class T> struct PooledAllocator : std::allocator<T> {
+  template <class U> struct rebind { using other = PooledAllocator<U>; };
+  PooledAllocator() = default;
+  template <class U> PooledAllocator(const PooledAllocator<U> &) noexcept {}
   T *allocate(std::size_t n) {
     if (pooled(n))
       return static_cast<T *>(allocate_pages(n * sizeof(T)));
@@ -31,13 +33,6 @@ template <class T> struct UninitializedAllocator : std::allocator<T> {
       free_pages(p, n * sizeof(T));
     else
       std::allocator<T>::deallocate(p, n);
-  }
-  // Default construction is default-initialisation (nothing, for trivial types).
-  template <class U> void construct(U *p) noexcept(std::is_nothrow_default_constructible_v<U>) {
-    ::new (static_cast<void *>(p)) U;
-  }
-  template <class U, class... Args> void construct(U *p, Args &&...args) {
-    ::new (static_cast<void *>(p)) U(std::forward<Args>(args)...);
   }
 
 private:
@@ -51,6 +46,31 @@ private:
 #endif
   }
 };
+template <class T, class U>
+bool operator==(const PooledAllocator<T> &, const PooledAllocator<U> &) noexcept {
+  return true;
+}
+
+// The same, but default construction is default-initialisation (nothing, for trivial types).
+template <class T> struct UninitializedAllocator : PooledAllocator<T> {
+  template <class U> struct rebind { using other = UninitializedAllocator<U>; };
+  UninitializedAllocator() = default;
+  template <class U> UninitializedAllocator(const UninitializedAllocator<U> &) noexcept {}
+  template <class U> void construct(U *p) noexcept(std::is_nothrow_default_constructible_v<U>) {
+    ::new (static_cast<void *>(p)) U;
+  }
+  template <class U, class... Args> void construct(U *p, Args &&...args) {
+    ::new (static_cast<void *>(p)) U(std::forward<Args>(args)...);
+  }
+};
+template <class T, class U>
+bool operator==(const UninitializedAllocator<T> &, const UninitializedAllocator<U> &) noexcept {
+  return true;
+}
+
+// An ordinary vector (elements value-initialised) whose large buffers come from the page pool:
+// for large arrays built by appending or filled in order.
+template <class T> using PooledVector = std::vector<T, PooledAllocator<T>>;
 
 template <class T>
 requires std::is_trivially_default_constructible_v<T>

@@ -241,7 +241,7 @@ TEST(Datasets, SharedEdgesShareTheirNodes) {
 TEST(Datasets, NoDuplicatePoints) {
   for (const auto &name : dataset_names()) {
     const MeshInput m = make(name, small_cells(name), 3);
-    std::vector<Vec3> p = m.points;
+    std::vector<Vec3> p(m.points.begin(), m.points.end());
     std::sort(p.begin(), p.end());
     for (std::size_t i = 1; i < p.size(); ++i)
       ASSERT_GT(norm(sub(p[i], p[i - 1])), 1e-9) << name << ": two points at the same position";

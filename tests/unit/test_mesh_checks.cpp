@@ -20,7 +20,7 @@ namespace {
 
 MeshInput linear_mesh(const std::vector<Vec3> &v, const std::vector<std::array<int64_t, 3>> &t) {
   MeshInput m;
-  m.points = v;
+  m.points.assign(v.begin(), v.end());
   m.values.assign(v.size(), 0.0);
   for (std::size_t i = 0; i < v.size(); ++i)
     m.values[i] = v[i][0] + 2 * v[i][1];

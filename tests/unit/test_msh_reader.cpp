@@ -84,14 +84,14 @@ TEST(MshReader, LinearTrianglesTwoBlocksTwoViews) {
   const MeshInput p = read_msh(path);
   EXPECT_EQ(p.source, path);
   EXPECT_EQ(p.field_name, "p"); // the first view by default
-  EXPECT_EQ(p.values, (std::vector<double>{5, 5, 5, 5}));
+  EXPECT_EQ(p.values, (PooledVector<double>{5, 5, 5, 5}));
   const MeshInput t = read_msh(path, "T");
   EXPECT_EQ(t.field_name, "T");
-  EXPECT_EQ(t.points, (std::vector<Vec3>{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}}));
-  EXPECT_EQ(t.values, (std::vector<double>{1.5, 2.5, 3.5, 4.5}));
-  EXPECT_EQ(t.cell_offsets, (std::vector<int64_t>{0, 3, 6}));
-  EXPECT_EQ(t.cell_nodes, (std::vector<int64_t>{0, 1, 2, 0, 2, 3}));
-  EXPECT_EQ(t.cell_degree, (std::vector<uint8_t>{1, 1}));
+  EXPECT_EQ(t.points, (PooledVector<Vec3>{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}}));
+  EXPECT_EQ(t.values, (PooledVector<double>{1.5, 2.5, 3.5, 4.5}));
+  EXPECT_EQ(t.cell_offsets, (PooledVector<int64_t>{0, 3, 6}));
+  EXPECT_EQ(t.cell_nodes, (PooledVector<int64_t>{0, 1, 2, 0, 2, 3}));
+  EXPECT_EQ(t.cell_degree, (PooledVector<uint8_t>{1, 1}));
   // The same file with Windows line ends.
   std::string crlf;
   for (char c : slurp(path))
@@ -108,23 +108,23 @@ TEST(MshReader, LinearTrianglesTwoBlocksTwoViews) {
 // C A BC AB CA CD DA D B.
 void expect_sparse_p2(const MeshInput &m) {
   const double z = 0.25;
-  EXPECT_EQ(m.points, (std::vector<Vec3>{{2, 2, z},
-                                         {0, 0, z},
-                                         {2, 1, z},
-                                         {1, 0, z},
-                                         {1, 1, z},
-                                         {1, 2, z},
-                                         {0, 1, z},
-                                         {0, 2, z},
-                                         {2, 0, z}}));
+  EXPECT_EQ(m.points, (PooledVector<Vec3>{{2, 2, z},
+                                          {0, 0, z},
+                                          {2, 1, z},
+                                          {1, 0, z},
+                                          {1, 1, z},
+                                          {1, 2, z},
+                                          {0, 1, z},
+                                          {0, 2, z},
+                                          {2, 0, z}}));
   EXPECT_EQ(m.field_name, "f");
   // f = x^2 + 10 y
-  EXPECT_EQ(m.values, (std::vector<double>{24, 0, 14, 1, 11, 21, 10, 20, 4}));
-  EXPECT_EQ(m.cell_degree, (std::vector<uint8_t>{2, 2}));
-  EXPECT_EQ(m.cell_offsets, (std::vector<int64_t>{0, 6, 12}));
+  EXPECT_EQ(m.values, (PooledVector<double>{24, 0, 14, 1, 11, 21, 10, 20, 4}));
+  EXPECT_EQ(m.cell_degree, (PooledVector<uint8_t>{2, 2}));
+  EXPECT_EQ(m.cell_offsets, (PooledVector<int64_t>{0, 6, 12}));
   // Canonical order of degree 2: (0,0) (1,0) (2,0) (0,1) (1,1) (0,2) in lattice (a, b).
   // Element 17: A AB B CA BC C; element 4: A AC C DA CD D.
-  EXPECT_EQ(m.cell_nodes, (std::vector<int64_t>{1, 3, 8, 4, 2, 0, 1, 4, 0, 6, 5, 7}));
+  EXPECT_EQ(m.cell_nodes, (PooledVector<int64_t>{1, 3, 8, 4, 2, 0, 1, 4, 0, 6, 5, 7}));
 }
 
 TEST(MshReader, QuadraticTrianglesSparseTagsParametricNodes) {
@@ -134,7 +134,7 @@ TEST(MshReader, QuadraticTrianglesSparseTagsParametricNodes) {
   EXPECT_EQ(g.field_name, "g");
   EXPECT_EQ(g.cell_nodes, f.cell_nodes);
   // g = x - y
-  EXPECT_EQ(g.values, (std::vector<double>{0, 0, 1, 1, 0, -1, -1, -2, 2}));
+  EXPECT_EQ(g.values, (PooledVector<double>{0, 0, 1, 1, 0, -1, -1, -2, 2}));
 }
 
 TEST(MshReader, Msh22ReadsLikeMsh41) {
@@ -148,7 +148,7 @@ TEST(MshReader, TimeStepsPartitionsRepeatedMeshAndVectorViews) {
   const MeshInput m = read_msh(path);
   EXPECT_EQ(m.field_name, "T");
   EXPECT_EQ(m.num_cells(), 2u);
-  EXPECT_EQ(m.values, (std::vector<double>{11, 12, 13, 14}));
+  EXPECT_EQ(m.values, (PooledVector<double>{11, 12, 13, 14}));
   expect_error(path, ":", "$NodeData 'velocity' has 3 components; a scalar field needs 1",
                "velocity");
   // A later time step replaces the earlier one: a node missing from it has no value (it does not

@@ -1,11 +1,13 @@
 // The page pool (util/page_pool.hpp): blocks handed out never overlap a live block, kept blocks
 // are reused (split when larger, grown when smaller) only while a scope is open, and at most
 // 64 MiB stays kept after the last scope closes.
+#include "mesh/mesh_input.hpp"
 #include "util/page_pool.hpp"
 #include "util/uninitialized_vector.hpp"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <cstring>
 #include <random>
@@ -132,6 +134,39 @@ TEST(PagePool, UninitializedVectorsGrowThroughThePool) {
   v.clear();
   v.shrink_to_fit();
   EXPECT_EQ(copy[2'999'999], 2'999'999 * 3);
+}
+
+TEST(PagePool, PooledVectorsAreValueInitialisedOnReusedPages) {
+  // A kept block holds what its last user wrote; a PooledVector taking it must still zero its
+  // elements (an UninitializedVector would not).
+  const PageReuseScope scope;
+  for (int round = 0; round < 3; ++round) {
+    {
+      UninitializedVector<double> dirty;
+      dirty.resize(1'000'000);
+      std::fill(dirty.begin(), dirty.end(), -7.5);
+    }
+    const PooledVector<double> clean(1'000'000);
+    for (std::size_t i = 0; i < clean.size(); i += 331)
+      ASSERT_EQ(clean[i], 0.0) << i;
+  }
+}
+
+TEST(PagePool, MeshInputArraysComeFromThePool) {
+#if defined(__SANITIZE_ADDRESS__)
+  GTEST_SKIP() << "under AddressSanitizer large buffers come from the heap";
+#else
+  // The arrays of an input the mesh build consumes are kept for what is allocated after them.
+  const PageReuseScope scope;
+  MeshInput in;
+  in.points.resize(200'000);
+  in.values.resize(200'000);
+  in.cell_nodes.resize(300'000);
+  const std::size_t before = kept_page_bytes();
+  const std::size_t bytes = 200'000 * (sizeof(Vec3) + sizeof(double)) + 300'000 * sizeof(int64_t);
+  in = MeshInput{};
+  EXPECT_GE(kept_page_bytes(), before + bytes);
+#endif
 }
 
 } // namespace

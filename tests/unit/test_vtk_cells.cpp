@@ -58,7 +58,7 @@ TEST(VtkCells, BaseOffsetsIds) {
   const int64_t ids[3] = {0, 1, 2};
   std::string problem;
   ASSERT_EQ(add_vtk_cell(m, 5, ids, 3, 3, 10, &problem), VtkCellResult::Added);
-  EXPECT_EQ(m.cell_nodes, (std::vector<int64_t>{10, 11, 12}));
+  EXPECT_EQ(m.cell_nodes, (PooledVector<int64_t>{10, 11, 12}));
 }
 
 TEST(VtkCells, SkipsVerticesAndLinesRefusesTheRest) {

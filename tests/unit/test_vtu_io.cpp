@@ -238,10 +238,10 @@ TEST(VtuReader, PiecesSkippedCellsAndStoredTypes) {
   const MeshInput m = read_vtu(tmp.write("pieces.vtu", file("LittleEndian", first + second)));
   ASSERT_EQ(m.num_cells(), 4u);
   ASSERT_EQ(m.points.size(), 18u);
-  EXPECT_EQ(m.cell_offsets, (std::vector<int64_t>{0, 6, 12, 18, 24}));
-  EXPECT_EQ(m.cell_degree, (std::vector<uint8_t>{2, 2, 2, 2}));
+  EXPECT_EQ(m.cell_offsets, (PooledVector<int64_t>{0, 6, 12, 18, 24}));
+  EXPECT_EQ(m.cell_degree, (PooledVector<uint8_t>{2, 2, 2, 2}));
   const std::vector<int64_t> a = {0, 4, 1, 6, 5, 2}, b = {0, 6, 2, 8, 7, 3};
-  std::vector<int64_t> expected = a;
+  PooledVector<int64_t> expected(a.begin(), a.end());
   expected.insert(expected.end(), b.begin(), b.end());
   for (int64_t x : a)
     expected.push_back(x + 9);
