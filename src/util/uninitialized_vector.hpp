@@ -3,7 +3,7 @@
 // touched (and its pages faulted in) by the threads writing it, not zeroed by one thread first.
 // Its large buffers come from the page pool (util/page_pool.hpp): inside a PageReuseScope they
 // reuse pages that earlier large arrays gave back (not with AddressSanitizer, which checks
-// heap buffers only).
+// heap buffers only). PooledVector: the same buffers, ordinary construction.
 #pragma once
 
 #include "util/page_pool.hpp"
