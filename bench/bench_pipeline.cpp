@@ -21,7 +21,10 @@ PipelineResult run_pipeline(const std::string &vtu, int threads, bool with_vtp,
   Mesh mesh;
   {
     auto t = clock_type::now();
-    MeshInput input = read_mesh(vtu);
+    // As `hoct tree --threads N` reads it (large raw arrays in parts on its threads).
+    ReadLimits limits;
+    limits.threads = threads;
+    MeshInput input = read_mesh(vtu, "", limits);
     r.read = seconds_since(t);
     t = clock_type::now();
     // As `hoct tree --threads N` builds it: consuming the input (its arrays freed in the build).

@@ -16,7 +16,9 @@ LoadedMesh load_mesh(const std::string &path, const std::string &scalar, bool st
   using clock = std::chrono::steady_clock;
   LoadedMesh r;
   const auto t0 = clock::now();
-  r.input = read_mesh(path, scalar, read_limits());
+  ReadLimits limits = read_limits();
+  limits.threads = thread_count(threads);
+  r.input = read_mesh(path, scalar, limits);
   if (merge_tolerance >= 0) {
     const MergeReport m = merge_duplicate_points(r.input, merge_tolerance, thread_count(threads));
     if (m.merged_points > 0)

@@ -1,7 +1,8 @@
-// Resource limits for the readers: a memory budget checked against an estimate computed from the
-// counts in a file's headers before the reader allocates for them. The estimate covers the whole
-// pipeline (the MeshInput, the checked Mesh and the exact contour tree of it), so an input that
-// cannot be processed fails early with "needs ~X GiB, limit Y GiB" instead of being killed later.
+// Resource limits and threads for the readers: a memory budget checked against an estimate computed
+// from the counts in a file's headers before the reader allocates for them. The estimate covers the
+// whole pipeline (the MeshInput, the checked Mesh and the exact contour tree of it), so an input
+// that cannot be processed fails early with "needs ~X GiB, limit Y GiB" instead of being killed
+// later.
 #pragma once
 
 #include <cstdint>
@@ -15,6 +16,9 @@ struct ReadLimits {
   // VTU files larger than this whose payload is raw appended data are not read whole: the XML
   // around the payload is, and each array is read from the file straight into its destination.
   uint64_t stream_appended_above = uint64_t{64} << 20;
+  // Threads that read such arrays from the file, each a part (0 = all hardware threads): copying
+  // from the page cache and mapping the destination's fresh pages scale with them.
+  int threads = 1;
 };
 
 // Estimated peak bytes to read, build and compute the exact tree of a mesh with `points` nodes,

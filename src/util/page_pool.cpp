@@ -131,6 +131,19 @@ void free_pages(void *ptr, std::size_t) noexcept {
   }
 }
 
+void populate_for_write(void *p, std::size_t bytes) noexcept {
+#ifdef MADV_POPULATE_WRITE
+  const std::size_t page = page_size();
+  const auto begin = (reinterpret_cast<std::uintptr_t>(p) + page - 1) / page * page;
+  const auto end = (reinterpret_cast<std::uintptr_t>(p) + bytes) / page * page;
+  if (end > begin)
+    madvise(reinterpret_cast<void *>(begin), end - begin, MADV_POPULATE_WRITE);
+#else
+  (void)p;
+  (void)bytes;
+#endif
+}
+
 std::size_t kept_page_bytes() {
   Pool &p = pool();
   std::lock_guard<std::mutex> lock(p.mutex);

@@ -1,5 +1,6 @@
 // The VTU writer and reader: exact round trips in every encoding and degree, base64 edge cases,
 // and a clear error (file name and what is wrong) for every kind of malformed file.
+#include "datasets/datasets.hpp"
 #include "error.hpp"
 #include "io/base64.hpp"
 #include "io/vtu_reader.hpp"
@@ -90,6 +91,34 @@ TEST(VtuRoundTrip, EveryEncodingAndDegree) {
         EXPECT_EQ(out.source, path);
       }
     }
+  }
+}
+
+// Arrays of several read parts (4 MiB each), streamed from the file in parts on 1, 2 and 3
+// threads (their pages mapped in parts first): the same arrays as written.
+TEST(VtuRoundTrip, LargeArraysReadInPartsOnThreads) {
+  TempDir tmp;
+  DatasetOptions o;
+  o.cells = 80000;
+  o.degree = 4;
+  const MeshInput in = generate_dataset("random", o);
+  // Points (24 bytes each) and connectivity (8 bytes per node) over two parts, values not.
+  ASSERT_GT(in.points.size() * 24, std::size_t{12} << 20);
+  ASSERT_GT(in.cell_nodes.size() * 8, std::size_t{8} << 20);
+  const std::string path = tmp.file("large.vtu");
+  write_vtu(path, in, VtkEncoding::AppendedRaw);
+  for (int threads : {1, 2, 3}) {
+    ReadLimits streamed;
+    streamed.stream_appended_above = 0;
+    streamed.threads = threads;
+    const MeshInput out = read_vtu(path, "", streamed);
+    ASSERT_EQ(out.points.size(), in.points.size());
+    EXPECT_EQ(0, std::memcmp(out.points.data(), in.points.data(), in.points.size() * 24))
+        << threads << " threads";
+    ASSERT_EQ(out.values.size(), in.values.size());
+    EXPECT_EQ(0, std::memcmp(out.values.data(), in.values.data(), in.values.size() * 8));
+    EXPECT_EQ(out.cell_nodes, in.cell_nodes) << threads << " threads";
+    EXPECT_EQ(out.cell_degree, in.cell_degree);
   }
 }
 
