@@ -12,6 +12,7 @@
 #include "tree/exact_contour_tree.hpp"
 #include "tree/merge_tree.hpp"
 #include "tree/tree_result.hpp"
+#include "util/parallel_for.hpp"
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
@@ -39,10 +40,10 @@ template <class T> py::array_t<T> array_1d(const std::vector<T> &v) {
   return a;
 }
 
-PyMesh make_mesh(MeshInput in) {
+PyMesh make_mesh(MeshInput in, int threads = 1) {
   PyMesh m;
   m.input = std::move(in);
-  m.mesh = std::make_shared<Mesh>(build_mesh(m.input));
+  m.mesh = std::make_shared<Mesh>(build_mesh(m.input, {.threads = thread_count(threads)}));
   return m;
 }
 
@@ -277,8 +278,11 @@ PYBIND11_MODULE(_hoct, m) {
   // The computations release the GIL: other Python threads run meanwhile.
   m.def(
       "read",
-      [](const std::string &path, const std::string &scalar, const std::string &max_memory) {
-        return make_mesh(read_mesh(path, scalar, read_limits_for(max_memory)));
+      [](const std::string &path, const std::string &scalar, const std::string &max_memory,
+         int threads) {
+        ReadLimits limits = read_limits_for(max_memory);
+        limits.threads = thread_count(threads);
+        return make_mesh(read_mesh(path, scalar, limits), threads);
       },
       py::call_guard<py::gil_scoped_release>());
   m.def("from_arrays", &from_arrays);

@@ -15,8 +15,11 @@ __all__ = ["read", "from_arrays", "from_meshio", "generate", "contour_tree", "Me
            "HoctError"]
 
 
-def read(path, scalar=None, max_memory=None):
+def read(path, scalar=None, max_memory=None, threads=None):
     """Read a .vtu or .msh file; `scalar` names the point-data array (default: the first).
+
+    `threads`: threads that read large arrays and build the mesh (default: every hardware
+    thread, as `contour_tree`); the mesh is the same for any number.
 
     `max_memory` is the memory budget the readers check against the file's header counts
     before allocating, as for `hoct --max-memory`: bytes (int) or text such as "8G", "512M" or
@@ -32,7 +35,10 @@ def read(path, scalar=None, max_memory=None):
         budget = str(max_memory)
     else:
         budget = str(max_memory)
-    return _hoct.read(str(path), scalar or "", budget)
+    if threads is not None and (isinstance(threads, bool) or not isinstance(threads, int)
+                                or threads < 1):
+        raise HoctError("read: threads must be a positive integer, got %r" % (threads,))
+    return _hoct.read(str(path), scalar or "", budget, int(threads or 0))
 
 
 _TRIANGLE_TYPES = {5: 1, 22: 2}  # VTK_TRIANGLE, VTK_QUADRATIC_TRIANGLE; 69 = any degree

@@ -138,6 +138,24 @@ def test_non_simply_connected_domain_is_refused_unless_forced():
     assert sorted(forced.values.tolist()) == [0.0, 2.0, 3.0, 5.0]  # one min and max per triangle
 
 
+def test_read_on_threads_gives_the_same_mesh_and_tree(tmp):
+    # Large enough that the reader splits its arrays into parts (4 MiB each) and streams them.
+    path = os.path.join(tmp, "random.vtu")
+    subprocess.run([HOCT, "generate", "random", "--cells", "120000", "--degree", "5", "-o", path],
+                   check=True, capture_output=True)
+    assert os.path.getsize(path) > 64 << 20
+    one = hoct.read(path, threads=1)
+    trees = [hoct.contour_tree(m, threads=1) for m in (one, hoct.read(path, threads=2),
+                                                       hoct.read(path))]
+    for t in trees[1:]:
+        assert t.values.tolist() == trees[0].values.tolist()
+        assert t.arcs.tolist() == trees[0].arcs.tolist()
+        assert t.positions.tolist() == trees[0].positions.tolist()
+    for bad in (0, -1, 1.5, True, "2"):
+        with pytest.raises(hoct.HoctError, match="threads must be a positive integer"):
+            hoct.read(path, threads=bad)
+
+
 def test_read_checks_the_memory_budget_before_allocating(tmp):
     # The same guard as `hoct --max-memory`: the header counts against the budget, before reading.
     path = os.path.join(tmp, "gauss.vtu")
