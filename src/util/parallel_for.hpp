@@ -29,9 +29,13 @@ inline int threads_for(int64_t n, int threads, int64_t grain) {
 }
 
 // Calls body(chunk, begin, end, worker) for each of `chunks` contiguous chunks of [0, n)
-// (chunk k is [n k / chunks, n (k + 1) / chunks)), the chunks handed out to `threads` threads in
-// turn; rethrows the first exception. Results written per chunk and combined in chunk order do
-// not depend on the thread count.
+// (chunk k is [n k / chunks, n (k + 1) / chunks)) on `threads` threads; rethrows the first
+// exception. Results written per chunk and combined in chunk order do not depend on the thread
+// count. Thread t takes the chunks of its own share (the t-th of `threads` runs of consecutive
+// chunks) in order, then helps with the other shares' remaining chunks: each thread works on
+// one contiguous part of the data in loop after loop (with chunks taken in turn, the edge and
+// cell phases on 10^4 cells ran 2.5-3.5% slower on two threads, paired runs), and a thread that
+// starts late or meets costlier items is still helped.
 template <class Body>
 void parallel_chunks(int64_t n, int64_t chunks, int threads, const Body &body) {
   chunks = std::max<int64_t>(chunks, 1);
@@ -42,11 +46,23 @@ void parallel_chunks(int64_t n, int64_t chunks, int threads, const Body &body) {
     return;
   }
   std::vector<std::exception_ptr> errors(threads);
-  std::atomic<int64_t> next{0};
+  // Each share's next chunk, on a cache line of its own.
+  struct alignas(64) Share {
+    std::atomic<int64_t> next;
+    int64_t end;
+  };
+  std::vector<Share> shares(static_cast<std::size_t>(threads));
+  for (int t = 0; t < threads; ++t) {
+    shares[t].next.store(chunks * t / threads, std::memory_order_relaxed);
+    shares[t].end = chunks * (t + 1) / threads;
+  }
   auto work = [&](int t) {
     try {
-      for (int64_t c; (c = next.fetch_add(1)) < chunks;)
-        body(c, n * c / chunks, n * (c + 1) / chunks, t);
+      for (int i = 0; i < threads; ++i) {
+        Share &share = shares[static_cast<std::size_t>((t + i) % threads)];
+        for (int64_t c; (c = share.next.fetch_add(1, std::memory_order_relaxed)) < share.end;)
+          body(c, n * c / chunks, n * (c + 1) / chunks, t);
+      }
     } catch (...) {
       errors[t] = std::current_exception();
     }

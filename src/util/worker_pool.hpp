@@ -12,8 +12,8 @@ namespace hoct {
 // workers, and returns when all have returned (rethrowing the first exception). Called from
 // inside a pool worker (a nested loop), from a second thread while the pool runs another loop,
 // or in a child process after fork(), the calls run one after another on the calling thread:
-// the bodies must not depend on running concurrently (parallel_chunks' bodies take chunks from a
-// shared counter, so work(0) alone completes the loop).
+// the bodies must not depend on running concurrently (parallel_chunks' bodies take every chunk
+// that remains in any share, so work(0) alone completes the loop).
 void run_on_workers(int threads, const std::function<void(int)> &work);
 
 } // namespace hoct

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <chrono>
 #include <numeric>
 #include <stdexcept>
 #include <sys/wait.h>
@@ -46,6 +47,43 @@ TEST(WorkerPool, ParallelForCoversTheRangeWithNestedLoops) {
   });
   EXPECT_EQ(std::accumulate(hits.begin(), hits.end(), 0), n);
   EXPECT_EQ(*std::min_element(hits.begin(), hits.end()), 1);
+}
+
+TEST(WorkerPool, ParallelChunksRunsEveryChunkOnceFromEachThreadsShare) {
+  for (int threads : {2, 3, 5}) {
+    for (int64_t chunks : {1, 2, 7, 32, 100}) {
+      const int64_t n = 1000;
+      // With many chunks, thread 0 stalls 50 ms on the first chunk it runs: the others, done with
+      // their own shares, take over the rest of its share. (Which thread runs which chunk is
+      // otherwise up to the scheduler: threads may start late, and on fewer cores than threads, in
+      // any order.)
+      const bool stall = chunks >= 32;
+      std::vector<std::atomic<int>> calls(static_cast<std::size_t>(chunks));
+      std::vector<std::atomic<int>> ran_by(static_cast<std::size_t>(chunks));
+      bool stalled = false;    // thread 0's
+      int64_t first_of_1 = -1; // the first chunk thread 1 ran
+      parallel_chunks(n, chunks, threads, [&](int64_t c, int64_t b, int64_t e, int t) {
+        EXPECT_EQ(b, n * c / chunks);
+        EXPECT_EQ(e, n * (c + 1) / chunks);
+        ran_by[c] = t;
+        ++calls[c];
+        if (t == 1 && first_of_1 < 0)
+          first_of_1 = c;
+        if (stall && t == 0 && !stalled) {
+          stalled = true;
+          std::this_thread::sleep_for(std::chrono::milliseconds(50));
+        }
+      });
+      for (int64_t c = 0; c < chunks; ++c)
+        EXPECT_EQ(calls[c].load(), 1) << threads << " threads, chunk " << c;
+      if (stall && threads == 2) {
+        // Thread 1 started on the first chunk of its own share (thread 0, stalled on its first
+        // chunk, cannot have reached it), and took the last of thread 0's share too.
+        EXPECT_EQ(first_of_1, chunks / 2);
+        EXPECT_EQ(ran_by[chunks / 2 - 1].load(), 1);
+      }
+    }
+  }
 }
 
 TEST(WorkerPool, ConcurrentCallersBothComplete) {
