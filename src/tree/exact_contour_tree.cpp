@@ -44,6 +44,9 @@ struct NodeSource {
   bool fallback; // in or on a degenerate cell's PL fallback
 };
 
+// Interior points of a piece of an edge chain in the geometric graph.
+constexpr int kChainPoints = 3;
+
 // A graph edge with its geometry (interior polyline points).
 struct GeoEdge {
   int64_t a, b;
@@ -261,7 +264,6 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
   // The graph's edges: the cells' lower connections in the join graph only, their upper ones in
   // the split graph only; the edge chains and the fallback cells' sub-edges in both (stored once;
   // the chains listed only with arc geometry).
-  const std::size_t chain_edges = static_cast<std::size_t>(ne + en.offset[ne]);
   UninitializedVector<GraphEdge> join_edges, split_edges, common_edges;
   join_edges.resize(cell_join);
   split_edges.resize(cell_split);
@@ -288,7 +290,10 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
   std::vector<int64_t> fallback_marked; // vertices and edge nodes of fallback cells
   // Values of vertices and edge nodes.
   // Threads for the gathering loops: only where each gets enough items to pay for its start.
-  auto gather_threads = [&](int64_t items) { return threads_for(items, threads, 32768); };
+  // (32,768 items each by default; fewer with the option, as tests use it.)
+  auto gather_threads = [&](int64_t items) {
+    return threads_for(items, threads, 128 * opt.cells_per_thread);
+  };
   parallel_for(nv, gather_threads(nv), [&](int64_t begin, int64_t end, int) {
     for (int64_t v = begin; v < end; ++v) {
       values[v] = field.vertex_value(v);
@@ -440,6 +445,10 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
       std::sort(chain.begin(), chain.end());
   };
   std::vector<std::pair<double, int64_t>> chain;
+  // With geometry, the chain pieces are common_edges[chain_first ..] (after geo_edges in the
+  // geometric graph), their interior points kChainPoints each in chain_points.
+  std::size_t chain_first = 0;
+  UninitializedVector<Vec3> chain_points;
   // Without geometry the sweeps walk the edge chains themselves (EdgeChains: no list of their
   // pieces in memory), except on the few edges with fallback lattice nodes, whose chains are
   // listed here and skipped there.
@@ -453,28 +462,53 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
         common_edges.push_back({chain[i].second, chain[i + 1].second});
     }
   } else {
-    // With geometry: every chain piece with three interior points, edge by edge.
-    common_edges.reserve(common_edges.size() + chain_edges);
-    std::size_t l = 0;
-    for (int64_t e = 0; e < ne; ++e) {
-      chain_of(e, l, chain);
-      // Positions along the edge through its first cell (for the geometry of the chain pieces).
-      const int64_t ec = topo.edge_cells_begin(e)[0];
-      int ek = 0;
-      while (topo.cell_edge(ec, ek) != e)
-        ++ek;
-      const bool erev = topo.edge_reversed(ec, ek);
-      for (std::size_t i = 0; i + 1 < chain.size(); ++i) {
-        std::vector<Vec3> inner;
-        for (int j = 1; j < 4; ++j) {
-          const double t = chain[i].first + (chain[i + 1].first - chain[i].first) * j / 4;
-          const Vec2 uv = point_on_edge(ek, erev ? 1 - t : t);
-          inner.push_back(mesh.geometry.position(ec, uv[0], uv[1]));
-        }
-        geo_edges.push_back({chain[i].second, chain[i + 1].second, std::move(inner)});
-        common_edges.push_back({chain[i].second, chain[i + 1].second});
-      }
+    // With geometry: every chain piece with kChainPoints interior points, edge by edge, in
+    // fixed blocks of edges on the threads, each written where its pieces go (a block's piece
+    // count is known beforehand: an edge's edge nodes and lattice nodes plus one).
+    const int64_t blocks = std::max<int64_t>(1, std::min<int64_t>(ne, 256));
+    auto lattice_from = [&](int64_t e) { // the first lattice node on edge e or after
+      return static_cast<std::size_t>(
+          std::lower_bound(lattice_on_edge.begin(), lattice_on_edge.end(), e,
+                           [](const auto &x, int64_t edge) { return std::get<0>(x) < edge; }) -
+          lattice_on_edge.begin());
+    };
+    std::vector<std::size_t> block_first(static_cast<std::size_t>(blocks) + 1, 0);
+    for (int64_t b = 0; b < blocks; ++b) {
+      const int64_t begin = ne * b / blocks, end = ne * (b + 1) / blocks;
+      block_first[b + 1] =
+          block_first[b] +
+          static_cast<std::size_t>(end - begin + en.offset[end] - en.offset[begin]) +
+          (lattice_from(end) - lattice_from(begin));
     }
+    const std::size_t pieces = block_first[blocks];
+    chain_first = common_edges.size();
+    common_edges.resize(chain_first + pieces);
+    chain_points.resize(pieces * kChainPoints);
+    parallel_chunks(
+        ne, blocks, gather_threads(ne), [&](int64_t b, int64_t begin, int64_t end, int) {
+          std::vector<std::pair<double, int64_t>> block_chain;
+          std::size_t at = block_first[b], l = lattice_from(begin);
+          for (int64_t e = begin; e < end; ++e) {
+            chain_of(e, l, block_chain);
+            // Positions along the edge through its first cell.
+            const int64_t ec = topo.edge_cells_begin(e)[0];
+            int ek = 0;
+            while (topo.cell_edge(ec, ek) != e)
+              ++ek;
+            const bool erev = topo.edge_reversed(ec, ek);
+            for (std::size_t i = 0; i + 1 < block_chain.size(); ++i, ++at) {
+              for (int j = 1; j <= kChainPoints; ++j) {
+                const double t =
+                    block_chain[i].first +
+                    (block_chain[i + 1].first - block_chain[i].first) * j / (kChainPoints + 1);
+                const Vec2 uv = point_on_edge(ek, erev ? 1 - t : t);
+                chain_points[at * kChainPoints + (j - 1)] =
+                    mesh.geometry.position(ec, uv[0], uv[1]);
+              }
+              common_edges[chain_first + at] = {block_chain[i].second, block_chain[i + 1].second};
+            }
+          }
+        });
   }
   std::sort(fallback_marked.begin(), fallback_marked.end());
   auto source_of = [&](int64_t id) -> NodeSource {
@@ -540,15 +574,26 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
   r.arcs = ct.arcs;
   r.pairs = tree_pairs(ct);
   if (opt.arc_geometry) {
+    const int64_t graph_nodes = static_cast<int64_t>(values.size());
     std::vector<Vec3> positions(values.size());
-    for (std::size_t v = 0; v < values.size(); ++v) {
-      const NodeSource where = source_of(static_cast<int64_t>(v));
-      positions[v] = mesh.geometry.position(where.cell, where.uv[0], where.uv[1]);
-    }
+    parallel_for(graph_nodes, gather_threads(graph_nodes), [&](int64_t begin, int64_t end, int) {
+      for (int64_t v = begin; v < end; ++v) {
+        const NodeSource where = source_of(v);
+        positions[v] = mesh.geometry.position(where.cell, where.uv[0], where.uv[1]);
+      }
+    });
     auto graph = std::make_shared<GeometricGraph>(
         std::move(positions), std::vector<double>(values.begin(), values.end()));
+    std::size_t points = chain_points.size();
     for (const auto &e : geo_edges)
-      graph->add_edge(e.a, e.b, e.inner);
+      points += e.inner.size();
+    const std::size_t chain_pieces = chain_points.size() / kChainPoints;
+    graph->reserve(geo_edges.size() + chain_pieces, points);
+    for (const auto &e : geo_edges)
+      graph->add_edge(e.a, e.b, e.inner.data(), e.inner.size());
+    for (std::size_t i = 0; i < chain_pieces; ++i)
+      graph->add_edge(common_edges[chain_first + i].a, common_edges[chain_first + i].b,
+                      &chain_points[i * kChainPoints], kChainPoints);
     graph->finish();
     r.graph = std::move(graph);
   }

@@ -6,11 +6,17 @@
 
 namespace hoct {
 
-void GeometricGraph::add_edge(int64_t a, int64_t b, const std::vector<Vec3> &interior) {
+void GeometricGraph::reserve(std::size_t edges, std::size_t points) {
+  ends_.reserve(edges);
+  point_offset_.reserve(edges + 1);
+  points_.reserve(points);
+}
+
+void GeometricGraph::add_edge(int64_t a, int64_t b, const Vec3 *interior, std::size_t count) {
   if (a == b)
     return;
   ends_.push_back({a, b});
-  points_.insert(points_.end(), interior.begin(), interior.end());
+  points_.insert(points_.end(), interior, interior + count);
   point_offset_.push_back(static_cast<int64_t>(points_.size()));
 }
 

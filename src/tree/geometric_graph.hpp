@@ -19,8 +19,14 @@ public:
   GeometricGraph(std::vector<Vec3> positions, std::vector<double> values)
       : position_(std::move(positions)), value_(std::move(values)) {}
 
+  // Room for `edges` edges with `points` interior points in all (add_edge then does not
+  // reallocate).
+  void reserve(std::size_t edges, std::size_t points);
   // An edge from a to b; `interior` are the polyline's points strictly between them, from a to b.
-  void add_edge(int64_t a, int64_t b, const std::vector<Vec3> &interior = {});
+  void add_edge(int64_t a, int64_t b, const std::vector<Vec3> &interior = {}) {
+    add_edge(a, b, interior.data(), interior.size());
+  }
+  void add_edge(int64_t a, int64_t b, const Vec3 *interior, std::size_t count);
   // Builds the adjacency; call once after the last add_edge.
   void finish();
 

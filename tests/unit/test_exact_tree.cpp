@@ -355,6 +355,23 @@ TEST(ExactTree, IdenticalForAnyThreadCount) {
         }
       }
     }
+    // With the arcs' geometry (the edge chains' pieces placed on the threads, the fallback
+    // cells' lattice nodes among them): the same arcs drawn through the same points.
+    std::vector<std::vector<std::vector<Vec3>>> paths;
+    for (ExactTreeOptions o : {one, two, many}) {
+      o.arc_geometry = true;
+      TreeResult t = exact_contour_tree(mesh, o);
+      EXPECT_EQ(t.arcs, a.arcs) << name;
+      compute_arc_paths(t);
+      paths.push_back(t.arc_paths);
+    }
+    ASSERT_EQ(paths[0].size(), a.arcs.size()) << name;
+    for (std::size_t i = 0; i < paths[0].size(); ++i) {
+      ASSERT_EQ(paths[1][i].size(), paths[0][i].size()) << name << " arc " << i;
+      ASSERT_EQ(paths[2][i].size(), paths[0][i].size()) << name << " arc " << i;
+      EXPECT_EQ(std::memcmp(paths[1][i].data(), paths[0][i].data(), paths[0][i].size() * 24), 0);
+      EXPECT_EQ(std::memcmp(paths[2][i].data(), paths[0][i].data(), paths[0][i].size() * 24), 0);
+    }
   }
 }
 
