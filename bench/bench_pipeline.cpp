@@ -50,7 +50,7 @@ PipelineResult run_pipeline(const std::string &vtu, int threads, bool with_vtp,
   decompose_branches(tree);
   write_tree_json(scratch.file("tree.json"), tree);
   if (with_vtp) {
-    compute_arc_paths(tree);
+    compute_arc_paths(tree, threads);
     write_tree_vtp(scratch.file("tree.vtp"), tree);
   }
   r.write = seconds_since(t);

@@ -265,7 +265,7 @@ PYBIND11_MODULE(_hoct, m) {
            })
       .def("arc_paths",
            [](PyTree &t) {
-             compute_arc_paths(t.tree);
+             compute_arc_paths(t.tree, 0); // every hardware thread: the same paths
              std::vector<std::vector<std::array<double, 3>>> out;
              for (const auto &p : t.tree.arc_paths)
                out.emplace_back(p.begin(), p.end());

@@ -112,7 +112,7 @@ void run_tree(const TreeOptions &o) {
   if (!o.json.empty())
     write_tree_json(o.json, tree);
   if (!o.vtp.empty()) {
-    compute_arc_paths(tree);
+    compute_arc_paths(tree, o.threads);
     write_tree_vtp(o.vtp, tree);
   }
   if (!o.svg.empty()) {

@@ -33,13 +33,27 @@ public:
   int64_t size() const { return static_cast<int64_t>(position_.size()); }
   const Vec3 &position(int64_t v) const { return position_[v]; }
 
+  // Scratch memory of path(): one per thread that searches.
+  struct Search {
+    std::vector<uint32_t> stamp;
+    std::vector<int64_t> from, queue;
+    uint32_t generation = 0;
+  };
+
   // The polyline from a to b through a path of nodes with values within [min, max] of the two
-  // ends' values (breadth-first, at most `max_visits` nodes); failing that, through any path;
-  // just {a, b} if there is none.
-  std::vector<Vec3> path(int64_t a, int64_t b, int64_t max_visits = 2000000) const;
+  // ends' values (breadth-first, at most `max_visits` nodes); failing that (the graph is sparser
+  // than the surface), through nodes below the larger of the two values, where the nodes of an
+  // arc of the graph's contour tree are always connected; failing that too, through any path;
+  // just {a, b} if there is none. The first form uses the graph's own scratch (one search at a
+  // time); the second may run on several threads at once, each with its scratch.
+  std::vector<Vec3> path(int64_t a, int64_t b, int64_t max_visits = 2000000) const {
+    return path(a, b, search_, max_visits);
+  }
+  std::vector<Vec3> path(int64_t a, int64_t b, Search &scratch, int64_t max_visits = 2000000) const;
 
 private:
-  std::vector<Vec3> search(int64_t a, int64_t b, double lo, double hi, int64_t max_visits) const;
+  std::vector<Vec3> search(int64_t a, int64_t b, double lo, double hi, int64_t max_visits,
+                           Search &s) const;
 
   std::vector<Vec3> position_;
   std::vector<double> value_;
@@ -47,10 +61,7 @@ private:
   std::vector<int64_t> point_offset_{0};
   std::vector<Vec3> points_;
   std::vector<int64_t> offset_, adj_, adj_edge_;
-  // Scratch of path() (one search at a time).
-  mutable std::vector<uint32_t> stamp_;
-  mutable std::vector<int64_t> from_;
-  mutable uint32_t generation_ = 0;
+  mutable Search search_; // scratch of path() without one
 };
 
 } // namespace hoct

@@ -1,6 +1,7 @@
 #include "tree/tree_result.hpp"
 
 #include "tree/flat_regions.hpp"
+#include "util/parallel_for.hpp"
 
 #include <cmath>
 
@@ -105,17 +106,26 @@ TreeResult simplify_tree(const TreeResult &t, double threshold) {
   return r;
 }
 
-void compute_arc_paths(TreeResult &t) {
+void compute_arc_paths(TreeResult &t, int threads) {
   t.arc_paths.clear();
   if (!t.graph)
     return;
-  for (const auto &a : t.arcs) {
-    const int64_t x = t.nodes[a[0]].graph_node, y = t.nodes[a[1]].graph_node;
-    if (x < 0 || y < 0)
-      t.arc_paths.push_back({t.nodes[a[0]].position, t.nodes[a[1]].position});
-    else
-      t.arc_paths.push_back(t.graph->path(x, y));
-  }
+  // Each arc's path on its own (the same for any thread count), a search scratch per thread.
+  const int64_t n = static_cast<int64_t>(t.arcs.size());
+  t.arc_paths.resize(t.arcs.size());
+  const int used = threads_for(n, thread_count(threads), 16);
+  std::vector<GeometricGraph::Search> scratch(static_cast<std::size_t>(used));
+  parallel_chunks(n, std::min<int64_t>(n, int64_t{used} * 16), used,
+                  [&](int64_t, int64_t begin, int64_t end, int worker) {
+                    for (int64_t i = begin; i < end; ++i) {
+                      const auto &a = t.arcs[i];
+                      const int64_t x = t.nodes[a[0]].graph_node, y = t.nodes[a[1]].graph_node;
+                      t.arc_paths[i] =
+                          x < 0 || y < 0
+                              ? std::vector<Vec3>{t.nodes[a[0]].position, t.nodes[a[1]].position}
+                              : t.graph->path(x, y, scratch[static_cast<std::size_t>(worker)]);
+                    }
+                  });
 }
 
 NodeLocation classify_location(double u, double v) {

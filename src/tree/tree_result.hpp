@@ -73,8 +73,9 @@ TreeResult simplify_tree(const TreeResult &tree, double threshold);
 // branches, and records "flat_nodes_merged" in the statistics.
 TreeResult contract_flat(const TreeResult &tree);
 
-// Draws every arc on the surface through the tree's graph (needs tree.graph).
-void compute_arc_paths(TreeResult &tree);
+// Draws every arc on the surface through the tree's graph (needs tree.graph), the arcs on
+// `threads` threads (0 = all hardware threads); the same paths for any number.
+void compute_arc_paths(TreeResult &tree, int threads = 1);
 
 // Fills tree.branches with the branch decomposition of the (reduced) tree.
 void decompose_branches(TreeResult &tree);

@@ -362,7 +362,7 @@ TEST(ExactTree, IdenticalForAnyThreadCount) {
       o.arc_geometry = true;
       TreeResult t = exact_contour_tree(mesh, o);
       EXPECT_EQ(t.arcs, a.arcs) << name;
-      compute_arc_paths(t);
+      compute_arc_paths(t, o.threads); // the arcs' searches on the threads too
       paths.push_back(t.arc_paths);
     }
     ASSERT_EQ(paths[0].size(), a.arcs.size()) << name;
