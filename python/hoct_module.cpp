@@ -40,7 +40,9 @@ template <class T> py::array_t<T> array_1d(const std::vector<T> &v) {
   return a;
 }
 
-PyMesh make_mesh(MeshInput in, int threads = 1) {
+// The mesh built on `threads` threads (0 = every hardware thread, as the command line's default;
+// the same mesh for any number).
+PyMesh make_mesh(MeshInput in, int threads = 0) {
   PyMesh m;
   m.input = std::move(in);
   m.mesh = std::make_shared<Mesh>(build_mesh(m.input, {.threads = thread_count(threads)}));

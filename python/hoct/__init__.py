@@ -48,7 +48,8 @@ def from_arrays(points, cells, values, degree=None, cell_types=None):
     """A mesh from numpy arrays: points (n, 2|3), cells (cells, nodes) of complete Lagrange
     triangles in VTK node order (3, 6, 10, 15, ... nodes per cell), values (n,). `degree`, if
     given, must match the node count; `cell_types` (VTK codes 5, 22 or 69 per cell), if given,
-    are checked against it."""
+    are checked against it. The mesh is built on every hardware thread (the same mesh for any
+    number)."""
     import numpy as np
 
     cells = np.asarray(cells)
@@ -69,7 +70,8 @@ def from_arrays(points, cells, values, degree=None, cell_types=None):
 
 def generate(name, degree=0, cells=0, seed=1, frequency=1.0):
     """A synthetic dataset (hoct.dataset_names()): the same as `hoct generate`
-    (frequency: `random` only, its wave numbers multiplied)."""
+    (frequency: `random` only, its wave numbers multiplied); its mesh built on every hardware
+    thread."""
     return _hoct.generate(name, int(degree), int(cells), int(seed), float(frequency))
 
 
