@@ -161,8 +161,8 @@ void register_tree(CLI::App &app) {
                 "(\"forced\" in the JSON, warnings on stderr)");
   add_merge_option(sub, o->merge);
   sub->add_option("--threads", o->threads,
-                  "Threads for the cell phase (default: all cores; the result does not depend on "
-                  "it)")
+                  "Threads for reading, building the mesh, the cell phase, the sweeps and the "
+                  "arcs' paths (default: all cores; the result does not depend on it)")
       ->check(CLI::Range(0, 1024));
   sub->add_flag("--no-timings", o->no_timings,
                 "Leave the timings (time_* statistics) out of the JSON: the same input then gives "
