@@ -193,7 +193,9 @@ template <class V> void VtuFile::resize_mapped(V &v, std::size_t n) const {
     v.resize(n);
     return;
   }
-  v.reserve(n);
+  // Geometric growth over a file's pieces (one exact allocation for one piece).
+  if (n > v.capacity())
+    v.reserve(std::max(n, 2 * v.capacity()));
   char *begin = reinterpret_cast<char *>(v.data() + old);
   const std::size_t bytes = (n - old) * sizeof(typename V::value_type);
   if (bytes >= 2 * kReadPart) {
