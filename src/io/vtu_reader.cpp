@@ -209,14 +209,11 @@ template <class V> void VtuFile::resize_mapped(V &v, std::size_t n) const {
   v.resize(n);
 }
 
-// n bytes of the file from offset `at` into dst. Large reads go in parts of kReadPart bytes on
-// the reader's threads, each part's destination pages mapped in one call first (4 MiB reads of
-// a cached file into fresh memory here: a third of the time in faults taken one page at a
-// time while copying).
+// n bytes of the file from offset `at` into dst (its pages already mapped: resize_mapped, or a
+// zeroed buffer). Large reads go in parts of kReadPart bytes on the reader's threads.
 void VtuFile::read_at(uint64_t at, std::size_t n, void *dst) const {
   auto read_part = [&](std::size_t begin, std::size_t end) {
     char *d = static_cast<char *>(dst);
-    populate_for_write(d + begin, end - begin);
     std::size_t got = begin;
     while (got < end) {
       const ssize_t r = ::pread(fd_, d + got, end - got, static_cast<off_t>(at + got));

@@ -44,11 +44,7 @@ public:
   // ends' values (breadth-first, at most `max_visits` nodes); failing that (the graph is sparser
   // than the surface), through nodes below the larger of the two values, where the nodes of an
   // arc of the graph's contour tree are always connected; failing that too, through any path;
-  // just {a, b} if there is none. The first form uses the graph's own scratch (one search at a
-  // time); the second may run on several threads at once, each with its scratch.
-  std::vector<Vec3> path(int64_t a, int64_t b, int64_t max_visits = 2000000) const {
-    return path(a, b, search_, max_visits);
-  }
+  // just {a, b} if there is none. Several threads may search at once, each with its scratch.
   std::vector<Vec3> path(int64_t a, int64_t b, Search &scratch, int64_t max_visits = 2000000) const;
 
 private:
@@ -61,7 +57,6 @@ private:
   std::vector<int64_t> point_offset_{0};
   std::vector<Vec3> points_;
   std::vector<int64_t> offset_, adj_, adj_edge_;
-  mutable Search search_; // scratch of path() without one
 };
 
 } // namespace hoct

@@ -1,6 +1,6 @@
 // The geometric graph's arc paths: within the arc's values where the graph allows it, else below
-// the upper end's value (where the join tree connects an arc's ends), else any path; the same
-// path from the graph's own scratch and from a caller's.
+// the upper end's value (where the join tree connects an arc's ends), else any path; one scratch
+// serves searches on different graphs.
 #include "tree/geometric_graph.hpp"
 
 #include <gtest/gtest.h>
@@ -27,22 +27,23 @@ GeometricGraph diamond(bool with_c) {
 }
 
 TEST(GeometricGraph, PathsStayWithinTheArcsValuesThenBelowItsTop) {
+  GeometricGraph::Search scratch;
   // Within [0, 1]: through c.
   const GeometricGraph within = diamond(true);
   const std::vector<Vec3> expect_c = {{0, 0, 0}, {0.5, 1, 0}, {1, 0, 0}};
-  EXPECT_EQ(within.path(0, 1), expect_c);
+  EXPECT_EQ(within.path(0, 1, scratch), expect_c);
   // No path within [0, 1]: below b's value, through d and its edges' points (not through e,
   // which a search for any path finds first).
   const GeometricGraph below = diamond(false);
   const std::vector<Vec3> expect_d = {
       {0, 0, 0}, {0.2, -1, 0}, {0.5, -1, 0}, {0.8, -1, 0}, {1, 0, 0}};
-  EXPECT_EQ(below.path(0, 1), expect_d);
-  // From b to a: the same nodes, reversed.
-  EXPECT_EQ(below.path(1, 0), std::vector<Vec3>(expect_d.rbegin(), expect_d.rend()));
-  // A caller's scratch (one per thread) gives the same paths.
-  GeometricGraph::Search scratch;
   EXPECT_EQ(below.path(0, 1, scratch), expect_d);
-  EXPECT_EQ(within.path(0, 1, scratch), expect_c); // a scratch sized for another graph
+  // From b to a: the same nodes, reversed.
+  EXPECT_EQ(below.path(1, 0, scratch), std::vector<Vec3>(expect_d.rbegin(), expect_d.rend()));
+  // A fresh scratch gives the same path; the first, used on another graph since, still serves.
+  GeometricGraph::Search fresh;
+  EXPECT_EQ(below.path(0, 1, fresh), expect_d);
+  EXPECT_EQ(within.path(0, 1, scratch), expect_c);
 }
 
 TEST(GeometricGraph, AnyPathWhenNoneBelowTheTop) {
@@ -52,11 +53,12 @@ TEST(GeometricGraph, AnyPathWhenNoneBelowTheTop) {
   g.add_edge(2, 1);
   g.finish();
   const std::vector<Vec3> expect = {{0, 0, 0}, {0.5, 2, 0}, {1, 0, 0}};
-  EXPECT_EQ(g.path(0, 1), expect);
+  GeometricGraph::Search scratch;
+  EXPECT_EQ(g.path(0, 1, scratch), expect);
   // Not connected at all: the chord.
   GeometricGraph apart({{0, 0, 0}, {1, 0, 0}}, {0.0, 1.0});
   apart.finish();
-  EXPECT_EQ(apart.path(0, 1), (std::vector<Vec3>{{0, 0, 0}, {1, 0, 0}}));
+  EXPECT_EQ(apart.path(0, 1, scratch), (std::vector<Vec3>{{0, 0, 0}, {1, 0, 0}}));
 }
 
 } // namespace
