@@ -97,10 +97,11 @@ void datasets_section(const Settings &s) {
   std::printf("## Thesis datasets: `hoct tree FILE.vtu --json J --vtp V`, phase by phase "
               "(1 thread, median of %d runs, seconds)\n\n",
               runs);
-  std::printf("| dataset | cells | degree | nodes | read | mesh + Bernstein | edge nodes | cells "
-              "| graph assembly | sweeps | merge | write | total | exact tree | thesis | speed-up "
-              "(tree) | speed-up (total) |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|"
-              "---|---|---|---|\n");
+  std::printf("| dataset | cells | degree | nodes | read | mesh, checks | Bernstein conversion "
+              "| critical points: edges | critical points: interior | connections | graph assembly "
+              "| sweeps | merge | write | total | exact tree | thesis | speed-up (tree) | speed-up "
+              "(total) |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
+              "---|---|\n");
   struct Row {
     std::string name;
     double e1 = 0, p1 = 0, e2 = 0, p2 = 0, refine = 0, speedup = 0;
@@ -126,11 +127,12 @@ void datasets_section(const Settings &s) {
       else
         row.e2 = e, row.p2 = p;
     }
-    std::printf("| %s | %lld | %d | %zu | %.4f | %.4f | %.4f | %.4f | %.4f | %.4f | %.4f | %.4f | "
-                "%.4f | %.5f | %.1f | %.0fx | %.0fx |\n",
+    std::printf("| %s | %lld | %d | %zu | %.4f | %.4f | %.4f | %.4f | %.4f | %.4f | %.4f | %.4f "
+                "| %.4f | %.4f | %.4f | %.5f | %.1f | %.0fx | %.0fx |\n",
                 name.c_str(), static_cast<long long>(m1.cells), mesh.field.max_degree(), m1.nodes,
-                m1.read, m1.mesh, m1.edges, m1.cell_work, m1.assembly, m1.sweeps, m1.merge,
-                m1.write, m1.total, m1.tree, t_thesis, t_thesis / m1.tree, t_thesis / m1.total);
+                m1.read, m1.mesh_checks(), m1.bernstein, m1.edges, m1.interior, m1.connections,
+                m1.assembly, m1.sweeps, m1.merge, m1.write, m1.total, m1.tree, t_thesis,
+                t_thesis / m1.tree, t_thesis / m1.total);
     std::fflush(stdout);
     rows.push_back(row);
   }
@@ -183,15 +185,17 @@ void scaling_section(const Settings &s, bool constant_density) {
     std::printf("## Scaling on `random` fields (one field, finer meshes)");
   std::printf(": `hoct tree FILE.vtu --json J` phase by phase (seconds; medians of %d runs up to "
               "1e5 cells, %d up to 1e6, %d above; 1- and 2-thread runs interleaved, each building "
-              "the mesh and the tree on its threads; the cell phase is edge nodes + cells + graph "
-              "assembly, its speed-up the median of the per-run ratios)\n\n",
+              "the mesh and the tree on its threads; the cell phase is the critical points, the "
+              "connections and the graph assembly, its speed-up the median of the per-run ratios; "
+              "mesh, 2 threads: the whole build, checks and conversion)\n\n",
               scaling_runs(s, 1e5), scaling_runs(s, 1e6), scaling_runs(s, 4e6));
   std::printf(
-      "| degree | cells | graph nodes | tree nodes | read | mesh + Bernstein | edge nodes "
-      "| cells | graph assembly | sweeps | merge | write | total | us/cell (tree) | cells/s "
-      "(total) | tree, 2 threads | cell phase 1 -> 2 threads | mesh + Bernstein, 2 threads | "
-      "total, 2 threads "
-      "|\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+      "| degree | cells | graph nodes | tree nodes | read | mesh, checks | Bernstein conversion "
+      "| critical points: edges | critical points: interior | connections | graph assembly | "
+      "sweeps | merge | write | total | us/cell (tree) | cells/s (total) | tree, 2 threads | "
+      "cell phase 1 -> 2 threads | mesh, 2 threads | total, 2 threads "
+      "|\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
+      "\n");
   for (int degree : s.degrees)
     for (double size : s.sizes) {
       ScratchDir scratch;
@@ -201,12 +205,12 @@ void scaling_section(const Settings &s, bool constant_density) {
       const PipelineResult &m1 = tr.median.front(), &m2 = tr.median.back();
       const double cells = static_cast<double>(m1.cells);
       std::printf(
-          "| %d | %lld | %lld | %zu | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f | "
-          "%.3f | %.2f | %.0f | %.3f | %.2fx | %.3f | %.3f |\n",
+          "| %d | %lld | %lld | %zu | %.3f | %.3f | %.3f | %.4f | %.4f | %.4f | %.4f | %.3f | "
+          "%.4f | %.3f | %.3f | %.2f | %.0f | %.3f | %.2fx | %.3f | %.3f |\n",
           degree, static_cast<long long>(m1.cells), static_cast<long long>(m1.graph_nodes),
-          m1.nodes, m1.read, m1.mesh, m1.edges, m1.cell_work, m1.assembly, m1.sweeps, m1.merge,
-          m1.write, m1.total, 1e6 * m1.tree / cells, cells / m1.total, m2.tree, tr.cell_speedup,
-          m2.mesh, m2.total);
+          m1.nodes, m1.read, m1.mesh_checks(), m1.bernstein, m1.edges, m1.interior, m1.connections,
+          m1.assembly, m1.sweeps, m1.merge, m1.write, m1.total, 1e6 * m1.tree / cells,
+          cells / m1.total, m2.tree, tr.cell_speedup, m2.mesh, m2.total);
       std::fflush(stdout);
     }
   std::printf("\n");

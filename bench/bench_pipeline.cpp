@@ -30,6 +30,7 @@ PipelineResult run_pipeline(const std::string &vtu, int threads, bool with_vtp,
     // As `hoct tree --threads N` builds it: consuming the input (its arrays freed in the build).
     mesh = build_mesh(std::move(input), {.threads = threads});
     r.mesh = seconds_since(t);
+    r.bernstein = mesh.build_times.field;
   }
   ExactTreeOptions eo;
   eo.threads = threads;
@@ -39,6 +40,8 @@ PipelineResult run_pipeline(const std::string &vtu, int threads, bool with_vtp,
   r.tree = seconds_since(t);
   r.edges = stat(tree, "time_edge_nodes_s");
   r.cell_work = stat(tree, "time_cells_s");
+  r.interior = stat(tree, "time_interior_critical_points_s");
+  r.connections = stat(tree, "time_connections_s");
   r.assembly = stat(tree, "time_graph_assembly_s");
   r.sweeps = stat(tree, "time_sweeps_s");
   r.merge = stat(tree, "time_merge_s") + stat(tree, "time_output_s");
@@ -67,8 +70,9 @@ PipelineResult median_of(const std::vector<PipelineResult> &runs) {
       v.push_back(r.*field);
     m.*field = median(std::move(v));
   };
-  for (auto f : {&PipelineResult::read, &PipelineResult::mesh, &PipelineResult::edges,
-                 &PipelineResult::cell_work, &PipelineResult::assembly, &PipelineResult::sweeps,
+  for (auto f : {&PipelineResult::read, &PipelineResult::mesh, &PipelineResult::bernstein,
+                 &PipelineResult::edges, &PipelineResult::cell_work, &PipelineResult::interior,
+                 &PipelineResult::connections, &PipelineResult::assembly, &PipelineResult::sweeps,
                  &PipelineResult::merge, &PipelineResult::tree, &PipelineResult::write,
                  &PipelineResult::total})
     med(f);

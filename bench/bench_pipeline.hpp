@@ -12,10 +12,13 @@
 namespace hoct::bench {
 
 struct PipelineResult {
-  double read = 0, mesh = 0; // input
-  // exact_contour_tree's phases: edge nodes, the cells (interior critical points and certified
-  // connections, one pass), graph assembly (gathering, fallback cells, edge chains), sweeps, merge.
-  double edges = 0, cell_work = 0, assembly = 0, sweeps = 0, merge = 0;
+  // input: read, the whole mesh build, and the Lagrange -> Bernstein conversion within it
+  double read = 0, mesh = 0, bernstein = 0;
+  // exact_contour_tree's phases: edge nodes (the edges' critical points), the cells (their
+  // interior critical points, then their certified connections; split by the threads' time in
+  // each), graph assembly (gathering, fallback cells, edge chains), sweeps, merge.
+  double edges = 0, cell_work = 0, interior = 0, connections = 0, assembly = 0, sweeps = 0,
+         merge = 0;
   double tree = 0;  // exact_contour_tree as a whole
   double write = 0; // contraction, branches, files
   double total = 0; // read .. write
@@ -24,6 +27,7 @@ struct PipelineResult {
   double fallback_cells = 0;
 
   double cell_phase() const { return edges + cell_work + assembly; }
+  double mesh_checks() const { return mesh - bernstein; } // topology, checks, geometry
 };
 
 PipelineResult run_pipeline(const std::string &vtu, int threads, bool with_vtp,

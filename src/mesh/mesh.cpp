@@ -5,9 +5,13 @@
 #include "poly/sample_fit.hpp"
 #include "util/page_pool.hpp"
 
+#include <chrono>
+
 namespace hoct {
 
 namespace {
+
+using clock_type = std::chrono::steady_clock;
 
 void throw_if_invalid(const Mesh &m, const MeshInput &input, const MeshBuildOptions &options) {
   if (options.throw_on_error && m.problems.has_errors())
@@ -25,15 +29,28 @@ Mesh build(const MeshInput &input, MeshInput *consumed, const MeshBuildOptions &
   m.source = input.source;
   m.field_name = input.field_name;
   m.num_points = static_cast<int64_t>(input.points.size());
+  MeshBuildTimes &times = m.build_times;
+  auto step_start = clock_type::now();
+  auto step_done = [&step_start](double &seconds) {
+    const auto now = clock_type::now();
+    seconds = std::chrono::duration<double>(now - step_start).count();
+    step_start = now;
+  };
   const bool structural_ok = check_input(input, m.problems, options.threads);
+  step_done(times.input_checks);
   if (structural_ok) {
     m.topology = Topology::build(input, m.problems, options.threads);
+    step_done(times.topology);
     check_duplicate_vertices(input, m.topology, m.problems, options.threads);
+    step_done(times.duplicate_vertices);
     m.geometry = Geometry::build(input, options.threads);
     if (consumed)
       PooledVector<Vec3>().swap(consumed->points);
+    step_done(times.geometry);
     m.field = Field::build(input, m.topology, m.problems, options.threads);
+    step_done(times.field);
     check_geometry(m.geometry, m.topology, m.problems, options.threads);
+    step_done(times.geometry_checks);
     m.complete = true;
   }
   if (consumed) {

@@ -16,6 +16,7 @@
 #include <cmath>
 #include <map>
 #include <optional>
+#include <span>
 #include <tuple>
 
 namespace hoct {
@@ -68,11 +69,24 @@ struct alignas(64) CellChunk {
   std::vector<int64_t> fallback_cells; // the chunk's cells that fall back, ascending
   int64_t unresolved = 0;              // uncertified interior zeros
   PathCounters counters;
+  // Thread time in the two passes over each block of cells (critical points, then connections).
+  double critical_seconds = 0, connection_seconds = 0;
 };
+
+// Cells per block of the cell loop: a block's critical points are all found before its
+// connections, so that each pass is timed once per block, not per cell (a clock read costs
+// about as much as a cell without critical points).
+constexpr int64_t kCellBlock = 512;
 
 // Per-thread buffers of the cell phase, reused from cell to cell.
 struct CellScratch {
-  std::vector<InteriorCritical> critical; // the cell's certified interior critical points
+  // The block's certified interior critical points, cell by cell (cell begin + i's from
+  // critical_first[i] to critical_first[i + 1]), and why each cell falls back (0: it does not).
+  std::vector<InteriorCritical> critical;
+  int32_t critical_first[kCellBlock + 1];
+  // The block's cells that have connections to certify (not falling back, with nodes besides
+  // their corners: with only those, every sector lies along an edge), as offsets in the block.
+  int32_t to_connect[kCellBlock];
   CellNodes cn;
   std::vector<int> interior_idx;
   std::vector<CellEdgeNode> edge_nodes;
@@ -80,20 +94,17 @@ struct CellScratch {
   SectorResult sectors;   // the current cell's connections
 };
 
-// The certified connections of regular cell c (interior critical points in scratch.critical),
+// The certified connections of regular cell c (its interior critical points: `critical`), a
+// cell with nodes besides its corners (with only those, every sector lies along an edge),
 // appended with its interior nodes to `out`; or, when a sector cannot be connected, the reason
 // for falling back (nothing appended).
-uint8_t connect_cell(const Mesh &mesh, const EdgeNodes &en, int64_t c, bool have_polynomial,
-                     bool arc_geometry, CellScratch &scratch, CellChunk &out) {
+uint8_t connect_cell(const Mesh &mesh, const EdgeNodes &en, int64_t c,
+                     std::span<const InteriorCritical> critical, bool arc_geometry,
+                     CellScratch &scratch, CellChunk &out) {
   const Topology &topo = mesh.topology;
   const Field &field = mesh.field;
   const int64_t edge_base = topo.num_vertices();
-  // Only corners: every sector lies along an edge, nothing to connect inside the cell.
-  if (scratch.critical.empty() && en.count(topo.cell_edge(c, 0)) == 0 &&
-      en.count(topo.cell_edge(c, 1)) == 0 && en.count(topo.cell_edge(c, 2)) == 0)
-    return 0;
-  if (!have_polynomial)
-    scratch.poly.assign(field.degree(c), field.coefficients(c));
+  scratch.poly.assign(field.degree(c), field.coefficients(c));
   const BernsteinTriangle &g = scratch.poly;
   CellNodes &cn = scratch.cn;
   cn.nodes.clear();
@@ -125,10 +136,9 @@ uint8_t connect_cell(const Mesh &mesh, const EdgeNodes &en, int64_t c, bool have
     chain.push_back((k + 1) % 3);
     cs.push_back(1.0);
   }
-  for (std::size_t i = 0; i < scratch.critical.size(); ++i) {
+  for (std::size_t i = 0; i < critical.size(); ++i) {
     scratch.interior_idx.push_back(static_cast<int>(cn.nodes.size()));
-    cn.nodes.push_back(
-        {scratch.critical[i].uv, scratch.critical[i].value, -1 - static_cast<int64_t>(i)});
+    cn.nodes.push_back({critical[i].uv, critical[i].value, -1 - static_cast<int64_t>(i)});
   }
   const SectorResult &r = scratch.sectors;
   connect_sectors(g, cn, scratch.interior_idx, scratch.edge_nodes, out.counters, scratch.sectors,
@@ -137,7 +147,7 @@ uint8_t connect_cell(const Mesh &mesh, const EdgeNodes &en, int64_t c, bool have
     return r.failed ? kCertificationFailed : kDegenerateEdgeNode;
   // The cell's interior node i becomes the chunk's node first + i.
   const int64_t first = static_cast<int64_t>(out.nodes.size());
-  for (const InteriorCritical &p : scratch.critical)
+  for (const InteriorCritical &p : critical)
     out.nodes.push_back({c, p.uv, p.value});
   auto ref = [&](int64_t r) { return r >= 0 ? r : -1 - (first + (-1 - r)); };
   for (auto [a, b] : r.join)
@@ -197,41 +207,70 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
     GradientZeroOptions zero_options;
     zero_options.frame = [&] { return mesh.geometry.frame(cell); };
     CellScratch scratch;
-    for (int64_t c = begin; c < end; ++c) {
-      uint8_t why = 0;
-      for (int j = 0; j < 3; ++j)
-        if (en.degeneracy[topo.cell_edge(c, j)] != kEdgeOk)
-          why |= kDegenerateEdge;
+    auto block_start = clock_type::now();
+    for (int64_t block = begin; block < end; block += kCellBlock) {
+      const int64_t block_end = std::min(end, block + kCellBlock);
+      // Pass 1: the cells' interior critical points, and which cells fall back.
       scratch.critical.clear();
-      bool have_polynomial = false; // scratch.poly holds cell c's polynomial
-      // Most cells: no gradient zero, decided on the stored coefficients.
-      const GradientScreen screen =
-          screen_gradient(field.coefficients(c), field.degree(c), zero_options.constant_tolerance);
-      if (screen.verdict != GradientScreen::kNoZero) {
-        scratch.poly.assign(field.degree(c), field.coefficients(c));
-        have_polynomial = true;
-        const BernsteinTriangle &g = scratch.poly;
-        cell = c;
-        const GradientZeros z = find_gradient_zeros(g, zero_options, screen);
-        if (z.constant)
-          why |= kConstantCell;
-        if (z.budget_exhausted)
-          why |= kCriticalCurve;
-        for (const GradientZero &p : z.zeros) {
-          if (!p.certified) {
-            why |= kUncertifiedZero;
-            ++out.unresolved;
-          } else if (p.near_boundary) {
-            why |= kZeroNearBoundary;
-          } else {
-            scratch.critical.push_back({{p.u, p.v}, g(p.u, p.v)});
+      int connect_count = 0;
+      for (int64_t c = block; c < block_end; ++c) {
+        scratch.critical_first[c - block] = static_cast<int32_t>(scratch.critical.size());
+        uint8_t why = 0;
+        bool edge_nodes_on = false;
+        for (int j = 0; j < 3; ++j) {
+          const int64_t e = topo.cell_edge(c, j);
+          if (en.degeneracy[e] != kEdgeOk)
+            why |= kDegenerateEdge;
+          edge_nodes_on |= en.count(e) != 0;
+        }
+
+        // Most cells: no gradient zero, decided on the stored coefficients.
+        const GradientScreen screen = screen_gradient(field.coefficients(c), field.degree(c),
+                                                      zero_options.constant_tolerance);
+        if (screen.verdict != GradientScreen::kNoZero) {
+          scratch.poly.assign(field.degree(c), field.coefficients(c));
+          const BernsteinTriangle &g = scratch.poly;
+          cell = c;
+          const GradientZeros z = find_gradient_zeros(g, zero_options, screen);
+          if (z.constant)
+            why |= kConstantCell;
+          if (z.budget_exhausted)
+            why |= kCriticalCurve;
+          for (const GradientZero &p : z.zeros) {
+            if (!p.certified) {
+              why |= kUncertifiedZero;
+              ++out.unresolved;
+            } else if (p.near_boundary) {
+              why |= kZeroNearBoundary;
+            } else {
+              scratch.critical.push_back({{p.u, p.v}, g(p.u, p.v)});
+            }
           }
         }
+        fallback[c] = why;
+        if (!why &&
+            (edge_nodes_on ||
+             scratch.critical.size() > static_cast<std::size_t>(scratch.critical_first[c - block])))
+          scratch.to_connect[connect_count++] = static_cast<int32_t>(c - block);
       }
-      fallback[c] =
-          why ? why : connect_cell(mesh, en, c, have_polynomial, opt.arc_geometry, scratch, out);
-      if (fallback[c])
-        out.fallback_cells.push_back(c);
+      scratch.critical_first[block_end - block] = static_cast<int32_t>(scratch.critical.size());
+      const auto critical_done = clock_type::now();
+      // Pass 2: the certified connections of the cells that have any.
+      for (int n = 0; n < connect_count; ++n) {
+        const int32_t i = scratch.to_connect[n];
+        const std::span<const InteriorCritical> critical(
+            scratch.critical.data() + scratch.critical_first[i],
+            static_cast<std::size_t>(scratch.critical_first[i + 1] - scratch.critical_first[i]));
+        fallback[block + i] =
+            connect_cell(mesh, en, block + i, critical, opt.arc_geometry, scratch, out);
+      }
+      for (int64_t c = block; c < block_end; ++c)
+        if (fallback[c])
+          out.fallback_cells.push_back(c);
+      const auto block_done = clock_type::now();
+      out.critical_seconds += seconds(block_start, critical_done);
+      out.connection_seconds += seconds(critical_done, block_done);
+      block_start = block_done;
     }
   });
   const auto t3 = clock_type::now();
@@ -244,6 +283,7 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
   std::size_t cell_join = 0, cell_split = 0, fallback_count = 0;
   PathCounters counters;
   int64_t unresolved_zeros = 0;
+  double critical_seconds = 0, connection_seconds = 0; // thread time, summed over the chunks
   for (int64_t k = 0; k < chunks; ++k) {
     const CellChunk &ch = chunk_out[k];
     node_base[k] = next;
@@ -258,6 +298,8 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
     counters.failed += ch.counters.failed;
     counters.steps += ch.counters.steps;
     unresolved_zeros += ch.unresolved;
+    critical_seconds += ch.critical_seconds;
+    connection_seconds += ch.connection_seconds;
   }
   const int64_t interior_nodes = next - edge_base - static_cast<int64_t>(en.nodes.size());
   // Large arrays, filled in parallel without being zeroed first.
@@ -616,8 +658,14 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
     r.add_stat(reason_names[b], static_cast<double>(reason_count[b]));
   r.add_stat("unresolved_interior_zeros", static_cast<double>(unresolved_zeros));
   r.add_stat("time_edge_nodes_s", seconds(t0, t1));
-  // Interior critical points and certified connections run in one pass per cell.
-  r.add_stat("time_cells_s", seconds(t1, t3));
+  // The cell phase, and its two passes: their shares of its wall time are their shares of the
+  // threads' time in them (on one thread, their own times).
+  const double cell_seconds = seconds(t1, t3);
+  const double passes = critical_seconds + connection_seconds;
+  const double critical_share = passes > 0 ? critical_seconds / passes : 0.5;
+  r.add_stat("time_cells_s", cell_seconds);
+  r.add_stat("time_interior_critical_points_s", cell_seconds * critical_share);
+  r.add_stat("time_connections_s", cell_seconds * (1 - critical_share));
   r.add_stat("time_graph_assembly_s", seconds(t3, t4));
   r.add_stat("time_sweeps_s", sweep_time.order + sweep_time.sweeps);
   r.add_stat("time_merge_s", sweep_time.merge);

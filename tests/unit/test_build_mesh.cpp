@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cstring>
 #include <random>
 #include <span>
@@ -116,6 +117,29 @@ TEST(BuildMesh, ConsumedInputGivesTheSameReport) {
   EXPECT_FALSE(kept_message.empty());
   EXPECT_EQ(kept_message, consumed_message);
   EXPECT_NE(consumed_message.find(bad.source), std::string::npos);
+}
+
+// The build's steps are timed one after the other: each time is set, and they add up to no more
+// than the build's wall time.
+TEST(BuildMesh, TimesEachStep) {
+  const MeshInput input = grid_mesh(7, 3);
+  const auto start = std::chrono::steady_clock::now();
+  const Mesh m = build_mesh(input, {.threads = 2});
+  const double wall =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const MeshBuildTimes &t = m.build_times;
+  for (double s :
+       {t.input_checks, t.topology, t.duplicate_vertices, t.geometry, t.field, t.geometry_checks})
+    EXPECT_GT(s, 0);
+  EXPECT_LE(t.total(), wall);
+  // An input refused by its first checks times those only.
+  MeshInput broken = input;
+  broken.cell_nodes[3] = -5;
+  const Mesh b = build_mesh(broken, {.throw_on_error = false});
+  EXPECT_FALSE(b.complete);
+  EXPECT_GT(b.build_times.input_checks, 0);
+  EXPECT_EQ(b.build_times.topology, 0);
+  EXPECT_EQ(b.build_times.field, 0);
 }
 
 } // namespace

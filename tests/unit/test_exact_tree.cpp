@@ -375,6 +375,28 @@ TEST(ExactTree, IdenticalForAnyThreadCount) {
   }
 }
 
+// The cell phase's time is split between its two passes, interior critical points and
+// connections, on any thread count: both are set, and they add up to the phase.
+TEST(ExactTree, CellPhaseTimeSplitsIntoCriticalPointsAndConnections) {
+  DatasetOptions o;
+  o.cells = 3000;
+  const Mesh mesh = build_mesh(generate_dataset("random", o));
+  for (int threads : {1, 2}) {
+    ExactTreeOptions eo;
+    eo.threads = threads;
+    eo.cells_per_thread = 1;
+    const TreeResult t = exact_contour_tree(mesh, eo);
+    ASSERT_GT(stat(t, "interior_critical_points"), 0);
+    ASSERT_GT(stat(t, "connections_direct") + stat(t, "connections_traced"), 0);
+    const double cells = stat(t, "time_cells_s"),
+                 critical = stat(t, "time_interior_critical_points_s"),
+                 connections = stat(t, "time_connections_s");
+    EXPECT_GT(critical, 0) << threads;
+    EXPECT_GT(connections, 0) << threads;
+    EXPECT_NEAR(critical + connections, cells, 1e-12 * cells) << threads;
+  }
+}
+
 TEST(ExactTree, GeneratedDatasetsAgreeWithFinePlRefinements) {
   // For every dataset: the bottleneck distance between the exact diagram and the diagram of the
   // PL tree of the k-refinement shrinks as k grows and ends small against the value range.
