@@ -246,6 +246,40 @@ void check_surface_cell(const Geometry &g, int64_t c, double area_tol, ProblemLo
     n0 = {j[0][1] * j[1][2] - j[0][2] * j[1][1], j[0][2] * j[1][0] - j[0][0] * j[1][2],
           j[0][0] * j[1][1] - j[0][1] * j[1][0]};
   }
+  if (!g.is_linear(c)) {
+    // n . n0 = phi_u . (phi_v x n0) as a Bernstein polynomial of degree 2(p-1): where its
+    // coefficients all exceed area_tol |n0|, so does n . n0 everywhere in the cell, hence
+    // |n| > area_tol and no flip (what the samples below look for, certified at once; most
+    // cells end here).
+    const BernsteinTriangle x = g.component(c, 0), y = g.component(c, 1), z = g.component(c, 2);
+    const BernsteinTriangle du[3] = {x.du(), y.du(), z.du()}, dv[3] = {x.dv(), y.dv(), z.dv()};
+    auto largest = [](const std::vector<double> &coefficients) {
+      double m = 0;
+      for (double a : coefficients)
+        m = std::max(m, std::abs(a));
+      return m;
+    };
+    std::vector<double> dot;
+    // A product's coefficients are convex combinations of its factors' coefficient products:
+    // each is at most the factors' largest coefficients' product in size, and so is its
+    // rounding error over that, a few ulps (far below the 1e-13 allowed for here).
+    double magnitude = 0;
+    for (int k = 0; k < 3; ++k) {
+      // (phi_v x n0)_k, coefficient by coefficient.
+      const int k1 = (k + 1) % 3, k2 = (k + 2) % 3;
+      std::vector<double> cross(dv[k1].coefficients().size());
+      for (std::size_t i = 0; i < cross.size(); ++i)
+        cross[i] = dv[k1].coefficients()[i] * n0[k2] - dv[k2].coefficients()[i] * n0[k1];
+      magnitude += largest(du[k].coefficients()) * largest(cross);
+      const BernsteinTriangle term = du[k] * BernsteinTriangle(dv[k1].degree(), std::move(cross));
+      dot.resize(term.coefficients().size(), 0.0);
+      for (std::size_t i = 0; i < dot.size(); ++i)
+        dot[i] += term.coefficients()[i];
+    }
+    const double n0_length = std::sqrt(n0[0] * n0[0] + n0[1] * n0[1] + n0[2] * n0[2]);
+    if (*std::min_element(dot.begin(), dot.end()) > area_tol * n0_length + 1e-13 * magnitude)
+      return;
+  }
   bool degenerate = false, folded = false;
   for_each_sample(m, [&](double u, double v) {
     const auto j = g.jacobian(c, u, v);

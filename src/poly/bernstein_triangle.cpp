@@ -6,6 +6,7 @@
 #include "poly/lattice.hpp"
 
 #include <algorithm>
+#include <array>
 #include <stdexcept>
 
 namespace hoct {
@@ -352,14 +353,25 @@ BernsteinTriangle BernsteinTriangle::elevated(int target) const {
 BernsteinTriangle BernsteinTriangle::operator*(const BernsteinTriangle &o) const {
   const int n = d_ + o.d_;
   BernsteinTriangle r(n);
+  // The other factor's coefficients times their trinomials, once (on the stack up to degree 10).
+  const std::size_t m = o.c_.size();
+  std::array<double, 66> small;
+  std::vector<double> large(m > small.size() ? m : 0);
+  double *w2 = m > small.size() ? large.data() : small.data();
+  for (int b2 = 0; b2 <= o.d_; ++b2)
+    for (int a2 = 0; a2 <= o.d_ - b2; ++a2)
+      w2[lattice_index(o.d_, a2, b2)] = trinomial(o.d_ - a2 - b2, a2, b2) * o.coefficient(a2, b2);
+  // Every product accumulated in the same order as term by term: row b1 + b2 of the result
+  // from a1 + a2 = a1 on.
   for (int b1 = 0; b1 <= d_; ++b1)
     for (int a1 = 0; a1 <= d_ - b1; ++a1) {
       const double w1 = trinomial(d_ - a1 - b1, a1, b1) * coefficient(a1, b1);
-      for (int b2 = 0; b2 <= o.d_; ++b2)
-        for (int a2 = 0; a2 <= o.d_ - b2; ++a2) {
-          const double w2 = trinomial(o.d_ - a2 - b2, a2, b2) * o.coefficient(a2, b2);
-          r.c_[lattice_index(n, a1 + a2, b1 + b2)] += w1 * w2;
-        }
+      for (int b2 = 0; b2 <= o.d_; ++b2) {
+        double *out = &r.c_[lattice_index(n, a1, b1 + b2)];
+        const double *in = &w2[lattice_index(o.d_, 0, b2)];
+        for (int a2 = 0; a2 <= o.d_ - b2; ++a2)
+          out[a2] += w1 * in[a2];
+      }
     }
   for (int b = 0; b <= n; ++b)
     for (int a = 0; a <= n - b; ++a)

@@ -311,6 +311,32 @@ TEST(MeshChecks, SameGeometryReportOnAnyThreadCount) {
   expect_same_geometry_report(sphere, "inverted cell (folded curved cell)");
 }
 
+TEST(MeshChecks, CurvedSurfaceCellsFoldedAreAllFoundAndNoOthers) {
+  // Curved spheres (quadratic and cubic cells): no cell is reported, most are certified by their
+  // normal's Bernstein coefficients. Then 7 quadratic cells folded: exactly those 7.
+  for (int degree : {2, 3}) {
+    std::mt19937_64 rng(16);
+    std::vector<Vec3> v;
+    std::vector<std::array<int64_t, 3>> t;
+    testing::octahedron(24, v, t);
+    MeshInput sphere = testing::lagrange_mesh(
+        v, t, [&](int64_t) { return degree; }, testing::sphere_projection, nullptr, rng);
+    ProblemLog log;
+    const Topology topo = Topology::build(sphere, log, 1);
+    ASSERT_TRUE(Geometry::build(sphere, 1).curved_cells() > 0);
+    check_geometry(Geometry::build(sphere, 1), topo, log, 1);
+    EXPECT_EQ(log.summary(), ProblemLog().summary()) << "degree " << degree;
+    if (degree != 2)
+      continue;
+    const int64_t nc = static_cast<int64_t>(sphere.num_cells());
+    for (int k = 0; k < 7; ++k)
+      fold(sphere, k * nc / 7 + 3);
+    ProblemLog folded;
+    check_geometry(Geometry::build(sphere, 1), topo, folded, 1);
+    EXPECT_EQ(folded.count("inverted cell (folded curved cell)"), 7) << folded.summary();
+  }
+}
+
 TEST(ConcurrentSets, SamePartitionAsSerialUnions) {
   // Random unions from two threads: the same sets as uniting one by one, each rooted at its
   // smallest element.
