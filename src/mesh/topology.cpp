@@ -342,39 +342,77 @@ Topology Topology::build(const MeshInput &in, ProblemLog &problems, int threads)
       t.boundary_loops_ += r;
   }
 
-  // Vertices whose cells form more than one fan (pinched at an interior vertex), found by
-  // counting, per vertex, the cells and the manifold edges that join them around it.
-  std::vector<int64_t> vcells(static_cast<std::size_t>(nv), 0), vlinks(vcells.size(), 0);
-  parallel_for(nc, cell_threads, [&](int64_t begin, int64_t end, int) {
-    for (int64_t c = begin; c < end; ++c)
-      for (int k = 0; k < 3; ++k)
-        add_one(vcells[t.cell_vertices_[c][k]]);
-  });
-  parallel_for(ne, edge_threads, [&](int64_t begin, int64_t end, int) {
-    for (int64_t e = begin; e < end; ++e)
-      if (t.edge_cell_count(e) == 2) {
-        add_one(vlinks[t.edge_vertices_[e][0]]);
-        add_one(vlinks[t.edge_vertices_[e][1]]);
+  // Vertices whose cells form more than one fan: two parts of the surface touching at a single
+  // vertex. Counting cannot see it (two cycles of cells around a vertex have as many manifold
+  // edges there as one), so each vertex's fan is walked, from its lowest cell, across manifold
+  // edges from cell to cell until it closes or meets the boundary on both sides. Every corner
+  // belongs to one vertex, so the fans cover every corner exactly when each vertex has one fan:
+  // the walks' lengths are summed first, and only when they fall short is each vertex looked
+  // at. Edges with more than two cells and cells with a repeated corner (reported above) make
+  // fans ill-defined: the walk is skipped then.
+  const bool walkable = problems.count("non-manifold edge") == 0 &&
+                        problems.count("degenerate cell (repeated corner)") == 0 &&
+                        problems.count("degenerate cell (repeated edge)") == 0;
+  // The cells in v's fan through corner k of cell c.
+  auto fan_size = [&](int64_t v, int64_t c0, int k0) {
+    int64_t size = 1;
+    // Out of cell c through its edge j at v, around v, until the fan closes (true) or an edge
+    // has one cell.
+    auto walk = [&](int64_t c, int j) {
+      for (int64_t steps = 0; steps < 3 * nc; ++steps) {
+        const int64_t e = t.cell_edges_[c][j];
+        const int64_t at = t.edge_cell_offset_[e];
+        if (t.edge_cell_offset_[e + 1] - at != 2)
+          return false;
+        const int64_t side = t.edge_cells_[at] == c ? at + 1 : at;
+        const int64_t n = t.edge_cells_[side];
+        const int jn = incidence_local[side];
+        const int kn = t.cell_vertices_[n][jn] == v ? jn : (jn + 1) % 3;
+        if (n == c0 && kn == k0)
+          return true;
+        ++size;
+        // Leave n through its other edge at v: edge kn starts at corner kn, edge kn + 2 ends
+        // there.
+        c = n;
+        j = jn == kn ? (kn + 2) % 3 : kn;
       }
-  });
-  const bool nonmanifold_edges = problems.count("non-manifold edge") > 0;
-  BlockProblems fans(vblocks);
-  parallel_chunks(
-      nv, vblocks, vertex_loop_threads, [&](int64_t b, int64_t begin, int64_t end, int) {
-        for (int64_t v = begin; v < end; ++v) {
-          // One fan: a cycle (links == cells, no boundary) or a path (links == cells - 1).
-          const bool ok = boundary_degree[v] == 0
-                              ? vlinks[v] == vcells[v]
-                              : (boundary_degree[v] == 2 && vlinks[v] == vcells[v] - 1);
-          if (!ok && boundary_degree[v] <= 2 && ne > 0 && !nonmanifold_edges)
-            fans[b].add(
-                "non-manifold vertex", Severity::Error,
-                "point " + std::to_string(t.vertex_point_[v]) +
-                    ": its cells form more than one fan (two parts of the surface touch at a "
-                    "single vertex)");
-        }
-      });
-  fans.append_to(problems);
+      return true; // not reached: a fan has fewer cells than the mesh
+    };
+    if (!walk(c0, k0))
+      walk(c0, (k0 + 2) % 3);
+    return size;
+  };
+  int64_t fan_cells = 0;
+  if (walkable) {
+    std::vector<int64_t> block_cells(static_cast<std::size_t>(vblocks), 0);
+    parallel_chunks(nv, vblocks, vertex_loop_threads,
+                    [&](int64_t b, int64_t begin, int64_t end, int) {
+                      int64_t cells = 0;
+                      for (int64_t v = begin; v < end; ++v)
+                        cells += fan_size(v, t.vertex_cell_[v], t.vertex_corner_[v]);
+                      block_cells[b] = cells;
+                    });
+    for (int64_t n : block_cells)
+      fan_cells += n;
+  }
+  if (walkable && fan_cells != 3 * nc) {
+    // Some vertex has more than one fan: which ones (rare, so serially).
+    std::vector<int64_t> corners(static_cast<std::size_t>(nv), 0);
+    for (int64_t c = 0; c < nc; ++c)
+      for (int k = 0; k < 3; ++k)
+        ++corners[t.cell_vertices_[c][k]];
+    for (int64_t v = 0; v < nv; ++v) {
+      const int64_t fan = fan_size(v, t.vertex_cell_[v], t.vertex_corner_[v]);
+      // More than two boundary edges: reported above as a pinch of boundary loops.
+      if (fan != corners[v] && boundary_degree[v] <= 2)
+        problems.add("non-manifold vertex", Severity::Error,
+                     "point " + std::to_string(t.vertex_point_[v]) + ": its " +
+                         std::to_string(corners[v]) + " cells form more than one fan (" +
+                         std::to_string(fan) + " of them around cell " +
+                         std::to_string(t.vertex_cell_[v]) +
+                         "): two parts of the surface touch at this single vertex");
+    }
+  }
   return t;
 }
 

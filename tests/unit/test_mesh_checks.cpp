@@ -162,6 +162,28 @@ TEST(MeshChecks, PinchedVertex) {
   EXPECT_TRUE(message_contains(m, "non-manifold vertex", "point 0"));
 }
 
+TEST(MeshChecks, InteriorPinchedVertex) {
+  // Two closed octahedra touching at one vertex (point 0): every edge has two cells and no
+  // boundary anywhere, so counting cells and edges around point 0 cannot tell its two fans of
+  // four cells from one of eight; walking around it can.
+  const std::vector<Vec3> v = {{0, 0, 1}, {1, 0, 0}, {0, 1, 0},  {-1, 0, 0}, {0, -1, 0}, {0, 0, -1},
+                               {1, 0, 2}, {0, 1, 2}, {-1, 0, 2}, {0, -1, 2}, {0, 0, 3}};
+  const std::vector<std::array<int64_t, 3>> lower = {{0, 1, 2}, {0, 2, 3}, {0, 3, 4}, {0, 4, 1},
+                                                     {5, 2, 1}, {5, 3, 2}, {5, 4, 3}, {5, 1, 4}};
+  const std::vector<std::array<int64_t, 3>> upper = {
+      {0, 7, 6}, {0, 8, 7}, {0, 9, 8}, {0, 6, 9}, {10, 6, 7}, {10, 7, 8}, {10, 8, 9}, {10, 9, 6}};
+  std::vector<std::array<int64_t, 3>> both = lower;
+  both.insert(both.end(), upper.begin(), upper.end());
+  for (int threads : {1, 2}) {
+    const Mesh m = build_mesh(linear_mesh(v, both), {.throw_on_error = false, .threads = threads});
+    EXPECT_EQ(m.problems.count("non-manifold vertex"), 1) << m.problems.summary();
+    EXPECT_TRUE(message_contains(m, "non-manifold vertex",
+                                 "point 0: its 8 cells form more than one fan (4 of them"));
+  }
+  // Either octahedron alone is a sphere: nothing to report.
+  EXPECT_EQ(build_mesh(linear_mesh(v, lower), {false}).problems.count("non-manifold vertex"), 0);
+}
+
 TEST(MeshChecks, InvertedAndZeroAreaCells) {
   std::mt19937_64 rng(2);
   std::vector<Vec3> v;
