@@ -13,15 +13,38 @@
 
 namespace hoct {
 
-double bounding_box_diagonal(std::span<const Vec3> points) {
+std::array<Vec3, 2> bounding_box(std::span<const Vec3> points, int threads) {
+  if (points.empty())
+    return {Vec3{0, 0, 0}, Vec3{0, 0, 0}};
+  const int64_t n = static_cast<int64_t>(points.size());
+  const int workers = threads_for(n, threads, 1 << 20);
+  std::vector<std::array<Vec3, 2>> boxes(static_cast<std::size_t>(workers), {points[0], points[0]});
+  parallel_for(n, workers, [&](int64_t begin, int64_t end, int worker) {
+    Vec3 lo = points[begin], hi = lo;
+    for (int64_t p = begin; p < end; ++p)
+      for (int i = 0; i < 3; ++i) {
+        lo[i] = std::min(lo[i], points[p][i]);
+        hi[i] = std::max(hi[i], points[p][i]);
+      }
+    auto &box = boxes[static_cast<std::size_t>(worker)];
+    for (int i = 0; i < 3; ++i) {
+      box[0][i] = std::min(box[0][i], lo[i]);
+      box[1][i] = std::max(box[1][i], hi[i]);
+    }
+  });
+  std::array<Vec3, 2> box = boxes[0];
+  for (const auto &b : boxes)
+    for (int i = 0; i < 3; ++i) {
+      box[0][i] = std::min(box[0][i], b[0][i]);
+      box[1][i] = std::max(box[1][i], b[1][i]);
+    }
+  return box;
+}
+
+double bounding_box_diagonal(std::span<const Vec3> points, int threads) {
   if (points.empty())
     return 0;
-  Vec3 lo = points[0], hi = points[0];
-  for (const auto &p : points)
-    for (int i = 0; i < 3; ++i) {
-      lo[i] = std::min(lo[i], p[i]);
-      hi[i] = std::max(hi[i], p[i]);
-    }
+  const auto [lo, hi] = bounding_box(points, threads);
   return std::hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]);
 }
 
@@ -205,7 +228,7 @@ MergeReport merge_duplicate_points(MeshInput &input, double relative_tolerance, 
   std::vector<int64_t> all(np);
   for (std::size_t i = 0; i < np; ++i)
     all[i] = static_cast<int64_t>(i);
-  const double tol = relative_tolerance * bounding_box_diagonal(input.points);
+  const double tol = relative_tolerance * bounding_box_diagonal(input.points, threads);
   const std::vector<int64_t> rep = coincident_points(input.points, all, tol, threads);
   double scale = 0;
   for (double v : input.values)

@@ -6,6 +6,7 @@
 
 #include "mesh/mesh_input.hpp"
 
+#include <array>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -19,8 +20,12 @@ std::vector<int64_t> coincident_points(std::span<const Vec3> points,
                                        const std::vector<int64_t> &candidates, double tolerance,
                                        int threads = 1);
 
+// The points' bounding box, lowest and highest corner (both 0 for no points), on `threads`
+// threads (the same box for any count: minima and maxima do not depend on the order).
+std::array<Vec3, 2> bounding_box(std::span<const Vec3> points, int threads = 1);
+
 // Length of the bounding-box diagonal of the points (0 for none).
-double bounding_box_diagonal(std::span<const Vec3> points);
+double bounding_box_diagonal(std::span<const Vec3> points, int threads = 1);
 
 struct MergeReport {
   int64_t merged_points = 0; // points replaced by another at the same position

@@ -1,5 +1,6 @@
 #include "mesh/geometry.hpp"
 
+#include "mesh/duplicate_points.hpp"
 #include "poly/lagrange_to_bernstein.hpp"
 #include "poly/lattice.hpp"
 #include "util/parallel_for.hpp"
@@ -120,14 +121,8 @@ private:
 Geometry Geometry::build(const MeshInput &in, int threads) {
   Geometry g;
   const int64_t nc = static_cast<int64_t>(in.num_cells());
-  if (!in.points.empty()) {
-    g.bounds_ = {in.points[0], in.points[0]};
-    for (const auto &p : in.points)
-      for (int i = 0; i < 3; ++i) {
-        g.bounds_[0][i] = std::min(g.bounds_[0][i], p[i]);
-        g.bounds_[1][i] = std::max(g.bounds_[1][i], p[i]);
-      }
-  }
+  if (!in.points.empty())
+    g.bounds_ = bounding_box(in.points, threads);
   const double ext = g.extent();
   const double tol = 1e-12 * std::max(ext, 1e-300);
   g.planar_ = g.bounds_[1][2] - g.bounds_[0][2] <= tol;

@@ -177,7 +177,7 @@ void check_duplicate_vertices(const MeshInput &in, const Topology &topo, Problem
   std::vector<int64_t> corners(topo.num_vertices());
   for (int64_t v = 0; v < topo.num_vertices(); ++v)
     corners[v] = topo.vertex_point(v);
-  const double tol = 1e-10 * bounding_box_diagonal(in.points);
+  const double tol = 1e-10 * bounding_box_diagonal(in.points, threads);
   const std::vector<int64_t> rep = coincident_points(in.points, corners, tol, threads);
   for (std::size_t i = 0; i < corners.size(); ++i)
     if (rep[i] != corners[i]) {

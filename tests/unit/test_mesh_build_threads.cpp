@@ -337,6 +337,33 @@ TEST(MeshChecks, CurvedSurfaceCellsFoldedAreAllFoundAndNoOthers) {
   }
 }
 
+TEST(BoundingBox, SameBoxOnAnyThreadCount) {
+  // 3 million points (several per thread at the parallel grain) with their extremes in different
+  // thirds: the box of a plain loop, on 1, 2 and 3 threads.
+  std::mt19937_64 rng(21);
+  std::uniform_real_distribution<double> u(-1, 1);
+  std::vector<Vec3> points(3000000);
+  for (auto &p : points)
+    p = {u(rng), 5 * u(rng), 1e-3 * u(rng)};
+  points[10] = {-3, 0, 0};
+  points[1500000] = {0, 7, 0};
+  points[2999999] = {0, 0, -0.5};
+  Vec3 lo = points[0], hi = points[0];
+  for (const auto &p : points)
+    for (int i = 0; i < 3; ++i) {
+      lo[i] = std::min(lo[i], p[i]);
+      hi[i] = std::max(hi[i], p[i]);
+    }
+  for (int threads : {1, 2, 3}) {
+    const auto box = bounding_box(points, threads);
+    EXPECT_EQ(box[0], lo) << threads;
+    EXPECT_EQ(box[1], hi) << threads;
+    EXPECT_DOUBLE_EQ(bounding_box_diagonal(points, threads),
+                     std::hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]));
+  }
+  EXPECT_EQ(bounding_box_diagonal({}, 2), 0);
+}
+
 TEST(ConcurrentSets, SamePartitionAsSerialUnions) {
   // Random unions from two threads: the same sets as uniting one by one, each rooted at its
   // smallest element.
