@@ -10,6 +10,7 @@
 
 #include <array>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 namespace hoct {
@@ -25,6 +26,10 @@ public:
   bool is_linear(int64_t c) const { return degree_[c] == 1; }
   // Component i (0 = x, 1 = y, 2 = z) of the map as a Bernstein polynomial.
   BernsteinTriangle component(int64_t c, int i) const;
+  // The map's control points, canonical lattice order (lattice_size(degree(c)) of them).
+  std::span<const Vec3> control_points(int64_t c) const {
+    return {coef_.data() + offset_[c], static_cast<std::size_t>(offset_[c + 1] - offset_[c])};
+  }
   Vec3 position(int64_t c, double u, double v) const;
   // d phi / du and d phi / dv.
   std::array<Vec3, 2> jacobian(int64_t c, double u, double v) const;

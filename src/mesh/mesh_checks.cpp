@@ -1,6 +1,7 @@
 #include "mesh/mesh_checks.hpp"
 
 #include "mesh/duplicate_points.hpp"
+#include "poly/binomial.hpp"
 #include "poly/lagrange_to_bernstein.hpp"
 #include "poly/lattice.hpp"
 
@@ -193,6 +194,58 @@ void check_duplicate_vertices(const MeshInput &in, const Topology &topo, Problem
 
 namespace {
 
+// The derivatives of a degree-d map's control points p: d phi/du and d phi/dv at the
+// degree-(d-1) lattice (canonical order), into du and dv.
+void map_derivatives(std::span<const Vec3> p, int d, Vec3 *du, Vec3 *dv) {
+  for (int b = 0; b <= d - 1; ++b)
+    for (int a = 0; a <= d - 1 - b; ++a) {
+      const Vec3 &base = p[lattice_index(d, a, b)];
+      const Vec3 &right = p[lattice_index(d, a + 1, b)], &up = p[lattice_index(d, a, b + 1)];
+      for (int k = 0; k < 3; ++k) {
+        du[lattice_index(d - 1, a, b)][k] = d * (right[k] - base[k]);
+        dv[lattice_index(d - 1, a, b)][k] = d * (up[k] - base[k]);
+      }
+    }
+}
+
+// The smallest and largest Bernstein coefficient, at degree 2q, of sum over pairs (i, j) of
+// degree-q lattice points of pair(i, j) B_i B_j: a product of two degree-q polynomials, or a sum
+// of such products, given by the products of their coefficients (q < kMaxDegree). Each
+// coefficient is a convex combination of pair(i, j) values.
+template <class Pair> std::pair<double, double> product_coefficient_range(int q, const Pair &pair) {
+  constexpr int kMost = (2 * kMaxDegree - 1) * 2 * kMaxDegree / 2; // lattice_size(2 kMaxDegree - 2)
+  double out[kMost];
+  const int n = 2 * q, size = lattice_size(n);
+  std::fill(out, out + size, 0.0);
+  for (int b1 = 0; b1 <= q; ++b1)
+    for (int a1 = 0; a1 <= q - b1; ++a1) {
+      const int i = lattice_index(q, a1, b1);
+      const double w1 = trinomial(q - a1 - b1, a1, b1);
+      for (int b2 = 0; b2 <= q; ++b2)
+        for (int a2 = 0; a2 <= q - b2; ++a2) {
+          const int j = lattice_index(q, a2, b2);
+          out[lattice_index(n, a1 + a2, b1 + b2)] +=
+              w1 * trinomial(q - a2 - b2, a2, b2) * pair(i, j);
+        }
+    }
+  double lo = INFINITY, hi = -INFINITY;
+  for (int b = 0; b <= n; ++b)
+    for (int a = 0; a <= n - b; ++a) {
+      const double x = out[lattice_index(n, a, b)] / trinomial(n - a - b, a, b);
+      lo = std::min(lo, x);
+      hi = std::max(hi, x);
+    }
+  return {lo, hi};
+}
+
+// Largest |component k| over n points.
+double largest(const Vec3 *p, int n, int k) {
+  double m = 0;
+  for (int i = 0; i < n; ++i)
+    m = std::max(m, std::abs(p[i][k]));
+  return m;
+}
+
 // The sign of the Jacobian determinant of planar cell c (+1, -1, or 0 when it vanishes or changes
 // sign inside the cell, which `problems` then records).
 int planar_jacobian_sign(const Geometry &g, int64_t c, double area_tol, ProblemLog &problems) {
@@ -205,7 +258,23 @@ int planar_jacobian_sign(const Geometry &g, int64_t c, double area_tol, ProblemL
       problems.add("degenerate cell (zero area)", Severity::Error, cell_str(c) + " has zero area");
     return s;
   }
-  // det J as a Bernstein polynomial of degree 2(p-1).
+  // det J = x_u y_v - x_v y_u as a Bernstein polynomial of degree 2(p-1): where its coefficients
+  // are all beyond area_tol (and their rounding, a few ulps of the factors' largest products,
+  // far below the 1e-13 allowed for here), so is det J everywhere in the cell.
+  {
+    const int d = g.degree(c), q = d - 1, m = lattice_size(q);
+    Vec3 du[lattice_size(kMaxDegree - 1)], dv[lattice_size(kMaxDegree - 1)];
+    map_derivatives(g.control_points(c), d, du, dv);
+    const auto [lo, hi] = product_coefficient_range(
+        q, [&](int i, int j) { return du[i][0] * dv[j][1] - dv[i][0] * du[j][1]; });
+    const double rounding =
+        1e-13 * (largest(du, m, 0) * largest(dv, m, 1) + largest(dv, m, 0) * largest(du, m, 1));
+    if (lo > area_tol + rounding)
+      return 1;
+    if (hi < -area_tol - rounding)
+      return -1;
+  }
+  // Not certified: det J in full, for its samples below.
   const BernsteinTriangle x = g.component(c, 0), y = g.component(c, 1);
   const BernsteinTriangle a = x.du() * y.dv(), b = x.dv() * y.du();
   std::vector<double> dc(a.coefficients().size());
@@ -248,36 +317,26 @@ void check_surface_cell(const Geometry &g, int64_t c, double area_tol, ProblemLo
   }
   if (!g.is_linear(c)) {
     // n . n0 = phi_u . (phi_v x n0) as a Bernstein polynomial of degree 2(p-1): where its
-    // coefficients all exceed area_tol |n0|, so does n . n0 everywhere in the cell, hence
-    // |n| > area_tol and no flip (what the samples below look for, certified at once; most
-    // cells end here).
-    const BernsteinTriangle x = g.component(c, 0), y = g.component(c, 1), z = g.component(c, 2);
-    const BernsteinTriangle du[3] = {x.du(), y.du(), z.du()}, dv[3] = {x.dv(), y.dv(), z.dv()};
-    auto largest = [](const std::vector<double> &coefficients) {
-      double m = 0;
-      for (double a : coefficients)
-        m = std::max(m, std::abs(a));
-      return m;
-    };
-    std::vector<double> dot;
-    // A product's coefficients are convex combinations of its factors' coefficient products:
-    // each is at most the factors' largest coefficients' product in size, and so is its
-    // rounding error over that, a few ulps (far below the 1e-13 allowed for here).
-    double magnitude = 0;
-    for (int k = 0; k < 3; ++k) {
-      // (phi_v x n0)_k, coefficient by coefficient.
-      const int k1 = (k + 1) % 3, k2 = (k + 2) % 3;
-      std::vector<double> cross(dv[k1].coefficients().size());
-      for (std::size_t i = 0; i < cross.size(); ++i)
-        cross[i] = dv[k1].coefficients()[i] * n0[k2] - dv[k2].coefficients()[i] * n0[k1];
-      magnitude += largest(du[k].coefficients()) * largest(cross);
-      const BernsteinTriangle term = du[k] * BernsteinTriangle(dv[k1].degree(), std::move(cross));
-      dot.resize(term.coefficients().size(), 0.0);
-      for (std::size_t i = 0; i < dot.size(); ++i)
-        dot[i] += term.coefficients()[i];
+    // coefficients all exceed area_tol |n0| (and their rounding, a few ulps of the factors'
+    // largest products, far below the 1e-13 allowed for here), so does n . n0 everywhere in
+    // the cell, hence |n| > area_tol and no flip (what the samples below look for, certified at
+    // once; most cells end here).
+    const int d = g.degree(c), q = d - 1, m = lattice_size(q);
+    Vec3 du[lattice_size(kMaxDegree - 1)], w[lattice_size(kMaxDegree - 1)];
+    map_derivatives(g.control_points(c), d, du, w);
+    for (int i = 0; i < m; ++i) { // phi_v x n0
+      const Vec3 v = w[i];
+      w[i] = {v[1] * n0[2] - v[2] * n0[1], v[2] * n0[0] - v[0] * n0[2],
+              v[0] * n0[1] - v[1] * n0[0]};
     }
+    const auto [lo, hi] = product_coefficient_range(q, [&](int i, int j) {
+      return du[i][0] * w[j][0] + du[i][1] * w[j][1] + du[i][2] * w[j][2];
+    });
+    double magnitude = 0;
+    for (int k = 0; k < 3; ++k)
+      magnitude += largest(du, m, k) * largest(w, m, k);
     const double n0_length = std::sqrt(n0[0] * n0[0] + n0[1] * n0[1] + n0[2] * n0[2]);
-    if (*std::min_element(dot.begin(), dot.end()) > area_tol * n0_length + 1e-13 * magnitude)
+    if (lo > area_tol * n0_length + 1e-13 * magnitude)
       return;
   }
   bool degenerate = false, folded = false;

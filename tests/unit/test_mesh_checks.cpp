@@ -283,6 +283,56 @@ TEST(MeshChecks, CurvedCellFoldedInside) {
   EXPECT_EQ(r.geometry.curved_cells(), 1);
 }
 
+// One quadratic cell, (0,0), (1,0), (0,1) with its first edge's middle node moved to (0.5, y)
+// and, with lift, its third edge's middle node raised to z = lift (a surface cell). Whether
+// check_geometry calls it folded is compared with a dense sampling of the Jacobian determinant
+// (planar) or of the normal against the normal at the centre (surface): the certified fast
+// path must agree with the brute force wherever the sampled minimum is clearly away from 0.
+TEST(MeshChecks, CurvedCellChecksAgreeWithDenseSampling) {
+  int folded_cases = 0, sound_cases = 0;
+  for (double lift : {0.0, 0.4})
+    for (int step = -30; step <= 30; ++step) {
+      const double y = 0.05 * step;
+      MeshInput m;
+      m.points = {{0, 0, 0}, {0.5, y, 0}, {1, 0, 0}, {0, 0.5, lift}, {0.5, 0.5, 0}, {0, 1, 0}};
+      m.values = {0, 1, 2, 3, 4, 5};
+      const int64_t nodes[6] = {0, 1, 2, 3, 4, 5};
+      m.add_cell(2, nodes);
+      const Mesh r = build_mesh(m, {false});
+      ASSERT_TRUE(r.complete) << r.problems.summary();
+      auto normal = [&](double u, double v) {
+        const auto j = r.geometry.jacobian(0, u, v);
+        return Vec3{j[0][1] * j[1][2] - j[0][2] * j[1][1], j[0][2] * j[1][0] - j[0][0] * j[1][2],
+                    j[0][0] * j[1][1] - j[0][1] * j[1][0]};
+      };
+      const Vec3 n0 = normal(1.0 / 3, 1.0 / 3);
+      double lo = INFINITY, hi = -INFINITY;
+      const int n = 400;
+      for (int a = 0; a <= n; ++a)
+        for (int b = 0; a + b <= n; ++b) {
+          const Vec3 nv = normal(double(a) / n, double(b) / n);
+          // Planar: the determinant (the normal's z); surface: the normal against the centre's.
+          const double s = lift == 0 ? nv[2] : nv[0] * n0[0] + nv[1] * n0[1] + nv[2] * n0[2];
+          lo = std::min(lo, s);
+          hi = std::max(hi, s);
+        }
+      if (std::abs(lo) < 1e-3 || hi <= 0)
+        continue; // at the threshold, or wholly inverted (no neighbour to disagree with)
+      const bool folded = lo < 0;
+      // A fold may pass through a point where the map is singular (zero area there): either
+      // report is right then.
+      EXPECT_EQ(r.problems.count("inverted cell (folded curved cell)") +
+                    r.problems.count("degenerate cell (zero area)"),
+                folded ? 1 : 0)
+          << "y " << y << ", lift " << lift << ": sampled " << lo << " .. " << hi << "\n"
+          << r.problems.summary();
+      (folded ? folded_cases : sound_cases)++;
+    }
+  // Both outcomes occur, planar and curved surface alike.
+  EXPECT_GT(folded_cases, 10);
+  EXPECT_GT(sound_cases, 10);
+}
+
 } // namespace
 } // namespace hoct
 
