@@ -57,61 +57,82 @@ std::vector<Vec3> GeometricGraph::path(int64_t a, int64_t b, Search &scratch,
 
 std::vector<Vec3> GeometricGraph::search(int64_t a, int64_t b, double lo, double hi,
                                          int64_t max_visits, Search &s) const {
-  // Breadth-first search; a node's mark is its generation, `from` the edge it was reached by.
-  if (s.stamp.size() != position_.size() || s.generation == UINT32_MAX) {
+  // Breadth-first from both ends at once, each step on the side with fewer nodes waiting, until
+  // the two meet: in a region that surrounds the ends on all sides, each side then explores
+  // about half the radius (on a 10^6-cell field, half the nodes of a one-sided search). A
+  // node's stamp is the generation of the side that reached it (2g: from a, 2g + 1: from b),
+  // `from` the edge it was reached by.
+  if (s.stamp.size() != position_.size() || s.generation >= UINT32_MAX - 2) {
     s.stamp.assign(position_.size(), 0);
     s.from.assign(position_.size(), -1);
     s.generation = 0;
   }
-  const uint32_t gen = ++s.generation;
-  std::vector<int64_t> &queue = s.queue;
-  queue.assign(1, a);
+  s.generation += 2;
+  const uint32_t side_a = s.generation, side_b = s.generation + 1;
   std::vector<uint32_t> &stamp = s.stamp;
   std::vector<int64_t> &from = s.from;
-  stamp[a] = gen;
+  std::vector<int64_t> &qa = s.queue, &qb = s.queue_b;
+  qa.assign(1, a);
+  qb.assign(1, b);
+  stamp[a] = side_a;
   from[a] = -1;
-  bool found = a == b;
-  for (std::size_t q = 0; q < queue.size() && !found; ++q) {
-    if (static_cast<int64_t>(q) > max_visits)
-      break;
-    const int64_t v = queue[q];
+  int64_t meet_a = a == b ? a : -1, meet_b = a == b ? b : -1, meet_edge = -1;
+  if (a != b) {
+    stamp[b] = side_b;
+    from[b] = -1;
+  }
+  std::size_t ha = 0, hb = 0; // the queues' heads
+  int64_t visits = 0;
+  while (meet_a < 0 && ha < qa.size() && hb < qb.size() && visits <= max_visits) {
+    const bool on_a = qa.size() - ha <= qb.size() - hb;
+    std::vector<int64_t> &queue = on_a ? qa : qb;
+    const uint32_t own = on_a ? side_a : side_b, other = on_a ? side_b : side_a;
+    const int64_t v = queue[on_a ? ha++ : hb++];
+    ++visits;
     for (int64_t k = offset_[v]; k < offset_[v + 1]; ++k) {
       const int64_t w = adj_[k];
-      if (stamp[w] == gen || value_[w] < lo || value_[w] > hi)
+      if (stamp[w] == own || value_[w] < lo || value_[w] > hi)
         continue;
-      stamp[w] = gen;
-      from[w] = adj_edge_[k];
-      if (w == b) {
-        found = true;
+      if (stamp[w] == other) { // the two searches meet on this edge
+        meet_a = on_a ? v : w;
+        meet_b = on_a ? w : v;
+        meet_edge = adj_edge_[k];
         break;
       }
+      stamp[w] = own;
+      from[w] = adj_edge_[k];
       queue.push_back(w);
     }
   }
   std::vector<Vec3> out;
-  if (!found) {
+  if (meet_a < 0) {
     out = {position_[a], position_[b]};
     return out;
   }
-  // Walk back from b, then reverse.
-  int64_t v = b;
-  out.push_back(position_[b]);
-  while (v != a) {
-    const int64_t e = from[v];
+  // Edge e's polyline from its end u to its other end (u excluded), appended to out; returns
+  // that other end.
+  auto walk = [&](int64_t e, int64_t u) {
     const auto &ends = ends_[e];
-    const bool forward = ends[1] == v; // the edge runs ends[0] -> ends[1] = v
-    const int64_t u = forward ? ends[0] : ends[1];
-    // Interior points from v back to u.
+    const bool forward = ends[0] == u; // the points run ends[0] -> ends[1]
     if (forward)
-      for (int64_t i = point_offset_[e + 1] - 1; i >= point_offset_[e]; --i)
-        out.push_back(points_[i]);
-    else
       for (int64_t i = point_offset_[e]; i < point_offset_[e + 1]; ++i)
         out.push_back(points_[i]);
-    out.push_back(position_[u]);
-    v = u;
-  }
+    else
+      for (int64_t i = point_offset_[e + 1] - 1; i >= point_offset_[e]; --i)
+        out.push_back(points_[i]);
+    const int64_t next = forward ? ends[1] : ends[0];
+    out.push_back(position_[next]);
+    return next;
+  };
+  // From meet_a back to a, reversed; then across the meeting edge and on to b.
+  out.push_back(position_[meet_a]);
+  for (int64_t v = meet_a; v != a;)
+    v = walk(from[v], v);
   std::reverse(out.begin(), out.end());
+  if (meet_edge >= 0)
+    walk(meet_edge, meet_a);
+  for (int64_t v = meet_b; v != b;)
+    v = walk(from[v], v);
   return out;
 }
 

@@ -36,12 +36,13 @@ public:
   // Scratch memory of path(): one per thread that searches.
   struct Search {
     std::vector<uint32_t> stamp;
-    std::vector<int64_t> from, queue;
+    std::vector<int64_t> from, queue, queue_b;
     uint32_t generation = 0;
   };
 
   // The polyline from a to b through a path of nodes with values within [min, max] of the two
-  // ends' values (breadth-first, at most `max_visits` nodes); failing that (the graph is sparser
+  // ends' values (breadth-first from both ends until they meet, at most `max_visits` nodes
+  // visited); failing that (the graph is sparser
   // than the surface), through nodes below the larger of the two values, where the nodes of an
   // arc of the graph's contour tree are always connected; failing that too, through any path;
   // just {a, b} if there is none. Several threads may search at once, each with its scratch.

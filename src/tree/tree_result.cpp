@@ -115,7 +115,7 @@ void compute_arc_paths(TreeResult &t, int threads) {
   t.arc_paths.resize(t.arcs.size());
   const int used = threads_for(n, thread_count(threads), 16);
   std::vector<GeometricGraph::Search> scratch(static_cast<std::size_t>(used));
-  parallel_chunks(n, std::min<int64_t>(n, int64_t{used} * 16), used,
+  parallel_chunks(n, std::min<int64_t>(n, int64_t{used} * 256), used,
                   [&](int64_t, int64_t begin, int64_t end, int worker) {
                     for (int64_t i = begin; i < end; ++i) {
                       const auto &a = t.arcs[i];

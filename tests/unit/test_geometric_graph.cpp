@@ -1,9 +1,13 @@
 // The geometric graph's arc paths: within the arc's values where the graph allows it, else below
 // the upper end's value (where the join tree connects an arc's ends), else any path; one scratch
-// serves searches on different graphs.
+// serves searches on different graphs; long paths and random grids as walks through the graph.
 #include "tree/geometric_graph.hpp"
 
 #include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
 
 namespace hoct {
 namespace {
@@ -59,6 +63,110 @@ TEST(GeometricGraph, AnyPathWhenNoneBelowTheTop) {
   GeometricGraph apart({{0, 0, 0}, {1, 0, 0}}, {0.0, 1.0});
   apart.finish();
   EXPECT_EQ(apart.path(0, 1, scratch), (std::vector<Vec3>{{0, 0, 0}, {1, 0, 0}}));
+}
+
+TEST(GeometricGraph, LongPathsKeepEveryEdgesPointsInOrder) {
+  // A chain of 21 nodes, its edges added in alternating directions, each with an interior point
+  // listed in its own direction: the path between the chain's ends (the two searches meet in
+  // the middle) is the whole chain with every point in order, either way.
+  const int n = 21;
+  std::vector<Vec3> nodes;
+  std::vector<double> values;
+  for (int i = 0; i < n; ++i) {
+    nodes.push_back({double(i), 0, 0});
+    values.push_back(double(i) / (n - 1));
+  }
+  GeometricGraph chain(nodes, values);
+  std::vector<Vec3> expect;
+  for (int i = 0; i + 1 < n; ++i) {
+    const Vec3 mid = {i + 0.5, 0.1 * i, 0};
+    if (i % 2 == 0)
+      chain.add_edge(i, i + 1, std::vector<Vec3>{mid});
+    else
+      chain.add_edge(i + 1, i, std::vector<Vec3>{mid});
+    expect.push_back(nodes[i]);
+    expect.push_back(mid);
+  }
+  expect.push_back(nodes[n - 1]);
+  chain.finish();
+  GeometricGraph::Search scratch;
+  EXPECT_EQ(chain.path(0, n - 1, scratch), expect);
+  EXPECT_EQ(chain.path(n - 1, 0, scratch), std::vector<Vec3>(expect.rbegin(), expect.rend()));
+  // From the middle to an end, and a node to itself.
+  EXPECT_EQ(chain.path(10, n - 1, scratch), std::vector<Vec3>(expect.begin() + 20, expect.end()));
+  EXPECT_EQ(chain.path(7, 7, scratch), std::vector<Vec3>{nodes[7]});
+}
+
+TEST(GeometricGraph, PathsAreWalksThroughTheGraphWithinTheValues) {
+  // A 40 x 40 grid with a fifth of its edges missing and random values: every path between
+  // random pairs of nodes in one piece steps from node to adjacent node, stays within the two
+  // ends' values when it can (checked against a plain search of the nodes within them), and
+  // otherwise below the upper end's value.
+  const int side = 40;
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> u(0, 1);
+  std::vector<Vec3> nodes;
+  std::vector<double> values;
+  for (int y = 0; y < side; ++y)
+    for (int x = 0; x < side; ++x) {
+      nodes.push_back({double(x), double(y), 0});
+      values.push_back(u(rng));
+    }
+  GeometricGraph g(nodes, values);
+  std::vector<std::vector<int>> adjacent(nodes.size());
+  for (int y = 0; y < side; ++y)
+    for (int x = 0; x < side; ++x)
+      for (auto [dx, dy] : {std::pair{1, 0}, std::pair{0, 1}}) {
+        if (x + dx >= side || y + dy >= side || u(rng) < 0.2)
+          continue;
+        const int a = y * side + x, b = (y + dy) * side + x + dx;
+        g.add_edge(a, b);
+        adjacent[a].push_back(b);
+        adjacent[b].push_back(a);
+      }
+  g.finish();
+  // Nodes reachable from a through nodes within [lo, hi] (a plain breadth-first search).
+  auto reachable = [&](int a, double lo, double hi) {
+    std::vector<char> seen(nodes.size(), 0);
+    std::vector<int> queue = {a};
+    seen[a] = 1;
+    for (std::size_t q = 0; q < queue.size(); ++q)
+      for (int w : adjacent[queue[q]])
+        if (!seen[w] && values[w] >= lo && values[w] <= hi) {
+          seen[w] = 1;
+          queue.push_back(w);
+        }
+    return seen;
+  };
+  auto node_at = [&](const Vec3 &p) { return int(p[1]) * side + int(p[0]); };
+  GeometricGraph::Search scratch;
+  int within = 0, below = 0;
+  for (int trial = 0; trial < 300; ++trial) {
+    const int a = int(u(rng) * nodes.size()), b = int(u(rng) * nodes.size());
+    const double lo = std::min(values[a], values[b]), hi = std::max(values[a], values[b]);
+    const bool can_within = reachable(a, lo, hi)[b];
+    if (!reachable(a, -INFINITY, hi)[b])
+      continue;
+    const std::vector<Vec3> p = g.path(a, b, scratch);
+    ASSERT_GE(p.size(), 1u);
+    EXPECT_EQ(node_at(p.front()), a);
+    EXPECT_EQ(node_at(p.back()), b);
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      const int v = node_at(p[i]);
+      EXPECT_LE(values[v], hi);
+      if (can_within) {
+        EXPECT_GE(values[v], lo);
+      }
+      if (i > 0) {
+        const int w = node_at(p[i - 1]);
+        EXPECT_NE(std::find(adjacent[v].begin(), adjacent[v].end(), w), adjacent[v].end())
+            << "step " << i << " of the path from " << a << " to " << b;
+      }
+    }
+    (can_within ? within : below)++;
+  }
+  EXPECT_GT(within, 10);
+  EXPECT_GT(below, 10);
 }
 
 } // namespace
