@@ -34,7 +34,10 @@ public:
   const Vec3 &position(int64_t v) const { return position_[v]; }
 
   // Scratch memory of path(): one per thread that searches.
-  struct Search {
+  // On cache lines of its own: the queues' ends change at every step of a search, and the
+  // threads' scratches sit side by side (sharing lines, two threads took 0.45-0.46 s instead of
+  // 0.34-0.37 s for the arcs of a 10^6-cell field).
+  struct alignas(64) Search {
     std::vector<uint32_t> stamp;
     std::vector<int64_t> from, queue, queue_b;
     uint32_t generation = 0;
