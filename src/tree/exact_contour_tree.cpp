@@ -487,8 +487,8 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
       std::sort(chain.begin(), chain.end());
   };
   std::vector<std::pair<double, int64_t>> chain;
-  // With geometry, the chain pieces are common_edges[chain_first ..] (after geo_edges in the
-  // geometric graph), their interior points kChainPoints each in chain_points.
+  // With geometry, the chain pieces are common_edges[chain_first ..] (the geometric graph's
+  // first edges), their interior points kChainPoints each in chain_points.
   std::size_t chain_first = 0;
   UninitializedVector<Vec3> chain_points;
   // Without geometry the sweeps walk the edge chains themselves (EdgeChains: no list of their
@@ -525,6 +525,12 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
     const std::size_t pieces = block_first[blocks];
     chain_first = common_edges.size();
     common_edges.resize(chain_first + pieces);
+    // Room for the other graph edges' interior points after the pieces': the array becomes the
+    // geometric graph's points without being copied.
+    std::size_t geo_points = 0;
+    for (const auto &e : geo_edges)
+      geo_points += e.inner.size();
+    chain_points.reserve(pieces * kChainPoints + geo_points);
     chain_points.resize(pieces * kChainPoints);
     parallel_chunks(
         ne, blocks, gather_threads(ne), [&](int64_t b, int64_t begin, int64_t end, int) {
@@ -626,16 +632,34 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
     });
     auto graph = std::make_shared<GeometricGraph>(
         std::move(positions), std::vector<double>(values.begin(), values.end()));
-    std::size_t points = chain_points.size();
-    for (const auto &e : geo_edges)
-      points += e.inner.size();
+    // The edge chains' pieces (their points already in chain_points), then the cells'
+    // connections and the fallback cells' sub-edges, their points after those.
     const std::size_t chain_pieces = chain_points.size() / kChainPoints;
-    graph->reserve(geo_edges.size() + chain_pieces, points);
-    for (const auto &e : geo_edges)
-      graph->add_edge(e.a, e.b, e.inner.data(), e.inner.size());
-    for (std::size_t i = 0; i < chain_pieces; ++i)
-      graph->add_edge(common_edges[chain_first + i].a, common_edges[chain_first + i].b,
-                      &chain_points[i * kChainPoints], kChainPoints);
+    const std::size_t edges = chain_pieces + geo_edges.size();
+    std::vector<std::array<int64_t, 2>> ends(edges);
+    std::vector<int64_t> point_offset(edges + 1);
+    const int64_t pieces = static_cast<int64_t>(chain_pieces);
+    parallel_for(pieces, gather_threads(pieces), [&](int64_t begin, int64_t end, int) {
+      for (int64_t i = begin; i < end; ++i) {
+        ends[i] = {common_edges[chain_first + i].a, common_edges[chain_first + i].b};
+        point_offset[i] = i * kChainPoints;
+      }
+    });
+    std::size_t points = chain_points.size();
+    for (std::size_t j = 0; j < geo_edges.size(); ++j) {
+      ends[chain_pieces + j] = {geo_edges[j].a, geo_edges[j].b};
+      point_offset[chain_pieces + j] = static_cast<int64_t>(points);
+      points += geo_edges[j].inner.size();
+    }
+    point_offset[edges] = static_cast<int64_t>(points);
+    const std::size_t chain_point_count = chain_points.size();
+    chain_points.resize(points); // within the room reserved above
+    std::size_t at = chain_point_count;
+    for (const auto &e : geo_edges) {
+      std::copy(e.inner.begin(), e.inner.end(), chain_points.begin() + at);
+      at += e.inner.size();
+    }
+    graph->set_edges(std::move(ends), std::move(point_offset), std::move(chain_points));
     graph->finish();
     r.graph = std::move(graph);
   }

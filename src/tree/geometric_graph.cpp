@@ -20,10 +20,20 @@ void GeometricGraph::add_edge(int64_t a, int64_t b, const Vec3 *interior, std::s
   point_offset_.push_back(static_cast<int64_t>(points_.size()));
 }
 
+void GeometricGraph::set_edges(std::vector<std::array<int64_t, 2>> ends,
+                               std::vector<int64_t> point_offset,
+                               UninitializedVector<Vec3> points) {
+  ends_ = std::move(ends);
+  point_offset_ = std::move(point_offset);
+  points_ = std::move(points);
+}
+
 void GeometricGraph::finish() {
   const int64_t n = size();
   offset_.assign(n + 1, 0);
   for (const auto &e : ends_) {
+    if (e[0] == e[1])
+      continue;
     ++offset_[e[0] + 1];
     ++offset_[e[1] + 1];
   }
@@ -33,6 +43,8 @@ void GeometricGraph::finish() {
   std::vector<int64_t> fill(offset_.begin(), offset_.end() - 1);
   for (std::size_t i = 0; i < ends_.size(); ++i) {
     const auto &e = ends_[i];
+    if (e[0] == e[1])
+      continue;
     adj_[fill[e[0]]] = e[1];
     adj_edge_[fill[e[0]]++] = static_cast<int64_t>(i);
     adj_[fill[e[1]]] = e[0];

@@ -6,6 +6,7 @@
 #pragma once
 
 #include "mesh/mesh_input.hpp"
+#include "util/uninitialized_vector.hpp"
 
 #include <array>
 #include <cstdint>
@@ -27,7 +28,13 @@ public:
     add_edge(a, b, interior.data(), interior.size());
   }
   void add_edge(int64_t a, int64_t b, const Vec3 *interior, std::size_t count);
-  // Builds the adjacency; call once after the last add_edge.
+  // All edges at once, instead of add_edge: edge i from ends[i][0] to ends[i][1], its interior
+  // points points[point_offset[i] .. point_offset[i + 1]) (point_offset: one entry more than
+  // ends, from 0). Taken over, not copied.
+  void set_edges(std::vector<std::array<int64_t, 2>> ends, std::vector<int64_t> point_offset,
+                 UninitializedVector<Vec3> points);
+  // Builds the adjacency (edges from a node to itself left out); call once after the last
+  // add_edge.
   void finish();
 
   int64_t size() const { return static_cast<int64_t>(position_.size()); }
@@ -59,7 +66,7 @@ private:
   std::vector<double> value_;
   std::vector<std::array<int64_t, 2>> ends_;
   std::vector<int64_t> point_offset_{0};
-  std::vector<Vec3> points_;
+  UninitializedVector<Vec3> points_;
   std::vector<int64_t> offset_, adj_, adj_edge_;
 };
 

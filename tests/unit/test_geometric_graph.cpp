@@ -97,6 +97,24 @@ TEST(GeometricGraph, LongPathsKeepEveryEdgesPointsInOrder) {
   EXPECT_EQ(chain.path(7, 7, scratch), std::vector<Vec3>{nodes[7]});
 }
 
+TEST(GeometricGraph, EdgesSetAtOnceGiveTheSamePaths) {
+  // The diamond without c, its edges given at once (with an edge from d to itself, left out of
+  // the adjacency) instead of one by one: the same path below b, the same points.
+  GeometricGraph g({{0, 0, 0}, {1, 0, 0}, {0.5, 1, 0}, {0.5, -1, 0}, {0.5, 2, 0}},
+                   {0.0, 1.0, 0.5, -1.0, 5.0});
+  UninitializedVector<Vec3> points;
+  for (const Vec3 &p :
+       {Vec3{0.2, 1, 0}, Vec3{0.8, 1, 0}, Vec3{0.2, -1, 0}, Vec3{9, 9, 9}, Vec3{0.8, -1, 0}})
+    points.push_back(p);
+  g.set_edges({{0, 4}, {4, 1}, {0, 3}, {3, 3}, {3, 1}}, {0, 1, 2, 3, 4, 5}, std::move(points));
+  g.finish();
+  GeometricGraph::Search scratch;
+  EXPECT_EQ(g.path(0, 1, scratch), diamond(false).path(0, 1, scratch));
+  const std::vector<Vec3> expect_d = {
+      {0, 0, 0}, {0.2, -1, 0}, {0.5, -1, 0}, {0.8, -1, 0}, {1, 0, 0}};
+  EXPECT_EQ(g.path(0, 1, scratch), expect_d);
+}
+
 TEST(GeometricGraph, PathsAreWalksThroughTheGraphWithinTheValues) {
   // A 40 x 40 grid with a fifth of its edges missing and random values: every path between
   // random pairs of nodes in one piece steps from node to adjacent node, stays within the two
