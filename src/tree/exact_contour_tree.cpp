@@ -80,8 +80,8 @@ constexpr int64_t kCellBlock = 512;
 
 // Per-thread buffers of the cell phase, reused from cell to cell.
 struct CellScratch {
-  // The block's certified interior critical points, cell by cell (cell begin + i's from
-  // critical_first[i] to critical_first[i + 1]), and why each cell falls back (0: it does not).
+  // The block's certified interior critical points, cell by cell (the block's cell i's from
+  // critical_first[i] to critical_first[i + 1]).
   std::vector<InteriorCritical> critical;
   int32_t critical_first[kCellBlock + 1];
   // The block's cells that have connections to certify (not falling back, with nodes besides
@@ -223,7 +223,6 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
             why |= kDegenerateEdge;
           edge_nodes_on |= en.count(e) != 0;
         }
-
         // Most cells: no gradient zero, decided on the stored coefficients.
         const GradientScreen screen = screen_gradient(field.coefficients(c), field.degree(c),
                                                       zero_options.constant_tolerance);
