@@ -118,11 +118,11 @@ private:
 
 } // namespace
 
-Geometry Geometry::build(const MeshInput &in, int threads) {
+Geometry Geometry::build(const MeshInput &in, int threads, const std::array<Vec3, 2> *box) {
   Geometry g;
   const int64_t nc = static_cast<int64_t>(in.num_cells());
   if (!in.points.empty())
-    g.bounds_ = bounding_box(in.points, threads);
+    g.bounds_ = box ? *box : bounding_box(in.points, threads);
   const double ext = g.extent();
   const double tol = 1e-12 * std::max(ext, 1e-300);
   g.planar_ = g.bounds_[1][2] - g.bounds_[0][2] <= tol;

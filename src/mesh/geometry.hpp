@@ -18,7 +18,9 @@ namespace hoct {
 class Geometry {
 public:
   // `threads` work on the cells at once (the result does not depend on their number).
-  static Geometry build(const MeshInput &input, int threads = 1);
+  // `box`: the input points' bounding box when the caller has it (else it is computed here).
+  static Geometry build(const MeshInput &input, int threads = 1,
+                        const std::array<Vec3, 2> *box = nullptr);
 
   int64_t num_cells() const { return static_cast<int64_t>(degree_.size()); }
   // Degree of the map (1 for a flat, straight-sided cell even if its input degree is higher).

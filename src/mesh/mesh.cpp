@@ -1,6 +1,7 @@
 #include "mesh/mesh.hpp"
 
 #include "error.hpp"
+#include "mesh/duplicate_points.hpp"
 #include "mesh/mesh_checks.hpp"
 #include "poly/sample_fit.hpp"
 #include "util/page_pool.hpp"
@@ -41,9 +42,11 @@ Mesh build(const MeshInput &input, MeshInput *consumed, const MeshBuildOptions &
   if (structural_ok) {
     m.topology = Topology::build(input, m.problems, options.threads);
     step_done(times.topology);
-    check_duplicate_vertices(input, m.topology, m.problems, options.threads);
+    // The points' bounding box, once for both (a pass over every point).
+    const std::array<Vec3, 2> box = bounding_box(input.points, options.threads);
+    check_duplicate_vertices(input, m.topology, m.problems, options.threads, &box);
     step_done(times.duplicate_vertices);
-    m.geometry = Geometry::build(input, options.threads);
+    m.geometry = Geometry::build(input, options.threads, &box);
     if (consumed)
       PooledVector<Vec3>().swap(consumed->points);
     step_done(times.geometry);

@@ -174,11 +174,12 @@ std::string cell_str(int64_t c) { return "cell " + std::to_string(c); }
 } // namespace
 
 void check_duplicate_vertices(const MeshInput &in, const Topology &topo, ProblemLog &problems,
-                              int threads) {
+                              int threads, const std::array<Vec3, 2> *box) {
   std::vector<int64_t> corners(topo.num_vertices());
   for (int64_t v = 0; v < topo.num_vertices(); ++v)
     corners[v] = topo.vertex_point(v);
-  const double tol = 1e-10 * bounding_box_diagonal(in.points, threads);
+  const auto [lo, hi] = box ? *box : bounding_box(in.points, threads);
+  const double tol = 1e-10 * std::hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]);
   const std::vector<int64_t> rep = coincident_points(in.points, corners, tol, threads);
   for (std::size_t i = 0; i < corners.size(); ++i)
     if (rep[i] != corners[i]) {

@@ -2,6 +2,8 @@
 // with the cell or point index, so the user can find the culprit.
 #pragma once
 
+#include <array>
+
 #include "mesh/geometry.hpp"
 #include "mesh/mesh_input.hpp"
 #include "mesh/problem_log.hpp"
@@ -24,9 +26,11 @@ inline constexpr double kMinValueRange = 1e-140;
 bool check_input(const MeshInput &input, ProblemLog &problems, int threads = 1);
 
 // Distinct vertices (cell corners) at the same position, within 1e-10 of the bounding-box
-// diagonal: a crack in the mesh (merge_duplicate_points repairs it).
+// diagonal: a crack in the mesh (merge_duplicate_points repairs it). `box`: the points'
+// bounding box when the caller has it (else it is computed here).
 void check_duplicate_vertices(const MeshInput &input, const Topology &topology,
-                              ProblemLog &problems, int threads = 1);
+                              ProblemLog &problems, int threads = 1,
+                              const std::array<Vec3, 2> *box = nullptr);
 
 // Degenerate (zero-area) and inverted cells. Planar meshes: the Jacobian determinant of each
 // cell's map, in Bernstein form (certified where its coefficients share a sign, else sampled), must
