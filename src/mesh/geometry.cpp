@@ -180,10 +180,21 @@ Vec3 Geometry::position(int64_t c, double u, double v) const {
   return casteljau3(w, degree_[c], u, v);
 }
 
+void Geometry::derivative_points(int64_t c, Vec3 *du, Vec3 *dv) const {
+  const int d = degree_[c];
+  const Vec3 *p = &coef_[offset_[c]];
+  for (int b = 0; b <= d - 1; ++b)
+    for (int a = 0; a <= d - 1 - b; ++a)
+      for (int k = 0; k < 3; ++k) {
+        const double base = p[lattice_index(d, a, b)][k];
+        du[lattice_index(d - 1, a, b)][k] = d * (p[lattice_index(d, a + 1, b)][k] - base);
+        dv[lattice_index(d - 1, a, b)][k] = d * (p[lattice_index(d, a, b + 1)][k] - base);
+      }
+}
+
 std::array<Vec3, 2> Geometry::jacobian(int64_t c, double u, double v) const {
   // Control points of d phi/du and d phi/dv (degree d-1), then de Casteljau.
   const int d = degree_[c];
-  const Vec3 *p = &coef_[offset_[c]];
   const std::size_t n = static_cast<std::size_t>(lattice_size(d - 1));
   Vec3 bu[kStackPoints], bv[kStackPoints];
   std::vector<Vec3> hu, hv;
@@ -194,13 +205,7 @@ std::array<Vec3, 2> Geometry::jacobian(int64_t c, double u, double v) const {
     wu = hu.data();
     wv = hv.data();
   }
-  for (int b = 0; b <= d - 1; ++b)
-    for (int a = 0; a <= d - 1 - b; ++a)
-      for (int k = 0; k < 3; ++k) {
-        const double base = p[lattice_index(d, a, b)][k];
-        wu[lattice_index(d - 1, a, b)][k] = d * (p[lattice_index(d, a + 1, b)][k] - base);
-        wv[lattice_index(d - 1, a, b)][k] = d * (p[lattice_index(d, a, b + 1)][k] - base);
-      }
+  derivative_points(c, wu, wv);
   return {casteljau3(wu, d - 1, u, v), casteljau3(wv, d - 1, u, v)};
 }
 

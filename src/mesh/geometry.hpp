@@ -10,7 +10,6 @@
 
 #include <array>
 #include <cstdint>
-#include <span>
 #include <vector>
 
 namespace hoct {
@@ -28,13 +27,12 @@ public:
   bool is_linear(int64_t c) const { return degree_[c] == 1; }
   // Component i (0 = x, 1 = y, 2 = z) of the map as a Bernstein polynomial.
   BernsteinTriangle component(int64_t c, int i) const;
-  // The map's control points, canonical lattice order (lattice_size(degree(c)) of them).
-  std::span<const Vec3> control_points(int64_t c) const {
-    return {coef_.data() + offset_[c], static_cast<std::size_t>(offset_[c + 1] - offset_[c])};
-  }
   Vec3 position(int64_t c, double u, double v) const;
   // d phi / du and d phi / dv.
   std::array<Vec3, 2> jacobian(int64_t c, double u, double v) const;
+  // The control points of d phi / du and d phi / dv (degree(c) - 1, canonical lattice order,
+  // lattice_size(degree(c) - 1) of each) into du and dv.
+  void derivative_points(int64_t c, Vec3 *du, Vec3 *dv) const;
   // The cell's shape as a 2x2 upper-triangular T with |T (du, dv)| = |J (du, dv)|, J the
   // Jacobian at the centroid (T is the R factor of J = Q R): reference steps measured as lengths
   // in the cell.

@@ -195,20 +195,6 @@ void check_duplicate_vertices(const MeshInput &in, const Topology &topo, Problem
 
 namespace {
 
-// The derivatives of a degree-d map's control points p: d phi/du and d phi/dv at the
-// degree-(d-1) lattice (canonical order), into du and dv.
-void map_derivatives(std::span<const Vec3> p, int d, Vec3 *du, Vec3 *dv) {
-  for (int b = 0; b <= d - 1; ++b)
-    for (int a = 0; a <= d - 1 - b; ++a) {
-      const Vec3 &base = p[lattice_index(d, a, b)];
-      const Vec3 &right = p[lattice_index(d, a + 1, b)], &up = p[lattice_index(d, a, b + 1)];
-      for (int k = 0; k < 3; ++k) {
-        du[lattice_index(d - 1, a, b)][k] = d * (right[k] - base[k]);
-        dv[lattice_index(d - 1, a, b)][k] = d * (up[k] - base[k]);
-      }
-    }
-}
-
 // The smallest and largest Bernstein coefficient, at degree 2q, of sum over pairs (i, j) of
 // degree-q lattice points of pair(i, j) B_i B_j: a product of two degree-q polynomials, or a sum
 // of such products, given by the products of their coefficients (q < kMaxDegree). Each
@@ -265,7 +251,7 @@ int planar_jacobian_sign(const Geometry &g, int64_t c, double area_tol, ProblemL
   {
     const int d = g.degree(c), q = d - 1, m = lattice_size(q);
     Vec3 du[lattice_size(kMaxDegree - 1)], dv[lattice_size(kMaxDegree - 1)];
-    map_derivatives(g.control_points(c), d, du, dv);
+    g.derivative_points(c, du, dv);
     const auto [lo, hi] = product_coefficient_range(
         q, [&](int i, int j) { return du[i][0] * dv[j][1] - dv[i][0] * du[j][1]; });
     const double rounding =
@@ -324,7 +310,7 @@ void check_surface_cell(const Geometry &g, int64_t c, double area_tol, ProblemLo
     // once; most cells end here).
     const int d = g.degree(c), q = d - 1, m = lattice_size(q);
     Vec3 du[lattice_size(kMaxDegree - 1)], w[lattice_size(kMaxDegree - 1)];
-    map_derivatives(g.control_points(c), d, du, w);
+    g.derivative_points(c, du, w);
     for (int i = 0; i < m; ++i) { // phi_v x n0
       const Vec3 v = w[i];
       w[i] = {v[1] * n0[2] - v[2] * n0[1], v[2] * n0[0] - v[0] * n0[2],
