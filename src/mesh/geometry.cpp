@@ -129,46 +129,53 @@ Geometry Geometry::build(const MeshInput &in, int threads, const std::array<Vec3
 
   // Each cell's map degree (1: straight, three control points), then the control points into
   // their slots: two passes over the cells in parallel, a curved cell converted in each.
-  g.degree_.resize(nc);
+  auto maps = std::make_shared<Maps>();
+  std::vector<uint8_t> &degree = maps->degree;
+  std::vector<int64_t> &offset = maps->offset;
+  UninitializedVector<Vec3> &coef = maps->coef;
+  degree.resize(nc);
   const int workers = threads_for(nc, std::max(1, threads), 4096);
   parallel_for(nc, workers, [&](int64_t begin, int64_t end, int) {
     CellMapper mapper(in, tol);
     for (int64_t c = begin; c < end; ++c)
-      g.degree_[c] = static_cast<uint8_t>(mapper.degree(c));
+      degree[c] = static_cast<uint8_t>(mapper.degree(c));
   });
-  g.offset_.resize(nc + 1);
-  g.offset_[0] = 0;
+  offset.resize(nc + 1);
+  offset[0] = 0;
   for (int64_t c = 0; c < nc; ++c) {
-    g.offset_[c + 1] = g.offset_[c] + lattice_size(g.degree_[c]);
-    g.curved_cells_ += g.degree_[c] != 1;
+    offset[c + 1] = offset[c] + lattice_size(degree[c]);
+    g.curved_cells_ += degree[c] != 1;
   }
-  g.coef_.resize(static_cast<std::size_t>(g.offset_[nc]));
+  coef.resize(static_cast<std::size_t>(offset[nc]));
   parallel_for(nc, workers, [&](int64_t begin, int64_t end, int) {
     CellMapper mapper(in, tol);
     for (int64_t c = begin; c < end; ++c)
-      mapper.control_points(c, g.degree_[c], &g.coef_[g.offset_[c]]);
+      mapper.control_points(c, degree[c], &coef[offset[c]]);
   });
+  g.maps_ = std::move(maps);
   return g;
 }
 
 BernsteinTriangle Geometry::component(int64_t c, int i) const {
+  const Maps &m = *maps_;
   std::vector<double> v;
-  v.reserve(static_cast<std::size_t>(offset_[c + 1] - offset_[c]));
-  for (int64_t k = offset_[c]; k < offset_[c + 1]; ++k)
-    v.push_back(coef_[k][i]);
-  return BernsteinTriangle(degree_[c], std::move(v));
+  v.reserve(static_cast<std::size_t>(m.offset[c + 1] - m.offset[c]));
+  for (int64_t k = m.offset[c]; k < m.offset[c + 1]; ++k)
+    v.push_back(m.coef[k][i]);
+  return BernsteinTriangle(m.degree[c], std::move(v));
 }
 
 Vec3 Geometry::position(int64_t c, double u, double v) const {
-  if (degree_[c] == 1) {
-    const Vec3 *p = &coef_[offset_[c]];
+  const Maps &m = *maps_;
+  if (m.degree[c] == 1) {
+    const Vec3 *p = &m.coef[m.offset[c]];
     Vec3 r;
     for (int a = 0; a < 3; ++a)
       r[a] = (1 - u - v) * p[0][a] + u * p[1][a] + v * p[2][a];
     return r;
   }
   // de Casteljau on the control points themselves (no temporaries for the three components).
-  const std::size_t n = static_cast<std::size_t>(offset_[c + 1] - offset_[c]);
+  const std::size_t n = static_cast<std::size_t>(m.offset[c + 1] - m.offset[c]);
   Vec3 buf[kStackPoints];
   std::vector<Vec3> heap;
   Vec3 *w = buf;
@@ -176,13 +183,14 @@ Vec3 Geometry::position(int64_t c, double u, double v) const {
     heap.resize(n);
     w = heap.data();
   }
-  std::copy(coef_.begin() + offset_[c], coef_.begin() + offset_[c + 1], w);
-  return casteljau3(w, degree_[c], u, v);
+  std::copy(m.coef.begin() + m.offset[c], m.coef.begin() + m.offset[c + 1], w);
+  return casteljau3(w, m.degree[c], u, v);
 }
 
 void Geometry::derivative_points(int64_t c, Vec3 *du, Vec3 *dv) const {
-  const int d = degree_[c];
-  const Vec3 *p = &coef_[offset_[c]];
+  const Maps &m = *maps_;
+  const int d = m.degree[c];
+  const Vec3 *p = &m.coef[m.offset[c]];
   for (int b = 0; b <= d - 1; ++b)
     for (int a = 0; a <= d - 1 - b; ++a)
       for (int k = 0; k < 3; ++k) {
@@ -193,8 +201,9 @@ void Geometry::derivative_points(int64_t c, Vec3 *du, Vec3 *dv) const {
 }
 
 std::array<Vec3, 2> Geometry::jacobian(int64_t c, double u, double v) const {
+  const Maps &m = *maps_;
   // Control points of d phi/du and d phi/dv (degree d-1), then de Casteljau.
-  const int d = degree_[c];
+  const int d = m.degree[c];
   const std::size_t n = static_cast<std::size_t>(lattice_size(d - 1));
   Vec3 bu[kStackPoints], bv[kStackPoints];
   std::vector<Vec3> hu, hv;

@@ -10,6 +10,7 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 namespace hoct {
@@ -21,10 +22,10 @@ public:
   static Geometry build(const MeshInput &input, int threads = 1,
                         const std::array<Vec3, 2> *box = nullptr);
 
-  int64_t num_cells() const { return static_cast<int64_t>(degree_.size()); }
+  int64_t num_cells() const { return maps_ ? static_cast<int64_t>(maps_->degree.size()) : 0; }
   // Degree of the map (1 for a flat, straight-sided cell even if its input degree is higher).
-  int degree(int64_t c) const { return degree_[c]; }
-  bool is_linear(int64_t c) const { return degree_[c] == 1; }
+  int degree(int64_t c) const { return maps_->degree[c]; }
+  bool is_linear(int64_t c) const { return maps_->degree[c] == 1; }
   // Component i (0 = x, 1 = y, 2 = z) of the map as a Bernstein polynomial.
   BernsteinTriangle component(int64_t c, int i) const;
   Vec3 position(int64_t c, double u, double v) const;
@@ -46,9 +47,14 @@ public:
   double extent() const; // length of the bounding-box diagonal
 
 private:
-  std::vector<uint8_t> degree_;
-  std::vector<int64_t> offset_;    // into coef_, in units of control points
-  UninitializedVector<Vec3> coef_; // control points, canonical lattice order
+  // The maps, shared by the copies of a Geometry (they do not change after build): a copy costs
+  // nothing, and what holds one (a tree's geometric graph, to draw its arcs) outlives the mesh.
+  struct Maps {
+    std::vector<uint8_t> degree;
+    std::vector<int64_t> offset;    // into coef, in units of control points
+    UninitializedVector<Vec3> coef; // control points, canonical lattice order
+  };
+  std::shared_ptr<const Maps> maps_;
   bool planar_ = true;
   int64_t curved_cells_ = 0;
   std::array<Vec3, 2> bounds_{};

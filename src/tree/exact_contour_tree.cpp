@@ -6,6 +6,7 @@
 #include "poly/gradient_zeros.hpp"
 #include "poly/lattice.hpp"
 #include "tree/contour_tree.hpp"
+#include "tree/surface_graph_geometry.hpp"
 #include "tree/sweep_contour_tree.hpp"
 #include "util/page_pool.hpp"
 #include "util/parallel_for.hpp"
@@ -44,9 +45,6 @@ struct NodeSource {
   NodeLocation location;
   bool fallback; // in or on a degenerate cell's PL fallback
 };
-
-// Interior points of a piece of an edge chain in the geometric graph.
-constexpr int kChainPoints = 3;
 
 // A graph edge with its geometry (interior polyline points).
 struct GeoEdge {
@@ -487,9 +485,10 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
   };
   std::vector<std::pair<double, int64_t>> chain;
   // With geometry, the chain pieces are common_edges[chain_first ..] (the geometric graph's
-  // first edges), their interior points kChainPoints each in chain_points.
+  // first edges), each also as a piece of its edge in the edge's first cell in `pieces` (mapped
+  // to the surface only if an arc is drawn through it).
   std::size_t chain_first = 0;
-  UninitializedVector<Vec3> chain_points;
+  UninitializedVector<EdgePiece> pieces;
   // Without geometry the sweeps walk the edge chains themselves (EdgeChains: no list of their
   // pieces in memory), except on the few edges with fallback lattice nodes, whose chains are
   // listed here and skipped there.
@@ -503,9 +502,9 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
         common_edges.push_back({chain[i].second, chain[i + 1].second});
     }
   } else {
-    // With geometry: every chain piece with kChainPoints interior points, edge by edge, in
-    // fixed blocks of edges on the threads, each written where its pieces go (a block's piece
-    // count is known beforehand: an edge's edge nodes and lattice nodes plus one).
+    // With geometry: every chain piece, edge by edge, in fixed blocks of edges on the threads,
+    // each written where its pieces go (a block's piece count is known beforehand: an edge's
+    // edge nodes and lattice nodes plus one).
     const int64_t blocks = std::max<int64_t>(1, std::min<int64_t>(ne, 256));
     auto lattice_from = [&](int64_t e) { // the first lattice node on edge e or after
       return static_cast<std::size_t>(
@@ -521,16 +520,10 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
           static_cast<std::size_t>(end - begin + en.offset[end] - en.offset[begin]) +
           (lattice_from(end) - lattice_from(begin));
     }
-    const std::size_t pieces = block_first[blocks];
+    const std::size_t piece_count = block_first[blocks];
     chain_first = common_edges.size();
-    common_edges.resize(chain_first + pieces);
-    // Room for the other graph edges' interior points after the pieces': the array becomes the
-    // geometric graph's points without being copied.
-    std::size_t geo_points = 0;
-    for (const auto &e : geo_edges)
-      geo_points += e.inner.size();
-    chain_points.reserve(pieces * kChainPoints + geo_points);
-    chain_points.resize(pieces * kChainPoints);
+    common_edges.resize(chain_first + piece_count);
+    pieces.resize(piece_count);
     parallel_chunks(
         ne, blocks, gather_threads(ne), [&](int64_t b, int64_t begin, int64_t end, int) {
           std::vector<std::pair<double, int64_t>> block_chain;
@@ -544,14 +537,10 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
               ++ek;
             const bool erev = topo.edge_reversed(ec, ek);
             for (std::size_t i = 0; i + 1 < block_chain.size(); ++i, ++at) {
-              for (int j = 1; j <= kChainPoints; ++j) {
-                const double t =
-                    block_chain[i].first +
-                    (block_chain[i + 1].first - block_chain[i].first) * j / (kChainPoints + 1);
-                const Vec2 uv = point_on_edge(ek, erev ? 1 - t : t);
-                chain_points[at * kChainPoints + (j - 1)] =
-                    mesh.geometry.position(ec, uv[0], uv[1]);
-              }
+              const double t0 = block_chain[i].first, t1 = block_chain[i + 1].first;
+              const Vec2 p0 = point_on_edge(ek, erev ? 1 - t0 : t0),
+                         p1 = point_on_edge(ek, erev ? 1 - t1 : t1);
+              pieces[at] = {ec, p0[0], p0[1], p1[0], p1[1]};
               common_edges[chain_first + at] = {block_chain[i].second, block_chain[i + 1].second};
             }
           }
@@ -621,44 +610,44 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
   r.arcs = ct.arcs;
   r.pairs = tree_pairs(ct);
   if (opt.arc_geometry) {
+    // Where each graph node lies (a point of a cell; mapped to the surface when drawn).
     const int64_t graph_nodes = static_cast<int64_t>(values.size());
-    std::vector<Vec3> positions(values.size());
+    UninitializedVector<CellPoint> node_points(values.size());
     parallel_for(graph_nodes, gather_threads(graph_nodes), [&](int64_t begin, int64_t end, int) {
       for (int64_t v = begin; v < end; ++v) {
         const NodeSource where = source_of(v);
-        positions[v] = mesh.geometry.position(where.cell, where.uv[0], where.uv[1]);
+        node_points[v] = {where.cell, where.uv[0], where.uv[1]};
       }
     });
+    const std::size_t piece_count = pieces.size();
     auto graph = std::make_shared<GeometricGraph>(
-        std::move(positions), std::vector<double>(values.begin(), values.end()));
-    // The edge chains' pieces (their points already in chain_points), then the cells'
-    // connections and the fallback cells' sub-edges, their points after those.
-    const std::size_t chain_pieces = chain_points.size() / kChainPoints;
-    const std::size_t edges = chain_pieces + geo_edges.size();
+        std::vector<double>(values.begin(), values.end()),
+        std::make_shared<const SurfaceGraphGeometry>(mesh.geometry, std::move(node_points),
+                                                     std::move(pieces)));
+    // The edge chains' pieces (placed by the graph's geometry), then the cells' connections and
+    // the fallback cells' sub-edges with their interior points.
+    const std::size_t edges = piece_count + geo_edges.size();
     std::vector<std::array<int64_t, 2>> ends(edges);
-    std::vector<int64_t> point_offset(edges + 1);
-    const int64_t pieces = static_cast<int64_t>(chain_pieces);
-    parallel_for(pieces, gather_threads(pieces), [&](int64_t begin, int64_t end, int) {
-      for (int64_t i = begin; i < end; ++i) {
+    std::vector<int64_t> point_offset(edges + 1, 0);
+    const int64_t chain_pieces = static_cast<int64_t>(piece_count);
+    parallel_for(chain_pieces, gather_threads(chain_pieces), [&](int64_t begin, int64_t end, int) {
+      for (int64_t i = begin; i < end; ++i)
         ends[i] = {common_edges[chain_first + i].a, common_edges[chain_first + i].b};
-        point_offset[i] = i * kChainPoints;
-      }
     });
-    std::size_t points = chain_points.size();
+    std::size_t points = 0;
     for (std::size_t j = 0; j < geo_edges.size(); ++j) {
-      ends[chain_pieces + j] = {geo_edges[j].a, geo_edges[j].b};
-      point_offset[chain_pieces + j] = static_cast<int64_t>(points);
+      ends[piece_count + j] = {geo_edges[j].a, geo_edges[j].b};
+      point_offset[piece_count + j] = static_cast<int64_t>(points);
       points += geo_edges[j].inner.size();
     }
     point_offset[edges] = static_cast<int64_t>(points);
-    const std::size_t chain_point_count = chain_points.size();
-    chain_points.resize(points); // within the room reserved above
-    std::size_t at = chain_point_count;
+    UninitializedVector<Vec3> inner(points);
+    std::size_t at = 0;
     for (const auto &e : geo_edges) {
-      std::copy(e.inner.begin(), e.inner.end(), chain_points.begin() + at);
+      std::copy(e.inner.begin(), e.inner.end(), inner.begin() + static_cast<std::ptrdiff_t>(at));
       at += e.inner.size();
     }
-    graph->set_edges(std::move(ends), std::move(point_offset), std::move(chain_points));
+    graph->set_edges(std::move(ends), std::move(point_offset), std::move(inner));
     graph->finish();
     r.graph = std::move(graph);
   }

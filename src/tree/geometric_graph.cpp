@@ -74,9 +74,9 @@ std::vector<Vec3> GeometricGraph::search(int64_t a, int64_t b, double lo, double
   // about half the radius (on a 10^6-cell field, half the nodes of a one-sided search). A
   // node's stamp is the generation of the side that reached it (2g: from a, 2g + 1: from b),
   // `from` the edge it was reached by.
-  if (s.stamp.size() != position_.size() || s.generation >= UINT32_MAX - 2) {
-    s.stamp.assign(position_.size(), 0);
-    s.from.assign(position_.size(), -1);
+  if (s.stamp.size() != value_.size() || s.generation >= UINT32_MAX - 2) {
+    s.stamp.assign(value_.size(), 0);
+    s.from.assign(value_.size(), -1);
     s.generation = 0;
   }
   s.generation += 2;
@@ -118,7 +118,7 @@ std::vector<Vec3> GeometricGraph::search(int64_t a, int64_t b, double lo, double
   }
   std::vector<Vec3> out;
   if (meet_a < 0) {
-    out = {position_[a], position_[b]};
+    out = {position(a), position(b)};
     return out;
   }
   // Edge e's polyline from its end u to its other end (u excluded), appended to out; returns
@@ -126,18 +126,20 @@ std::vector<Vec3> GeometricGraph::search(int64_t a, int64_t b, double lo, double
   auto walk = [&](int64_t e, int64_t u) {
     const auto &ends = ends_[e];
     const bool forward = ends[0] == u; // the points run ends[0] -> ends[1]
-    if (forward)
+    if (geometry_ && e < geometry_->edges())
+      geometry_->edge_points(e, forward, out);
+    else if (forward)
       for (int64_t i = point_offset_[e]; i < point_offset_[e + 1]; ++i)
         out.push_back(points_[i]);
     else
       for (int64_t i = point_offset_[e + 1] - 1; i >= point_offset_[e]; --i)
         out.push_back(points_[i]);
     const int64_t next = forward ? ends[1] : ends[0];
-    out.push_back(position_[next]);
+    out.push_back(position(next));
     return next;
   };
   // From meet_a back to a, reversed; then across the meeting edge and on to b.
-  out.push_back(position_[meet_a]);
+  out.push_back(position(meet_a));
   for (int64_t v = meet_a; v != a;)
     v = walk(from[v], v);
   std::reverse(out.begin(), out.end());
