@@ -18,6 +18,7 @@
 #include <map>
 #include <optional>
 #include <span>
+#include <stdexcept>
 #include <tuple>
 
 namespace hoct {
@@ -485,10 +486,13 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
   };
   std::vector<std::pair<double, int64_t>> chain;
   // With geometry, the chain pieces are common_edges[chain_first ..] (the geometric graph's
-  // first edges), each also as a piece of its edge in the edge's first cell in `pieces` (mapped
-  // to the surface only if an arc is drawn through it).
+  // first edges); those in curved cells also as pieces of their edges in the edges' first cells,
+  // in curved_pieces, by ascending piece number in curved_piece_ids (mapped to the surface only
+  // if an arc is drawn through them).
   std::size_t chain_first = 0;
-  UninitializedVector<EdgePiece> pieces;
+  int64_t chain_pieces = 0;
+  UninitializedVector<int64_t> curved_piece_ids;
+  UninitializedVector<EdgePiece> curved_pieces;
   // Without geometry the sweeps walk the edge chains themselves (EdgeChains: no list of their
   // pieces in memory), except on the few edges with fallback lattice nodes, whose chains are
   // listed here and skipped there.
@@ -504,7 +508,8 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
   } else {
     // With geometry: every chain piece, edge by edge, in fixed blocks of edges on the threads,
     // each written where its pieces go (a block's piece count is known beforehand: an edge's
-    // edge nodes and lattice nodes plus one).
+    // edge nodes and lattice nodes plus one). Only the pieces of curved cells are kept as
+    // such: a piece of a straight-sided cell is drawn as the segment between its ends.
     const int64_t blocks = std::max<int64_t>(1, std::min<int64_t>(ne, 256));
     auto lattice_from = [&](int64_t e) { // the first lattice node on edge e or after
       return static_cast<std::size_t>(
@@ -512,7 +517,9 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
                            [](const auto &x, int64_t edge) { return std::get<0>(x) < edge; }) -
           lattice_on_edge.begin());
     };
-    std::vector<std::size_t> block_first(static_cast<std::size_t>(blocks) + 1, 0);
+    auto first_cell = [&](int64_t e) { return topo.edge_cells_begin(e)[0]; };
+    std::vector<std::size_t> block_first(static_cast<std::size_t>(blocks) + 1, 0),
+        block_curved(static_cast<std::size_t>(blocks) + 1, 0);
     for (int64_t b = 0; b < blocks; ++b) {
       const int64_t begin = ne * b / blocks, end = ne * (b + 1) / blocks;
       block_first[b + 1] =
@@ -520,30 +527,53 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
           static_cast<std::size_t>(end - begin + en.offset[end] - en.offset[begin]) +
           (lattice_from(end) - lattice_from(begin));
     }
+    if (mesh.geometry.curved_cells() > 0)
+      parallel_chunks(
+          ne, blocks, gather_threads(ne), [&](int64_t b, int64_t begin, int64_t end, int) {
+            std::size_t curved = 0, l = lattice_from(begin);
+            for (int64_t e = begin; e < end; ++e) {
+              std::size_t n = 1 + static_cast<std::size_t>(en.count(e));
+              for (; l < lattice_on_edge.size() && std::get<0>(lattice_on_edge[l]) == e; ++l)
+                ++n;
+              if (!mesh.geometry.is_linear(first_cell(e)))
+                curved += n;
+            }
+            block_curved[b + 1] = curved;
+          });
+    for (int64_t b = 0; b < blocks; ++b)
+      block_curved[b + 1] += block_curved[b];
     const std::size_t piece_count = block_first[blocks];
     chain_first = common_edges.size();
     common_edges.resize(chain_first + piece_count);
-    pieces.resize(piece_count);
+    chain_pieces = static_cast<int64_t>(piece_count);
+    curved_piece_ids.resize(block_curved[blocks]);
+    curved_pieces.resize(block_curved[blocks]);
     parallel_chunks(
         ne, blocks, gather_threads(ne), [&](int64_t b, int64_t begin, int64_t end, int) {
           std::vector<std::pair<double, int64_t>> block_chain;
-          std::size_t at = block_first[b], l = lattice_from(begin);
+          std::size_t at = block_first[b], curved = block_curved[b], l = lattice_from(begin);
           for (int64_t e = begin; e < end; ++e) {
             chain_of(e, l, block_chain);
             // Positions along the edge through its first cell.
-            const int64_t ec = topo.edge_cells_begin(e)[0];
+            const int64_t ec = first_cell(e);
+            const bool straight = mesh.geometry.is_linear(ec);
             int ek = 0;
             while (topo.cell_edge(ec, ek) != e)
               ++ek;
             const bool erev = topo.edge_reversed(ec, ek);
             for (std::size_t i = 0; i + 1 < block_chain.size(); ++i, ++at) {
+              common_edges[chain_first + at] = {block_chain[i].second, block_chain[i + 1].second};
+              if (straight)
+                continue;
               const double t0 = block_chain[i].first, t1 = block_chain[i + 1].first;
               const Vec2 p0 = point_on_edge(ek, erev ? 1 - t0 : t0),
                          p1 = point_on_edge(ek, erev ? 1 - t1 : t1);
-              pieces[at] = {ec, p0[0], p0[1], p1[0], p1[1]};
-              common_edges[chain_first + at] = {block_chain[i].second, block_chain[i + 1].second};
+              curved_piece_ids[curved] = static_cast<int64_t>(at);
+              curved_pieces[curved++] = {ec, p0[0], p0[1], p1[0], p1[1]};
             }
           }
+          if (at != block_first[b + 1] || curved != block_curved[b + 1])
+            throw std::logic_error("exact_contour_tree: edge chain pieces miscounted");
         });
   }
   std::sort(fallback_marked.begin(), fallback_marked.end());
@@ -619,17 +649,17 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
         node_points[v] = {where.cell, where.uv[0], where.uv[1]};
       }
     });
-    const std::size_t piece_count = pieces.size();
+    const std::size_t piece_count = static_cast<std::size_t>(chain_pieces);
     auto graph = std::make_shared<GeometricGraph>(
         std::vector<double>(values.begin(), values.end()),
         std::make_shared<const SurfaceGraphGeometry>(mesh.geometry, std::move(node_points),
-                                                     std::move(pieces)));
+                                                     chain_pieces, std::move(curved_piece_ids),
+                                                     std::move(curved_pieces)));
     // The edge chains' pieces (placed by the graph's geometry), then the cells' connections and
     // the fallback cells' sub-edges with their interior points.
     const std::size_t edges = piece_count + geo_edges.size();
     std::vector<std::array<int64_t, 2>> ends(edges);
-    std::vector<int64_t> point_offset(edges + 1, 0);
-    const int64_t chain_pieces = static_cast<int64_t>(piece_count);
+    std::vector<int64_t> point_offset(geo_edges.size() + 1, 0);
     parallel_for(chain_pieces, gather_threads(chain_pieces), [&](int64_t begin, int64_t end, int) {
       for (int64_t i = begin; i < end; ++i)
         ends[i] = {common_edges[chain_first + i].a, common_edges[chain_first + i].b};
@@ -637,10 +667,10 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
     std::size_t points = 0;
     for (std::size_t j = 0; j < geo_edges.size(); ++j) {
       ends[piece_count + j] = {geo_edges[j].a, geo_edges[j].b};
-      point_offset[piece_count + j] = static_cast<int64_t>(points);
+      point_offset[j] = static_cast<int64_t>(points);
       points += geo_edges[j].inner.size();
     }
-    point_offset[edges] = static_cast<int64_t>(points);
+    point_offset[geo_edges.size()] = static_cast<int64_t>(points);
     UninitializedVector<Vec3> inner(points);
     std::size_t at = 0;
     for (const auto &e : geo_edges) {

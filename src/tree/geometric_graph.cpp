@@ -126,13 +126,14 @@ std::vector<Vec3> GeometricGraph::search(int64_t a, int64_t b, double lo, double
   auto walk = [&](int64_t e, int64_t u) {
     const auto &ends = ends_[e];
     const bool forward = ends[0] == u; // the points run ends[0] -> ends[1]
-    if (geometry_ && e < geometry_->edges())
+    const int64_t placed = geometry_ ? geometry_->edges() : 0;
+    if (e < placed)
       geometry_->edge_points(e, forward, out);
     else if (forward)
-      for (int64_t i = point_offset_[e]; i < point_offset_[e + 1]; ++i)
+      for (int64_t i = point_offset_[e - placed]; i < point_offset_[e - placed + 1]; ++i)
         out.push_back(points_[i]);
     else
-      for (int64_t i = point_offset_[e + 1] - 1; i >= point_offset_[e]; --i)
+      for (int64_t i = point_offset_[e - placed + 1] - 1; i >= point_offset_[e - placed]; --i)
         out.push_back(points_[i]);
     const int64_t next = forward ? ends[1] : ends[0];
     out.push_back(position(next));

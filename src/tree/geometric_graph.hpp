@@ -47,7 +47,9 @@ public:
   void add_edge(int64_t a, int64_t b, const Vec3 *interior, std::size_t count);
   // All edges at once, instead of add_edge: edge i from ends[i][0] to ends[i][1], its interior
   // points points[point_offset[i] .. point_offset[i + 1]) (point_offset: one entry more than
-  // ends, from 0). Taken over, not copied.
+  // ends, from 0). Taken over, not copied. With a GraphGeometry, the first g = edges() of them
+  // have their points there, and point_offset covers the others: edge i >= g has
+  // points[point_offset[i - g] .. point_offset[i - g + 1]).
   void set_edges(std::vector<std::array<int64_t, 2>> ends, std::vector<int64_t> point_offset,
                  UninitializedVector<Vec3> points);
   // Builds the adjacency (edges from a node to itself left out); call once after the last

@@ -30,19 +30,25 @@ public:
   // piece is a straight segment between its ends and has none.
   static constexpr int kPiecePoints = 3;
 
-  // `geometry` is shared, not copied (Geometry's maps are).
-  SurfaceGraphGeometry(Geometry geometry, UninitializedVector<CellPoint> nodes,
-                       UninitializedVector<EdgePiece> pieces)
-      : geometry_(std::move(geometry)), nodes_(std::move(nodes)), pieces_(std::move(pieces)) {}
+  // Graph node v lies at nodes[v]; graph edges [0, edges) are pieces of mesh edges, of which
+  // edges curved_ids[i] (ascending) lie in curved cells, along curved[i]; the others in
+  // straight-sided cells. `geometry` is shared, not copied (Geometry's maps are).
+  SurfaceGraphGeometry(Geometry geometry, UninitializedVector<CellPoint> nodes, int64_t edges,
+                       UninitializedVector<int64_t> curved_ids,
+                       UninitializedVector<EdgePiece> curved)
+      : geometry_(std::move(geometry)), nodes_(std::move(nodes)), edges_(edges),
+        curved_ids_(std::move(curved_ids)), curved_(std::move(curved)) {}
 
   Vec3 node(int64_t v) const override;
-  int64_t edges() const override { return static_cast<int64_t>(pieces_.size()); }
+  int64_t edges() const override { return edges_; }
   void edge_points(int64_t e, bool forward, std::vector<Vec3> &out) const override;
 
 private:
   Geometry geometry_;
   UninitializedVector<CellPoint> nodes_;
-  UninitializedVector<EdgePiece> pieces_;
+  int64_t edges_;
+  UninitializedVector<int64_t> curved_ids_;
+  UninitializedVector<EdgePiece> curved_;
 };
 
 } // namespace hoct
