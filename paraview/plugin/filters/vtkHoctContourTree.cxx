@@ -6,6 +6,7 @@
 #include "mesh/domain_check.hpp"
 #include "mesh/mesh.hpp"
 #include "tree/exact_contour_tree.hpp"
+#include "util/parallel_for.hpp"
 
 #include <vtkDataArray.h>
 #include <vtkDataObject.h>
@@ -66,21 +67,23 @@ int vtkHoctContourTree::RequestData(vtkInformation *, vtkInformationVector **inp
     hoct::MeshInput mesh_input =
         hoct::paraview::mesh_input_from_grid(input, this->GetInputArrayToProcess(0, inputVector));
     this->UpdateProgress(0.1);
-    const hoct::Mesh mesh = hoct::build_mesh(std::move(mesh_input), {.throw_on_error = true});
+    const int threads = hoct::thread_count(this->Threads);
+    const hoct::Mesh mesh =
+        hoct::build_mesh(std::move(mesh_input), {.throw_on_error = true, .threads = threads});
     const std::string problem = hoct::domain_problem(mesh.topology);
     if (!problem.empty()) {
       throw hoct::Error("the input grid: " + problem);
     }
     hoct::ExactTreeOptions options;
     options.augmented = this->Augmented;
-    options.threads = this->Threads;
+    options.threads = threads;
     options.arc_geometry = true;
     hoct::TreeResult tree = hoct::exact_contour_tree(mesh, options);
     this->UpdateProgress(0.7);
     if (!this->Augmented) {
       tree = hoct::contract_flat(tree); // one node per flat region, as the CLI
     }
-    hoct::compute_arc_paths(tree);
+    hoct::compute_arc_paths(tree, threads);
     const hoct::TreePolyData layout = hoct::tree_polydata(tree);
     hoct::paraview::critical_points_polydata(layout, points);
     hoct::paraview::arcs_polydata(layout, /*with_nodes=*/false, arcs);
@@ -96,7 +99,7 @@ int vtkHoctContourTree::RequestData(vtkInformation *, vtkInformationVector **inp
                                      ? this->PersistenceThreshold / 100 * range
                                      : this->PersistenceThreshold;
         hoct::TreeResult simple = hoct::simplify_tree(tree, threshold);
-        hoct::compute_arc_paths(simple);
+        hoct::compute_arc_paths(simple, threads);
         hoct::paraview::arcs_polydata(hoct::tree_polydata(simple), /*with_nodes=*/true, simplified);
         add_stats(simple, simplified);
       }

@@ -30,7 +30,8 @@ public:
   vtkGetMacro(Augmented, bool);
   vtkBooleanMacro(Augmented, bool);
 
-  // Threads for the cell phase (0: all cores). The result does not depend on it.
+  // Threads for the mesh build, the tree and the arcs (0: all cores). The result does not
+  // depend on it.
   vtkSetClampMacro(Threads, int, 0, 1024);
   vtkGetMacro(Threads, int);
 
