@@ -395,6 +395,19 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
     for (int b = 0; b < 7; ++b)
       if (fallback[c] & (1u << b))
         ++reason_count[b];
+    // A constant cell is one flat region (DESIGN.md section 7): its boundary, the chains of its
+    // three edges (its corners, and the lattice nodes its non-constant neighbours put there), all
+    // of its value, already connects it; sub-vertices inside it would only add nodes of that
+    // value (on a field clamped over a third of 10^6 cubic cells, 5.2 million of them).
+    if (fallback[c] & kConstantCell) {
+      for (int k = 0; k < 3; ++k) {
+        fallback_marked.push_back(topo.cell_vertices(c)[k]);
+        const int64_t e = topo.cell_edge(c, k);
+        for (int64_t i = 0; i < en.count(e); ++i)
+          fallback_marked.push_back(edge_base + en.offset[e] + i);
+      }
+      continue;
+    }
     const BernsteinTriangle g = field.cell_polynomial(c);
     // Edge nodes of each local edge (local parameters, ascending), minus lattice coincidences.
     std::array<std::vector<int64_t>, 3> extra_ids;

@@ -3,8 +3,11 @@
 // invariant checker (tree/tree_check.hpp) or a clear hoct::Error.
 #include "error.hpp"
 #include "mesh/mesh.hpp"
+#include "pl/pl_contour_tree.hpp"
+#include "pl/refinement.hpp"
 #include "test_meshes.hpp"
 #include "tree/exact_contour_tree.hpp"
+#include "tree/persistence.hpp"
 #include "tree/tree_check.hpp"
 
 #include <gtest/gtest.h>
@@ -71,6 +74,51 @@ TEST(DegenerateFields, PlateauIsOneNode) {
       EXPECT_GT(n.merged, 1);
     }
   EXPECT_EQ(maxima, 1);
+}
+
+TEST(DegenerateFields, ConstantCellsAreFlatRegionsWithoutSubVertices) {
+  // Zero left of the grid line x = x0 (a plateau of constant cubic cells), a cubic that vanishes
+  // on that line to its right (positive next to it: the plateau is the minimum). Constant cells
+  // add no sub-vertices to the graph (their edges' chains already bound them), while the cells
+  // along the plateau's edge, whose edge there is constant, still fall back to the K x K
+  // refinement (K = 6 for cubic cells). The plateau is one minimum, as in the PL tree of a
+  // fine refinement, and the two trees' diagrams agree.
+  const int n = 14;
+  const double x0 = -1 + 2.0 * 5 / n;
+  const Mesh m = build_mesh(grid_input(n, 3, [&](const Vec3 &p) {
+    const double d = p[0] - x0;
+    if (d <= 1e-12)
+      return 0.0;
+    return d * (2 + 0.8 * p[1] - p[1] * p[1]) - d * d * (2.5 + 1.5 * p[1]);
+  }));
+  const TreeResult raw = exact_contour_tree(m);
+  auto stat = [&](const char *name) {
+    for (const auto &[k, v] : raw.stats)
+      if (k == name)
+        return static_cast<int64_t>(v);
+    return int64_t{-1};
+  };
+  const int64_t constant = stat("fallback_constant_cell"), fallback = stat("fallback_cells");
+  ASSERT_EQ(constant, 2 * 5 * n); // the cells left of x0
+  ASSERT_GT(fallback, constant);
+  const int64_t refined_nodes = (fallback - constant) * 28; // (K + 1)(K + 2) / 2, K = 6
+  EXPECT_LE(stat("graph_nodes"), m.topology.num_vertices() + stat("edge_critical_points") +
+                                     stat("interior_critical_points") + refined_nodes);
+  const TreeResult t = checked_tree(m);
+  const TreeResult pl = contract_flat(pl_contour_tree(refine(m, 8), false, ""));
+  auto plateau_minima = [](const TreeResult &tree) {
+    int64_t count = 0;
+    for (const auto &node : tree.nodes)
+      count += node.type == NodeType::Minimum && node.value == 0.0;
+    return count;
+  };
+  EXPECT_EQ(plateau_minima(t), 1);
+  EXPECT_EQ(plateau_minima(pl), 1);
+  const double range = m.field.max_value() - m.field.min_value();
+  for (auto kind :
+       {PersistencePair::Kind::Join, PersistencePair::Kind::Split, PersistencePair::Kind::Global})
+    EXPECT_LT(bottleneck_distance(pair_points(t.pairs, kind), pair_points(pl.pairs, kind)),
+              0.01 * range);
 }
 
 TEST(DegenerateFields, SaddleOnAVertex) {
