@@ -327,7 +327,14 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
   std::vector<NodeSource> tail_source;
   tail_source.reserve(static_cast<std::size_t>(next - tail_base) + fallback_room);
   tail_source.resize(static_cast<std::size_t>(next - tail_base));
-  std::vector<int64_t> fallback_marked; // vertices and edge nodes of fallback cells
+  // Vertices and edge nodes of fallback cells: a flag per node id below tail_base (sized at the
+  // first fallback cell; a sorted list of the 10^6 marks of a large plateau took 43 ms to sort).
+  std::vector<uint8_t> fallback_marked;
+  auto mark_fallback = [&](int64_t id) {
+    if (fallback_marked.empty())
+      fallback_marked.assign(static_cast<std::size_t>(tail_base), 0);
+    fallback_marked[static_cast<std::size_t>(id)] = 1;
+  };
   // Values of vertices and edge nodes.
   // Threads for the gathering loops: only where each gets enough items to pay for its start.
   // (32,768 items each by default; fewer with the option, as tests use it.)
@@ -401,10 +408,10 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
     // value (on a field clamped over a third of 10^6 cubic cells, 5.2 million of them).
     if (fallback[c] & kConstantCell) {
       for (int k = 0; k < 3; ++k) {
-        fallback_marked.push_back(topo.cell_vertices(c)[k]);
+        mark_fallback(topo.cell_vertices(c)[k]);
         const int64_t e = topo.cell_edge(c, k);
         for (int64_t i = 0; i < en.count(e); ++i)
-          fallback_marked.push_back(edge_base + en.offset[e] + i);
+          mark_fallback(edge_base + en.offset[e] + i);
       }
       continue;
     }
@@ -464,7 +471,7 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
       if (id >= tail_base)
         tail_source[id - tail_base].fallback = true;
       else
-        fallback_marked.push_back(id);
+        mark_fallback(id);
     for (const auto &t : cr.triangles)
       for (int j = 0; j < 3; ++j) {
         common_edges.push_back({ids[t[j]], ids[t[(j + 1) % 3]]});
@@ -589,11 +596,10 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
             throw std::logic_error("exact_contour_tree: edge chain pieces miscounted");
         });
   }
-  std::sort(fallback_marked.begin(), fallback_marked.end());
   auto source_of = [&](int64_t id) -> NodeSource {
     if (id >= tail_base)
       return tail_source[id - tail_base];
-    const bool marked = std::binary_search(fallback_marked.begin(), fallback_marked.end(), id);
+    const bool marked = !fallback_marked.empty() && fallback_marked[static_cast<std::size_t>(id)];
     if (id < nv)
       return {topo.vertex_cell(id), point_on_edge(topo.vertex_corner(id), 0.0),
               NodeLocation::Vertex, marked};
