@@ -31,7 +31,7 @@ namespace {
 struct Settings {
   int runs = 5;
   bool quick = false;
-  std::vector<std::string> sections = {"datasets", "scaling", "density", "memory", "pl"};
+  std::vector<std::string> sections = {"datasets", "scaling", "density", "plateau", "memory", "pl"};
   std::vector<int> degrees = {2, 3, 5};
   std::vector<double> sizes = {1e4, 1e5, 1e6, 4e6};
   std::vector<int> threads = {1, 2};
@@ -153,11 +153,13 @@ void datasets_section(const Settings &s) {
 
 // The `random` dataset of about `size` cells of `degree` (wave numbers times `frequency`) written
 // to `vtu`; returns its cells.
-long long write_random(const std::string &vtu, double size, int degree, double frequency = 1) {
+long long write_random(const std::string &vtu, double size, int degree, double frequency = 1,
+                       double plateau = 0) {
   DatasetOptions o;
   o.cells = static_cast<long long>(size);
   o.degree = degree;
   o.frequency = frequency;
+  o.plateau = plateau;
   const MeshInput in = generate_dataset("random", o);
   write_vtu(vtu, in);
   return static_cast<long long>(in.num_cells());
@@ -213,6 +215,37 @@ void scaling_section(const Settings &s, bool constant_density) {
           cells / m1.total, m2.tree, tr.cell_speedup, m2.mesh, m2.total);
       std::fflush(stdout);
     }
+  std::printf("\n");
+}
+
+// Degenerate data at scale: the cubic `random` field with a plateau over 30% of its values
+// (`--plateau 30`: about a third of the cells constant, the cells around them falling back to
+// the K x K refinement), against the same field without it.
+void plateau_section(const Settings &s) {
+  const int runs = s.quick ? s.runs : std::min(std::max(s.runs, 3), 5);
+  std::printf("## Plateaus: `random --degree 3 --plateau 30` (values below their 30th percentile "
+              "raised to it) against the same field without the plateau: `hoct tree FILE.vtu "
+              "--json J` (seconds, medians of %d runs, 1- and 2-thread runs interleaved)\n\n",
+              runs);
+  std::printf("| cells | constant cells | fallback cells | graph nodes | tree nodes | read | mesh "
+              "| exact tree | write | total | exact tree without the plateau | with / without | "
+              "exact tree, 2 threads | total, 2 threads |\n"
+              "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+  for (double size : s.sizes) {
+    ScratchDir scratch;
+    const std::string flat = scratch.file("plateau.vtu"), plain = scratch.file("plain.vtu");
+    write_random(flat, size, 3, 1.0, 30);
+    write_random(plain, size, 3);
+    const ThreadRuns tr = interleaved_runs(flat, s.threads, false, runs, scratch);
+    const ThreadRuns tp = interleaved_runs(plain, {1}, false, runs, scratch);
+    const PipelineResult &m1 = tr.median.front(), &m2 = tr.median.back(), &p1 = tp.median.front();
+    std::printf("| %lld | %.0f | %.0f | %lld | %zu | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f | "
+                "%.2fx | %.3f | %.3f |\n",
+                static_cast<long long>(m1.cells), m1.constant_cells, m1.fallback_cells,
+                static_cast<long long>(m1.graph_nodes), m1.nodes, m1.read, m1.mesh, m1.tree,
+                m1.write, m1.total, p1.tree, m1.tree / p1.tree, m2.tree, m2.total);
+    std::fflush(stdout);
+  }
   std::printf("\n");
 }
 
@@ -345,7 +378,7 @@ int main(int argc, char **argv) {
       ->check(CLI::Range(1, 1000));
   app.add_flag("--quick", s.quick, "A smoke run: small sizes, few runs");
   app.add_option("--sections", s.sections,
-                 "Sections to run: datasets, scaling, density, memory, pl")
+                 "Sections to run: datasets, scaling, density, plateau, memory, pl")
       ->delimiter(',');
   app.add_option("--degrees", s.degrees, "Degrees of the scaling, density and memory sections")
       ->delimiter(',');
@@ -366,6 +399,8 @@ int main(int argc, char **argv) {
     scaling_section(s, false);
   if (wants(s, "density"))
     scaling_section(s, true);
+  if (wants(s, "plateau"))
+    plateau_section(s);
   if (wants(s, "memory"))
     memory_section(s);
   if (wants(s, "pl"))

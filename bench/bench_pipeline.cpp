@@ -47,6 +47,7 @@ PipelineResult run_pipeline(const std::string &vtu, int threads, bool with_vtp,
   r.merge = stat(tree, "time_merge_s") + stat(tree, "time_output_s");
   r.graph_nodes = static_cast<int64_t>(stat(tree, "graph_nodes"));
   r.fallback_cells = stat(tree, "fallback_cells");
+  r.constant_cells = stat(tree, "fallback_constant_cell");
   r.cells = mesh.topology.num_cells();
   t = clock_type::now();
   tree = contract_flat(tree);

@@ -24,7 +24,7 @@ struct PipelineResult {
   double total = 0; // read .. write
   int64_t cells = 0, graph_nodes = 0;
   std::size_t nodes = 0; // tree nodes after the flat-region contraction
-  double fallback_cells = 0;
+  double fallback_cells = 0, constant_cells = 0;
 
   double cell_phase() const { return edges + cell_work + assembly; }
   double mesh_checks() const { return mesh - bernstein; } // topology, checks, geometry

@@ -291,12 +291,14 @@ PYBIND11_MODULE(_hoct, m) {
   m.def("contour_tree", &compute_tree, py::call_guard<py::gil_scoped_release>());
   m.def(
       "generate",
-      [](const std::string &name, int degree, long long cells, uint64_t seed, double frequency) {
+      [](const std::string &name, int degree, long long cells, uint64_t seed, double frequency,
+         double plateau) {
         DatasetOptions o;
         o.degree = degree;
         o.cells = cells;
         o.seed = seed;
         o.frequency = frequency;
+        o.plateau = plateau;
         return make_mesh(generate_dataset(name, o));
       },
       py::call_guard<py::gil_scoped_release>());

@@ -21,6 +21,7 @@ struct GenerateOptions {
   double cells = 0; // a double, so that 1e6 is accepted
   uint64_t seed = 1;
   double frequency = 1;
+  double plateau = 0;
   bool list = false;
 };
 
@@ -66,6 +67,7 @@ void run_generate(const GenerateOptions &o) {
   options.cells = static_cast<long long>(o.cells);
   options.seed = o.seed;
   options.frequency = o.frequency;
+  options.plateau = o.plateau;
   const MeshInput mesh = generate_dataset(o.name, options);
   const auto t1 = std::chrono::steady_clock::now();
   write_vtu(o.output, mesh, encoding);
@@ -98,6 +100,9 @@ void register_generate(CLI::App &app) {
   sub->add_option("--frequency", o->frequency,
                   "random only: multiply the wave numbers (default 1; F^2 times the features; "
                   "scale it with sqrt(cells) to keep the features per cell)");
+  sub->add_option("--plateau", o->plateau,
+                  "random only: raise the node values below their P-th percentile to it, a "
+                  "plateau of constant cells over about P% of the square (default 0)");
   sub->add_option("--encoding", o->encoding,
                   "VTU encoding: ascii, base64, zlib, appended (default), appended-base64")
       ->check(CLI::IsMember({"ascii", "base64", "zlib", "appended", "appended-base64"}));

@@ -30,11 +30,16 @@ long long dataset_cells(const DatasetOptions &o, long long default_cells, long l
 }
 
 std::string dataset_source(const std::string &name, const DatasetOptions &o, int degree) {
-  std::string s = "generated:" + name + " seed=" + std::to_string(o.seed) +
-                  " degree=" + std::to_string(degree);
+  std::string s =
+      "generated:" + name + " seed=" + std::to_string(o.seed) + " degree=" + std::to_string(degree);
   if (o.frequency != 1) {
     char f[32];
     std::snprintf(f, sizeof f, " frequency=%g", o.frequency);
+    s += f;
+  }
+  if (o.plateau != 0) {
+    char f[32];
+    std::snprintf(f, sizeof f, " plateau=%g", o.plateau);
     s += f;
   }
   return s;

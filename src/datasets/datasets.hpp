@@ -17,6 +17,10 @@ struct DatasetOptions {
   // `random` only: its wave numbers times this (features per unit area grow with its square);
   // with the square root of the cell count's growth, every size has the same features per cell.
   double frequency = 1;
+  // `random` only: the node values below their P-th percentile raised to it (0 <= P < 100): a
+  // plateau over about P% of the square, of constant cells where all of a cell's nodes are
+  // raised, as in clamped FEM fields (a concentration cut at zero, a saturated phase field).
+  double plateau = 0;
 };
 
 // Names accepted by generate_dataset, in a stable order.

@@ -2,7 +2,8 @@
 // size (20,000 cubic cells by default; millions in seconds, memory linear in the size):
 //   f(x, y) = sum over 16 modes of a_m cos(k_m . (x, y) + phi_m),
 // wave numbers |k_m| in [6, 30] in random directions, amplitudes a_m in [0.3, 1] / sqrt(|k_m|);
-// --frequency F multiplies the wave numbers by F (F^2 times the features on the same square).
+// --frequency F multiplies the wave numbers by F (F^2 times the features on the same square);
+// --plateau P raises the node values below their P-th percentile to it (a plateau).
 #include "datasets/dataset_options.hpp"
 #include "datasets/lagrange_mesh_builder.hpp"
 #include "datasets/planar_triangulation.hpp"
@@ -14,6 +15,7 @@
 #include <cmath>
 #include <cstdio>
 #include <numbers>
+#include <vector>
 
 namespace hoct {
 
@@ -26,6 +28,11 @@ MeshInput generate_random(const DatasetOptions &o) {
     char got[32];
     std::snprintf(got, sizeof got, "%g", frequency);
     throw Error(std::string("random: --frequency must be in (0, 1000], got ") + got);
+  }
+  if (!(o.plateau >= 0 && o.plateau < 100)) {
+    char got[32];
+    std::snprintf(got, sizeof got, "%g", o.plateau);
+    throw Error(std::string("random: --plateau must be a percentage in [0, 100), got ") + got);
   }
   SeededRandom rng(o.seed, 60);
   struct Mode {
@@ -49,6 +56,16 @@ MeshInput generate_random(const DatasetOptions &o) {
           f += md.amplitude * std::cos(md.kx * p[0] + md.ky * p[1] + md.phase);
         return f;
       });
+  if (o.plateau > 0 && !m.values.empty()) {
+    // The P-th percentile of the node values (the k-th smallest, k = floor(P n / 100)).
+    std::vector<double> sorted(m.values.begin(), m.values.end());
+    const std::size_t k =
+        std::min(sorted.size() - 1, static_cast<std::size_t>(o.plateau / 100 * sorted.size()));
+    std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(k), sorted.end());
+    const double level = sorted[k];
+    for (double &v : m.values)
+      v = std::max(v, level);
+  }
   m.field_name = "f";
   m.source = dataset_source("random", o, d);
   return m;

@@ -99,6 +99,8 @@ def test_numpy_and_meshio_input(tmp):
     (lambda: hoct.generate("nope"), "unknown dataset"),
     (lambda: hoct.generate("random", cells=200, frequency=0), "frequency must be"),
     (lambda: hoct.generate("gauss", frequency=2), "random dataset only"),
+    (lambda: hoct.generate("random", cells=200, plateau=100), "plateau must be"),
+    (lambda: hoct.generate("gauss", plateau=10), "random dataset only"),
     (lambda: hoct.contour_tree(hoct.generate("gauss"), method="magic"), "method must be"),
 ])
 def test_errors_are_value_errors_with_the_library_message(call, phrase):

@@ -613,6 +613,47 @@ TEST(Datasets, RandomFrequencyScalesTheFeatures) {
   EXPECT_THROW(generate_dataset("gauss", o), Error);
 }
 
+// --plateau P raises the random field's values below their P-th percentile to it: the other
+// values are untouched, about P% of them sit on the plateau, cells with every node on it are
+// constant (the exact tree's constant-cell fallback), and the plateau is the tree's lowest value.
+TEST(Datasets, RandomPlateauRaisesTheLowestValues) {
+  DatasetOptions o;
+  o.cells = 5000;
+  const MeshInput base = generate_dataset("random", o);
+  o.plateau = 30;
+  const MeshInput flat = generate_dataset("random", o);
+  EXPECT_NE(flat.source.find("plateau=30"), std::string::npos) << flat.source;
+  ASSERT_EQ(flat.values.size(), base.values.size());
+  const double level = *std::min_element(flat.values.begin(), flat.values.end());
+  std::size_t on = 0, below = 0;
+  for (std::size_t i = 0; i < base.values.size(); ++i) {
+    below += base.values[i] < level;
+    if (base.values[i] >= level)
+      EXPECT_EQ(flat.values[i], base.values[i]) << i;
+    else
+      EXPECT_EQ(flat.values[i], level) << i;
+    on += flat.values[i] == level;
+  }
+  const double n = static_cast<double>(base.values.size());
+  EXPECT_NEAR(static_cast<double>(below) / n, 0.30, 0.001);
+  EXPECT_GE(on, below);
+  const Mesh mesh = build_mesh(flat);
+  const TreeResult tree = exact_contour_tree(mesh);
+  double constant = 0;
+  for (const auto &[k, v] : tree.stats)
+    if (k == "fallback_constant_cell")
+      constant = v;
+  EXPECT_GT(constant, 0.1 * static_cast<double>(mesh.topology.num_cells()));
+  EXPECT_LE(tree.nodes.front().value, level); // interpolation may dip below the plateau
+  for (double bad : {-1.0, 100.0, std::nan("")}) {
+    o.plateau = bad;
+    EXPECT_THROW(generate_dataset("random", o), Error) << bad;
+  }
+  o.plateau = 10;
+  o.cells = 0;
+  EXPECT_THROW(generate_dataset("gauss", o), Error);
+}
+
 TEST(Datasets, GaussDiskBoundaryStaysOnTheCircle) {
   const MeshInput m = make("gauss");
   std::map<std::pair<int64_t, int64_t>, int> count;
