@@ -225,7 +225,13 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
         // Most cells: no gradient zero, decided on the stored coefficients.
         const GradientScreen screen = screen_gradient(field.coefficients(c), field.degree(c),
                                                       zero_options.constant_tolerance);
-        if (screen.verdict != GradientScreen::kNoZero) {
+        if (screen.verdict == GradientScreen::kConstant) {
+          why |= kConstantCell;
+        } else if (screen.verdict != GradientScreen::kNoZero && !(why & kDegenerateEdge)) {
+          // (A cell with a degenerate edge falls back whatever its interior holds, and the
+          // refinement does not use interior critical points: its zeros are not searched. Next
+          // to a plateau such cells are nearly flat, and their searches took half of the tree
+          // of 10^4 cells clamped over 30% of the values.)
           scratch.poly.assign(field.degree(c), field.coefficients(c));
           const BernsteinTriangle &g = scratch.poly;
           cell = c;
