@@ -15,56 +15,122 @@ namespace {
 
 using json = nlohmann::ordered_json;
 
-json to_json(const TreeResult &t) {
-  json j;
-  j["format"] = "hoct-contour-tree";
-  j["version"] = 1;
-  j["method"] = t.method;
-  j["augmented"] = t.augmented;
-  if (!t.forced.empty()) {
-    j["forced"] = true;
-    j["forced_reasons"] = t.forced;
+// The document, written as it is built: the header's fields and "stats" as nlohmann's
+// indented dump, and each element of the four arrays (a node, an arc, a pair, a branch) compact
+// on a line of its own, which reads and greps well. Against the whole document dumped with one
+// value per line: 4,661 nodes in 1.48 MB and 10 ms instead of 2.02 MB and 24-26 ms.
+class TreeJsonWriter {
+public:
+  void field(const std::string &key, const json &value) {
+    open_field(key);
+    out_ += value.dump(1);
+    indent_nested();
   }
-  json nodes = json::array();
+  // An array whose element i is element(i), one per line.
+  template <class Element> void array(const std::string &key, std::size_t n, Element element) {
+    open_field(key);
+    if (n == 0) {
+      out_ += "[]";
+      return;
+    }
+    out_ += "[\n";
+    for (std::size_t i = 0; i < n; ++i) {
+      out_ += "  ";
+      out_ += element(i).dump();
+      out_ += i + 1 < n ? ",\n" : "\n";
+    }
+    out_ += " ]";
+  }
+  std::string finish() {
+    out_ += "\n}";
+    return std::move(out_);
+  }
+
+private:
+  void open_field(const std::string &key) {
+    out_ += out_.empty() ? "{\n " : ",\n ";
+    out_ += json(key).dump();
+    out_ += ": ";
+    field_start_ = out_.size();
+  }
+  // A nested value's own lines one level deeper (nlohmann indents from column 0).
+  void indent_nested() {
+    std::string shifted;
+    for (std::size_t i = field_start_; i < out_.size(); ++i) {
+      shifted += out_[i];
+      if (out_[i] == '\n')
+        shifted += ' ';
+    }
+    out_.replace(field_start_, std::string::npos, shifted);
+  }
+
+  std::string out_;
+  std::size_t field_start_ = 0;
+};
+
+std::string to_json_text(const TreeResult &t) {
+  TreeJsonWriter w;
+  w.field("format", "hoct-contour-tree");
+  w.field("version", 1);
+  w.field("method", t.method);
+  w.field("augmented", t.augmented);
+  if (!t.forced.empty()) {
+    w.field("forced", true);
+    w.field("forced_reasons", t.forced);
+  }
+  // One object per kind of element, its fields overwritten for each (building each element
+  // anew allocated its keys and arrays every time).
   std::map<std::string, int64_t> by_type, by_location;
-  for (std::size_t i = 0; i < t.nodes.size(); ++i) {
+  json node = {{"id", 0},   {"type", ""},       {"value", 0.0},   {"position", {0.0, 0.0, 0.0}},
+               {"cell", 0}, {"uv", {0.0, 0.0}}, {"location", ""}, {"fallback", false}};
+  json merged_node = node;
+  merged_node["merged"] = 0;
+  w.array("nodes", t.nodes.size(), [&](std::size_t i) -> const json & {
     const TreeNode &n = t.nodes[i];
-    nodes.push_back({{"id", i},
-                     {"type", to_string(n.type)},
-                     {"value", n.value},
-                     {"position", n.position},
-                     {"cell", n.cell},
-                     {"uv", n.uv},
-                     {"location", to_string(n.location)},
-                     {"fallback", n.fallback}});
+    json &o = n.merged > 1 ? merged_node : node;
+    o["id"] = i;
+    o["type"] = to_string(n.type);
+    o["value"] = n.value;
+    for (int k = 0; k < 3; ++k)
+      o["position"][k] = n.position[k];
+    o["cell"] = n.cell;
+    o["uv"][0] = n.uv[0];
+    o["uv"][1] = n.uv[1];
+    o["location"] = to_string(n.location);
+    o["fallback"] = n.fallback;
     if (n.merged > 1)
-      nodes.back()["merged"] = n.merged;
+      o["merged"] = n.merged;
     ++by_type[to_string(n.type)];
     ++by_location[to_string(n.location)];
-  }
-  j["nodes"] = std::move(nodes);
-  json arcs = json::array();
-  for (const auto &a : t.arcs)
-    arcs.push_back({a[0], a[1]});
-  j["arcs"] = std::move(arcs);
-  json pairs = json::array();
-  for (const auto &p : t.pairs)
-    pairs.push_back({{"birth", p.birth},
-                     {"death", p.death},
-                     {"persistence", p.persistence()},
-                     {"kind", to_string(p.kind)}});
-  j["pairs"] = std::move(pairs);
-  json branches = json::array();
-  for (std::size_t b = 0; b < t.branches.size(); ++b) {
+    return o;
+  });
+  json arc = {0, 0};
+  w.array("arcs", t.arcs.size(), [&](std::size_t i) -> const json & {
+    arc[0] = t.arcs[i][0];
+    arc[1] = t.arcs[i][1];
+    return arc;
+  });
+  json pair = {{"birth", 0}, {"death", 0}, {"persistence", 0.0}, {"kind", ""}};
+  w.array("pairs", t.pairs.size(), [&](std::size_t i) -> const json & {
+    const PersistencePair &p = t.pairs[i];
+    pair["birth"] = p.birth;
+    pair["death"] = p.death;
+    pair["persistence"] = p.persistence();
+    pair["kind"] = to_string(p.kind);
+    return pair;
+  });
+  json branch = {{"id", 0},     {"extremum", 0}, {"saddle", 0}, {"persistence", 0.0},
+                 {"parent", 0}, {"depth", 0}};
+  w.array("branches", t.branches.size(), [&](std::size_t b) -> const json & {
     const Branch &br = t.branches[b];
-    branches.push_back({{"id", b},
-                        {"extremum", br.extremum},
-                        {"saddle", br.saddle},
-                        {"persistence", br.persistence},
-                        {"parent", br.parent},
-                        {"depth", br.depth}});
-  }
-  j["branches"] = std::move(branches);
+    branch["id"] = b;
+    branch["extremum"] = br.extremum;
+    branch["saddle"] = br.saddle;
+    branch["persistence"] = br.persistence;
+    branch["parent"] = br.parent;
+    branch["depth"] = br.depth;
+    return branch;
+  });
   json stats;
   stats["nodes"] = t.nodes.size();
   stats["arcs"] = t.arcs.size();
@@ -72,8 +138,8 @@ json to_json(const TreeResult &t) {
   stats["nodes_by_location"] = by_location;
   for (const auto &[k, v] : t.stats)
     stats[k] = v;
-  j["stats"] = std::move(stats);
-  return j;
+  w.field("stats", stats);
+  return w.finish();
 }
 
 NodeType parse_type(const std::string &s) {
@@ -106,7 +172,7 @@ PersistencePair::Kind parse_kind(const std::string &s) {
 
 } // namespace
 
-std::string tree_to_json(const TreeResult &tree, int indent) { return to_json(tree).dump(indent); }
+std::string tree_to_json(const TreeResult &tree) { return to_json_text(tree); }
 
 void write_tree_json(const std::string &path, const TreeResult &tree) {
   const std::string text = tree_to_json(tree);

@@ -17,7 +17,9 @@ namespace hoct {
 
 // Writes atomically (temporary file, then rename).
 void write_tree_json(const std::string &path, const TreeResult &tree);
-std::string tree_to_json(const TreeResult &tree, int indent = 1);
+// The same text as write_tree_json writes: the header's fields and "stats" one per line, each
+// node, arc, pair and branch compact on a line of its own.
+std::string tree_to_json(const TreeResult &tree);
 
 // Reads a file written by write_tree_json; throws InputError naming the file and the problem.
 TreeResult read_tree_json(const std::string &path);

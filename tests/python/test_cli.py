@@ -39,6 +39,29 @@ with tempdir() as tmp:
     R.check(values is not None and abs(values.GetValue(0) - t["nodes"][0]["value"]) < 1e-15, "vtp values")
     R.check(poly.GetPointData().GetArray("type") is not None and
             poly.GetPointData().GetArray("persistence") is not None, "vtp arrays")
+    lines = poly.GetLines()
+    lines.InitTraversal()
+    ids = vtk.vtkIdList()
+    sizes = []
+    while lines.GetNextCell(ids):
+        sizes.append(ids.GetNumberOfIds())
+    R.check(max(sizes) > 2, f"vtp: arcs drawn through the surface (longest {max(sizes)} points)")
+
+    # The augmented tree: its arcs join consecutive nodes of a contour-tree arc, anywhere on its
+    # band, and are drawn straight (two points each).
+    run("tree", p("g.vtu"), "--augmented", "--json", p("a.json"), "--vtp", p("a.vtp"))
+    a = json.load(open(p("a.json")))
+    R.check(any(n["type"] == "regular" for n in a["nodes"]), "augmented: regular nodes")
+    reader.SetFileName(p("a.vtp"))
+    reader.Update()
+    poly = reader.GetOutput()
+    lines = poly.GetLines()
+    lines.InitTraversal()
+    sizes = []
+    while lines.GetNextCell(ids):
+        sizes.append(ids.GetNumberOfIds())
+    R.check(len(sizes) == len(a["arcs"]) and set(sizes) == {2},
+            f"augmented vtp: {len(sizes)} straight lines for {len(a['arcs'])} arcs ({set(sizes)})")
 
     # Simplification, branches and the SVG picture.
     out = run("tree", p("g.vtu"), "--simplify", "1%", "--branches", "--json", p("s.json"),

@@ -32,10 +32,21 @@ with tempdir() as tmp:
     def intact(name):
         return open(p(name)).read() == old
 
-    # SIGINT while computing (reading the input and the cell phase take most of a second).
-    proc = start()
-    time.sleep(0.25)
+    # SIGINT while computing: on 2.5e5 cells `hoct tree` reports its phases on stderr, and the
+    # signal goes when the first (the edge critical points) is done, before anything is written.
+    # (A fixed delay raced with the writing once the tree and the JSON got faster.)
+    run("generate", "random", "--cells", "2.5e5", "-o", p("bigger.vtu"))
+    for name in ("out.json", "out.vtp"):
+        with open(p(name), "w") as f:
+            f.write(old)
+    proc = subprocess.Popen([HOCT, "tree", p("bigger.vtu"), "--threads", "1", "--json",
+                             p("out.json"), "--vtp", p("out.vtp")],
+                            stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+    for line in proc.stderr:
+        if "edge critical points" in line:
+            break
     proc.send_signal(signal.SIGINT)
+    proc.stderr.read()
     rc = proc.wait(60)
     R.check(rc == 130, f"SIGINT while computing: exit {rc} (expected 130)")
     R.check(leftovers(tmp) == [], f"SIGINT: temporary files left: {leftovers(tmp)}")

@@ -77,7 +77,7 @@ int vtkHoctContourTree::RequestData(vtkInformation *, vtkInformationVector **inp
     hoct::ExactTreeOptions options;
     options.augmented = this->Augmented;
     options.threads = threads;
-    options.arc_geometry = true;
+    options.arc_geometry = !this->Augmented; // as hoct tree: an augmented tree's arcs straight
     hoct::TreeResult tree = hoct::exact_contour_tree(mesh, options);
     this->UpdateProgress(0.7);
     if (!this->Augmented) {
