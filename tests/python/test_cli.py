@@ -29,6 +29,11 @@ with tempdir() as tmp:
     R.check(sum(d - 2 for d in degree.values()) == -2, "sum of (degree - 2) is -2")
     R.check(all(n["type"] in ("minimum", "maximum", "saddle") for n in t["nodes"]), "no regular nodes")
     R.check(all(n["location"] in ("vertex", "edge", "interior") for n in t["nodes"]), "locations")
+    # One record per line: each node, arc, pair and branch on a line of its own.
+    text = open(p("t.json")).read().splitlines()
+    R.check(sum(line.startswith('  {"id":') for line in text) == len(t["nodes"]) + len(t["branches"])
+            and sum(line.startswith("  [") for line in text) == len(t["arcs"]),
+            "tree json: one record per line")
     reader = vtk.vtkXMLPolyDataReader()
     reader.SetFileName(p("t.vtp"))
     reader.Update()
