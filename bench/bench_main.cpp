@@ -7,12 +7,12 @@
 #include "bench_support.hpp"
 
 #include "datasets/datasets.hpp"
+#include "exact/exact_contour_tree.hpp"
 #include "io/vtu_writer.hpp"
 #include "mesh/mesh.hpp"
 #include "pl/pl_contour_tree.hpp"
 #include "pl/pl_mesh.hpp"
 #include "pl/refinement.hpp"
-#include "tree/exact_contour_tree.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -342,9 +342,9 @@ void pl_section(const Settings &s) {
       const auto t = clock_type::now();
       const TreeResult r = pl_contour_tree(pl, false, "");
       total.push_back(seconds_since(t));
-      g.push_back(stat(r, "time_graph_s"));
-      sw.push_back(stat(r, "time_sweeps_s"));
-      m.push_back(stat(r, "time_merge_s") + stat(r, "time_pairs_s"));
+      g.push_back(r.stats.time.graph.value_or(0));
+      sw.push_back(r.stats.time.sweeps.value_or(0));
+      m.push_back(r.stats.time.merge.value_or(0) + r.stats.time.pairs.value_or(0));
       if (ttk) {
         const std::string out = capture(s.ttk_ftm + " " + bin + " --runs 1 --threads 1");
         tb.push_back(field(out, "median", "ftm"));

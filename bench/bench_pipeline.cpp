@@ -4,7 +4,7 @@
 #include "io/tree_json.hpp"
 #include "io/tree_vtp_writer.hpp"
 #include "mesh/mesh.hpp"
-#include "tree/exact_contour_tree.hpp"
+#include "pipeline/compute_tree.hpp"
 #include "util/page_pool.hpp"
 
 #include <algorithm>
@@ -32,32 +32,35 @@ PipelineResult run_pipeline(const std::string &vtu, int threads, bool with_vtp,
     r.mesh = seconds_since(t);
     r.bernstein = mesh.build_times.field;
   }
-  ExactTreeOptions eo;
-  eo.threads = threads;
-  eo.arc_geometry = with_vtp;
+  // As `hoct tree FILE --json T.json [--vtp T.vtp]` asks for it.
+  TreeRequest rq;
+  rq.threads = threads;
+  rq.arcs = with_vtp ? ArcGeometry::Paths : ArcGeometry::None;
   auto t = clock_type::now();
-  TreeResult tree = exact_contour_tree(mesh, eo);
-  r.tree = seconds_since(t);
-  r.edges = stat(tree, "time_edge_nodes_s");
-  r.cell_work = stat(tree, "time_cells_s");
-  r.interior = stat(tree, "time_interior_critical_points_s");
-  r.connections = stat(tree, "time_connections_s");
-  r.assembly = stat(tree, "time_graph_assembly_s");
-  r.sweeps = stat(tree, "time_sweeps_s");
-  r.merge = stat(tree, "time_merge_s") + stat(tree, "time_output_s");
-  r.graph_nodes = static_cast<int64_t>(stat(tree, "graph_nodes"));
-  r.fallback_cells = stat(tree, "fallback_cells");
-  r.constant_cells = stat(tree, "fallback_constant_cell");
+  const TreeOutcome out = compute_tree(mesh, rq);
+  const double computed = seconds_since(t);
+  const TreeResult &tree = out.tree;
+  const TreeTimings &time = tree.stats.time;
+  const ExactCounts &n = *tree.stats.exact;
+  r.tree = time.tree.value_or(0); // the exact tree itself
+  r.edges = time.edge_nodes.value_or(0);
+  r.cell_work = time.cells.value_or(0);
+  r.interior = time.interior_critical_points.value_or(0);
+  r.connections = time.connections.value_or(0);
+  r.assembly = time.graph_assembly.value_or(0);
+  r.sweeps = time.sweeps.value_or(0);
+  r.merge = time.merge.value_or(0) + time.output.value_or(0);
+  r.graph_nodes = n.graph_nodes;
+  r.fallback_cells = static_cast<double>(n.fallback_cells);
+  r.constant_cells = static_cast<double>(n.fallbacks(FallbackReason::ConstantCell));
   r.cells = mesh.topology.num_cells();
+  // Writing: the flat regions' contraction, the branches and the arcs' paths (in compute_tree
+  // after the tree), then the files.
   t = clock_type::now();
-  tree = contract_flat(tree);
-  decompose_branches(tree);
   write_tree_json(scratch.file("tree.json"), tree);
-  if (with_vtp) {
-    compute_arc_paths(tree, threads);
+  if (with_vtp)
     write_tree_vtp(scratch.file("tree.vtp"), tree);
-  }
-  r.write = seconds_since(t);
+  r.write = computed - r.tree + seconds_since(t);
   r.total = seconds_since(t0);
   r.nodes = tree.nodes.size();
   return r;

@@ -23,13 +23,6 @@ double median(std::vector<double> v) {
   return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
 }
 
-double stat(const TreeResult &t, const std::string &name) {
-  for (const auto &[k, v] : t.stats)
-    if (k == name)
-      return v;
-  return 0;
-}
-
 namespace {
 long status_field_kib(const char *key) {
   std::ifstream f("/proc/self/status");

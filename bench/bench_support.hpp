@@ -19,7 +19,6 @@ inline double seconds_since(clock_type::time_point t0) {
 double median(std::vector<double> v);
 
 // A statistic of the tree ("time_sweeps_s", ...), 0 if absent.
-double stat(const TreeResult &t, const std::string &name);
 
 // Peak resident memory of this process (VmHWM, KiB).
 long peak_rss_kib();

@@ -6,12 +6,12 @@
 // exception propagates (both are findings, as are crashes and sanitizer reports).
 #pragma once
 
-#include "error.hpp"
+#include "exact/exact_contour_tree.hpp"
 #include "io/msh_reader.hpp"
 #include "io/vtu_reader.hpp"
 #include "mesh/mesh.hpp"
-#include "tree/exact_contour_tree.hpp"
 #include "tree/union_find.hpp"
+#include "util/error.hpp"
 
 #include <algorithm>
 #include <cstdint>

@@ -1,17 +1,15 @@
 // Python bindings (pybind11): a thin layer over the library, exposing meshes and trees as
 // numpy arrays. The Python package `hoct` (python/hoct/__init__.py) adds the conveniences.
 #include "datasets/datasets.hpp"
-#include "error.hpp"
 #include "io/read_mesh.hpp"
 #include "io/tree_json.hpp"
-#include "mesh/domain_check.hpp"
 #include "mesh/mesh.hpp"
-#include "pl/pl_contour_tree.hpp"
-#include "pl/refinement.hpp"
+#include "pipeline/compute_tree.hpp"
+#include "pipeline/domain_check.hpp"
 #include "poly/lagrange_node_order.hpp"
-#include "tree/exact_contour_tree.hpp"
 #include "tree/merge_tree.hpp"
 #include "tree/tree_result.hpp"
+#include "util/error.hpp"
 #include "util/parallel_for.hpp"
 
 #include <pybind11/numpy.h>
@@ -41,11 +39,14 @@ template <class T> py::array_t<T> array_1d(const std::vector<T> &v) {
 }
 
 // The mesh built on `threads` threads (0 = every hardware thread, as the command line's default;
-// the same mesh for any number).
+// the same mesh for any number). Problems a forced tree can go past (inverted cells, duplicate
+// vertices) are left to contour_tree, as `hoct tree` does; any other makes it throw here.
 PyMesh make_mesh(MeshInput in, int threads = 0) {
   PyMesh m;
   m.input = std::move(in);
-  m.mesh = std::make_shared<Mesh>(build_mesh(m.input, {.threads = thread_count(threads)}));
+  m.mesh = std::make_shared<Mesh>(
+      build_mesh(m.input, {.throw_on_error = false, .threads = thread_count(threads)}));
+  require_valid_mesh(*m.mesh, /*allow_forceable=*/true);
   return m;
 }
 
@@ -85,33 +86,29 @@ PyMesh from_arrays(py::array_t<double, py::array::c_style | py::array::forcecast
   return make_mesh(std::move(in));
 }
 
-PyTree compute_tree(const PyMesh &m, const std::string &method, int levels, int threads,
-                    bool keep_flat, bool force) {
-  // The same domain rule as `hoct tree`: a contour tree needs one disk or one sphere.
-  const std::string problem = domain_problem(m.mesh->topology);
-  if (!problem.empty() && !force)
-    throw Error((m.mesh->source.empty() ? std::string("mesh") : m.mesh->source) + ": " + problem +
-                ". Pass force=True to compute the join/split merge anyway (one tree per "
-                "component; not the Reeb graph).");
-  PyTree t;
-  if (method == "exact") {
-    ExactTreeOptions o;
-    o.threads = threads;
-    o.arc_geometry = true;
-    t.tree = exact_contour_tree(*m.mesh, o);
-  } else if (method == "linear") {
-    t.tree = pl_contour_tree(split_lagrange_cells(m.input), false, "linear", true);
-  } else if (method == "refine") {
-    t.tree = pl_contour_tree(hoct::refine(*m.mesh, levels), false,
-                             "refine k=" + std::to_string(levels), true);
-  } else {
-    throw Error("contour_tree: method must be 'exact', 'linear' or 'refine'");
-  }
-  if (!keep_flat)
-    t.tree = contract_flat(t.tree);
+// contour_tree(mesh, ...): the keyword arguments as a library request (the same one `hoct tree`
+// makes of its flags). Arcs are drawn on request (Tree.arc_paths), from the kept graph.
+PyTree py_contour_tree(const PyMesh &m, const std::string &method, int refine, int threads,
+                       bool keep_flat, bool force, bool augmented, const std::string &simplify) {
+  TreeRequest rq;
+  if (method == "exact")
+    rq.method = TreeMethod::Exact;
+  else if (method == "linear")
+    rq.method = TreeMethod::Linear;
+  else if (method == "refine")
+    rq.method = TreeMethod::Refine;
   else
-    decompose_branches(t.tree);
-  return t;
+    throw Error("contour_tree: method must be 'exact', 'linear' or 'refine'");
+  rq.refine = refine;
+  rq.threads = threads;
+  rq.keep_flat = keep_flat;
+  rq.force = force;
+  rq.augmented = augmented;
+  if (!simplify.empty())
+    rq.simplify = parse_threshold(simplify, "contour_tree: simplify");
+  rq.arcs = ArcGeometry::Graph;
+  TreeOutcome out = compute_tree(*m.mesh, rq, &m.input);
+  return {out.simplified ? std::move(*out.simplified) : std::move(out.tree)};
 }
 
 py::dict merge_tree_dict(const PyTree &t, bool join) {
@@ -255,7 +252,7 @@ PYBIND11_MODULE(_hoct, m) {
       .def_property_readonly("stats",
                              [](const PyTree &t) {
                                py::dict d;
-                               for (const auto &[k, v] : t.tree.stats)
+                               for (const auto &[k, v] : t.tree.stats.entries())
                                  d[py::str(k)] = v;
                                return d;
                              })
@@ -273,7 +270,18 @@ PYBIND11_MODULE(_hoct, m) {
                out.emplace_back(p.begin(), p.end());
              return out;
            })
-      .def("to_json", [](const PyTree &t) { return tree_to_json(t.tree); })
+      .def("simplify_by",
+           [](const PyTree &t, const std::string &spec) {
+             const TreeResult &x = t.tree;
+             const double range =
+                 x.nodes.empty() ? 0 : x.nodes.back().value - x.nodes.front().value;
+             PyTree r;
+             r.tree = simplify_tree(x, parse_threshold(spec, "simplify_by").absolute(range));
+             return r;
+           })
+      .def(
+          "to_json", [](const PyTree &t, bool timings) { return tree_to_json(t.tree, timings); },
+          py::arg("timings") = true)
       .def("join_tree", [](const PyTree &t) { return merge_tree_dict(t, true); })
       .def("split_tree", [](const PyTree &t) { return merge_tree_dict(t, false); });
 
@@ -288,7 +296,7 @@ PYBIND11_MODULE(_hoct, m) {
       },
       py::call_guard<py::gil_scoped_release>());
   m.def("from_arrays", &from_arrays);
-  m.def("contour_tree", &compute_tree, py::call_guard<py::gil_scoped_release>());
+  m.def("contour_tree", &py_contour_tree, py::call_guard<py::gil_scoped_release>());
   m.def(
       "generate",
       [](const std::string &name, int degree, long long cells, uint64_t seed, double frequency,

@@ -1,11 +1,11 @@
 // `hoct check TREE.json INPUT`: verifies a contour tree written by `hoct tree --json` against the
-// mesh and field it was computed from (tree/tree_check.hpp): tree-ness, Euler relation, order,
+// mesh and field it was computed from (analysis/tree_check.hpp): tree-ness, Euler relation, order,
 // node values and positions, types versus degrees and versus samples of the field.
+#include "analysis/tree_check.hpp"
 #include "commands.hpp"
-#include "error.hpp"
 #include "io/tree_json.hpp"
 #include "load_mesh.hpp"
-#include "tree/tree_check.hpp"
+#include "util/error.hpp"
 
 #include <cstdio>
 #include <iostream>

@@ -1,9 +1,9 @@
 // `hoct convert INPUT -o OUTPUT.vtu`: any input hoct reads (.vtu, .msh) as VTK XML with Lagrange
 // triangles and the chosen scalar, for ParaView (paraview/render_tree.py uses it for .msh files).
 #include "commands.hpp"
-#include "error.hpp"
 #include "io/read_mesh.hpp"
 #include "io/vtu_writer.hpp"
+#include "util/error.hpp"
 
 #include <cstdio>
 #include <memory>

@@ -1,7 +1,7 @@
 // `hoct eval FILE --points PTS`: the field and the geometry map at parametric points of cells.
 #include "commands.hpp"
-#include "error.hpp"
 #include "load_mesh.hpp"
+#include "util/error.hpp"
 
 #include <charconv>
 #include <cstdio>

@@ -2,8 +2,8 @@
 // (src/datasets), written as VTK XML with Lagrange triangles.
 #include "commands.hpp"
 #include "datasets/datasets.hpp"
-#include "error.hpp"
 #include "io/vtu_writer.hpp"
+#include "util/error.hpp"
 
 #include <chrono>
 #include <cmath>

@@ -66,7 +66,7 @@ int run_info(const InfoOptions &o) {
     }
     nlohmann::ordered_json probs = nlohmann::ordered_json::array();
     for (const auto &[kind, k] : m.problems.kinds())
-      probs.push_back({{"kind", kind},
+      probs.push_back({{"kind", to_string(kind)},
                        {"severity", k.severity == Severity::Error ? "error" : "warning"},
                        {"count", k.count},
                        {"examples", k.examples}});

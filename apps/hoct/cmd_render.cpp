@@ -1,10 +1,10 @@
 // `hoct render INPUT -o FIELD.png|.svg`: the field, exact isolines and critical points.
 #include "commands.hpp"
-#include "error.hpp"
+#include "exact/exact_contour_tree.hpp"
 #include "io/tree_json.hpp"
 #include "load_mesh.hpp"
 #include "render/field_renderer.hpp"
-#include "tree/exact_contour_tree.hpp"
+#include "util/error.hpp"
 
 #include <cstdio>
 #include <filesystem>

@@ -1,9 +1,9 @@
 // `hoct study INPUT --refine 1,2,4,8,16`: the exact tree against PL trees of refinements.
 #include "analysis/case_study.hpp"
 #include "commands.hpp"
-#include "error.hpp"
-#include "io/study_writers.hpp"
 #include "load_mesh.hpp"
+#include "study_writers.hpp"
+#include "util/error.hpp"
 
 #include <cmath>
 #include <cstdio>

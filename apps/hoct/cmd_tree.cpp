@@ -1,22 +1,16 @@
 // `hoct tree INPUT`: the contour tree, written as JSON and VTP and summarised on the terminal.
 #include "commands.hpp"
-#include "domain_check.hpp"
-#include "error.hpp"
 #include "io/tree_json.hpp"
 #include "io/tree_svg_writer.hpp"
 #include "io/tree_vtp_writer.hpp"
 #include "load_mesh.hpp"
-#include "pl/pl_contour_tree.hpp"
-#include "pl/refinement.hpp"
-#include "tree/exact_contour_tree.hpp"
+#include "pipeline/compute_tree.hpp"
 #include "tree_summary.hpp"
+#include "util/error.hpp"
+#include "util/stopwatch.hpp"
 
-#include <chrono>
-#include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <iostream>
-#include <limits>
 #include <memory>
 
 namespace hoct::cli {
@@ -32,104 +26,52 @@ struct TreeOptions {
   int threads = 0;
 };
 
-// "0.01" (absolute) or "0.5%" (of the value range of the tree).
-double parse_threshold(const std::string &text, const TreeResult &tree) {
-  const bool percent = !text.empty() && text.back() == '%';
-  const std::string number = percent ? text.substr(0, text.size() - 1) : text;
-  double v = 0;
-  std::size_t used = 0;
-  try {
-    v = std::stod(number, &used);
-  } catch (const std::exception &) {
-    used = 0;
-  }
-  if (used != number.size() || number.empty() || !(v >= 0) || !std::isfinite(v))
-    throw Error("--simplify: '" + text +
-                "' is not a threshold (a number, or a percentage like 0.5%)");
-  if (!percent)
-    return v;
-  const double range = tree.nodes.empty() ? 0 : tree.nodes.back().value - tree.nodes.front().value;
-  return v / 100 * range;
+// The flags as a library request.
+TreeRequest request_of(const TreeOptions &o) {
+  if (o.linear && o.refine > 0)
+    throw Error("--linear and --refine exclude each other");
+  TreeRequest rq;
+  rq.method = o.linear ? TreeMethod::Linear : o.refine > 0 ? TreeMethod::Refine : TreeMethod::Exact;
+  rq.refine = o.refine;
+  rq.augmented = o.augmented;
+  rq.keep_flat = o.keep_flat;
+  if (!o.simplify.empty())
+    rq.simplify = parse_threshold(o.simplify, "--simplify");
+  rq.force = o.force;
+  rq.threads = o.threads;
+  rq.arcs = o.vtp.empty() ? ArcGeometry::None : ArcGeometry::Paths;
+  return rq;
 }
 
 void run_tree(const TreeOptions &o) {
-  using clock = std::chrono::steady_clock;
-  if (o.linear && o.refine > 0)
-    throw Error("--linear and --refine exclude each other");
-  const auto t0 = clock::now();
+  Stopwatch total;
+  TreeRequest rq = request_of(o);
   // Only --linear reads the input's nodes again: elsewhere the mesh holds all the tree needs.
   const LoadedMesh lm = load_mesh(o.file, o.scalar, /*strict=*/false, o.merge.tolerance(),
                                   o.threads, /*keep_input=*/o.linear);
-  const std::vector<std::string> forced = check_domain(lm.mesh, o.file, o.force);
-  for (const auto &why : forced)
+  rq.read_seconds = lm.read_seconds;
+  rq.build_seconds = lm.build_seconds;
+  // Progress on stderr for large meshes (a phase can take seconds there).
+  if (!o.quiet && lm.mesh.topology.num_cells() >= 200000)
+    rq.progress = [](const std::string &phase, double s) {
+      std::fprintf(stderr, "hoct: %s done (%.2f s)\n", phase.c_str(), s);
+    };
+  const TreeOutcome out = compute_tree(lm.mesh, rq, &lm.input);
+  for (const auto &why : out.warnings)
     std::fprintf(stderr, "hoct: warning: --force: %s\n", why.c_str());
-  const auto t1 = clock::now();
-  TreeResult tree;
-  auto t2 = t1;
-  if (o.linear || o.refine > 0) {
-    const PlMesh pl = o.linear ? split_lagrange_cells(lm.input) : refine(lm.mesh, o.refine);
-    t2 = clock::now();
-    tree = pl_contour_tree(pl, o.augmented,
-                           o.linear ? "linear" : "refine k=" + std::to_string(o.refine),
-                           /*with_graph=*/!o.vtp.empty() && !o.augmented, o.threads);
-  } else {
-    ExactTreeOptions eo;
-    eo.augmented = o.augmented;
-    eo.threads = o.threads;
-    // Arcs drawn on the surface in the .vtp. Not those of an augmented tree: each joins two
-    // consecutive nodes of a contour-tree arc, which may lie anywhere on its band, and a path
-    // between them wanders over it (10^5 cubic cells: 4.2 s for the 55,261 arcs, against
-    // 0.05 s for the tree); they are drawn straight.
-    eo.arc_geometry = !o.vtp.empty() && !o.augmented;
-    // Progress on stderr for large meshes (a phase can take seconds there).
-    if (!o.quiet && lm.mesh.topology.num_cells() >= 200000)
-      eo.progress = [](const std::string &phase, double s) {
-        std::fprintf(stderr, "hoct: %s done (%.2f s)\n", phase.c_str(), s);
-      };
-    tree = exact_contour_tree(lm.mesh, eo);
-  }
-  const auto t3 = clock::now();
-  auto seconds = [](clock::time_point a, clock::time_point b) {
-    return std::chrono::duration<double>(b - a).count();
-  };
-  // Plateaus (equal values, ordered by node id) give arcs of length zero and leaf branches of
-  // persistence zero: artefacts of the tie-breaking. Each flat region becomes one node unless
-  // --keep-flat.
-  if (!o.augmented && !o.keep_flat)
-    tree = contract_flat(tree);
-  if (!o.simplify.empty()) {
-    if (o.augmented)
-      throw Error("--simplify works on the reduced tree (drop --augmented)");
-    tree = simplify_tree(tree, parse_threshold(o.simplify, tree));
-  } else {
-    decompose_branches(tree);
-  }
-  tree.forced = forced;
-  tree.add_stat("input_cells", static_cast<double>(lm.mesh.topology.num_cells()));
-  tree.add_stat("time_read_s", lm.read_seconds);
-  tree.add_stat("time_check_s", lm.build_seconds); // the whole mesh build, conversion included
-  tree.add_stat("time_bernstein_s", lm.mesh.build_times.field);
-  if (t2 != t1)
-    tree.add_stat("time_pl_mesh_s", seconds(t1, t2));
-  tree.add_stat("time_tree_s", seconds(t2, t3));
-  if (o.no_timings) // byte-identical files for identical inputs
-    std::erase_if(tree.stats, [](const auto &s) { return s.first.rfind("time_", 0) == 0; });
+  const TreeResult &tree = out.reported();
+  if (!o.svg.empty() && tree.branches.empty())
+    throw Error("--svg draws the reduced tree (drop --augmented)");
   if (!o.json.empty())
-    write_tree_json(o.json, tree);
-  if (!o.vtp.empty()) {
-    compute_arc_paths(tree, o.threads);
+    write_tree_json(o.json, tree, /*timings=*/!o.no_timings);
+  if (!o.vtp.empty())
     write_tree_vtp(o.vtp, tree);
-  }
-  if (!o.svg.empty()) {
-    if (tree.branches.empty())
-      throw Error("--svg draws the reduced tree (drop --augmented)");
+  if (!o.svg.empty())
     write_tree_svg(o.svg, tree,
                    std::filesystem::path(o.file).filename().string() + ": " + tree.method +
                        " contour tree, " + std::to_string(tree.nodes.size()) + " nodes");
-  }
-  const auto t4 = clock::now();
   if (!o.quiet)
-    print_tree_summary(o.file, lm.mesh, tree, seconds(t0, t4));
+    print_tree_summary(o.file, lm.mesh, tree, total.seconds());
   if (o.branches)
     print_branches(tree);
 }

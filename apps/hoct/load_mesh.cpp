@@ -1,9 +1,9 @@
 #include "load_mesh.hpp"
 
-#include "error.hpp"
 #include "io/read_mesh.hpp"
 #include "memory_guard.hpp"
 #include "mesh/duplicate_points.hpp"
+#include "util/error.hpp"
 #include "util/parallel_for.hpp"
 
 #include <chrono>

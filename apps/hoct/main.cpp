@@ -1,7 +1,7 @@
 #include "commands.hpp"
-#include "error.hpp"
-#include "memory_guard.hpp"
 #include "io/atomic_file.hpp"
+#include "memory_guard.hpp"
+#include "util/error.hpp"
 #include "util/page_pool.hpp"
 
 #include <cstdio>

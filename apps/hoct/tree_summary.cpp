@@ -21,9 +21,9 @@ void print_tree_summary(const std::string &file, const Mesh &mesh, const TreeRes
   if (tree.augmented)
     std::printf(", regular %lld", static_cast<long long>(counts[3]));
   std::printf("), arcs: %zu", tree.arcs.size());
-  for (const auto &[k, v] : tree.stats)
-    if (k == "nodes_before_simplification")
-      std::printf(", %.0f nodes before simplification", v);
+  if (tree.stats.nodes_before_simplification)
+    std::printf(", %lld nodes before simplification",
+                static_cast<long long>(*tree.stats.nodes_before_simplification));
   std::printf("\n");
   std::printf("  where:");
   for (const auto &[k, v] : loc)
@@ -42,7 +42,7 @@ void print_tree_summary(const std::string &file, const Mesh &mesh, const TreeRes
   }
   std::printf("\n  stats:");
   int col = 0;
-  for (const auto &[k, v] : tree.stats) {
+  for (const auto &[k, v] : tree.stats.entries()) {
     std::printf("%s %s=%.6g", col % 4 == 0 ? "\n   " : "", k.c_str(), v);
     ++col;
   }

@@ -7,10 +7,10 @@
 #pragma once
 
 #include "../../tests/unit/test_meshes.hpp"
-#include "error.hpp"
+#include "analysis/tree_check.hpp"
+#include "exact/exact_contour_tree.hpp"
 #include "mesh/mesh.hpp"
-#include "tree/exact_contour_tree.hpp"
-#include "tree/tree_check.hpp"
+#include "util/error.hpp"
 
 #include <cmath>
 #include <cstdint>

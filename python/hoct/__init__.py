@@ -92,25 +92,33 @@ def from_meshio(mesh, scalar=None):
                              np.asarray(mesh.point_data[name], dtype=float))
 
 
-def _threshold(spec, tree):
-    if isinstance(spec, str) and spec.endswith("%"):
-        values = tree.values
-        return float(spec[:-1]) / 100.0 * (values.max() - values.min())
-    return float(spec)
+def _spec(simplify):
+    """A threshold as the library parses it: a number (absolute) or a text such as "0.5%"."""
+    if simplify is None:
+        return ""
+    if isinstance(simplify, bool):
+        raise HoctError("contour_tree: simplify must be a number or a text such as '0.5%'")
+    return simplify if isinstance(simplify, str) else repr(float(simplify))
 
 
 def contour_tree(mesh, simplify=None, threads=None, method="exact", refine=4, keep_flat=False,
-                 force=False):
-    """The contour tree of `mesh`: method "exact" (default), "linear" (PL of the Lagrange nodes)
-    or "refine" (PL of the exact k x k refinement, k = `refine`). `simplify` removes leaf
-    branches below a persistence threshold (a number, or a percentage like "0.5%"). A domain
-    that is not one disk or one sphere raises HoctError unless force=True (as `hoct tree
-    --force`)."""
-    tree = _hoct.contour_tree(mesh, method, int(refine), int(threads or 0), bool(keep_flat),
-                              bool(force))
-    if simplify is not None:
-        tree = tree.simplify(_threshold(simplify, tree))
-    return tree
+                 force=False, augmented=False):
+    """The contour tree of `mesh`, as `hoct tree` computes it (the same library call):
+
+    method     "exact" (default), "linear" (PL of the Lagrange nodes, `hoct tree --linear`) or
+               "refine" (PL of the exact field on k x k sub-triangles per cell, k = `refine`)
+    simplify   remove leaf branches below a persistence threshold: a number, or a percentage of
+               the value range like "0.5%" (`--simplify`); the simplified tree is returned
+    threads    threads for every phase (default: all cores; the tree does not depend on it)
+    keep_flat  keep the nodes and zero-length arcs of plateaus (`--keep-flat`)
+    augmented  keep the regular nodes (`--augmented`; no simplification then)
+    force      compute what is well defined on a domain that is not one disk or one sphere
+               (`--force`); without it such a domain raises HoctError"""
+    if threads is not None and (isinstance(threads, bool) or not isinstance(threads, int)
+                                or threads < 1):
+        raise HoctError("contour_tree: threads must be a positive integer, got %r" % (threads,))
+    return _hoct.contour_tree(mesh, method, int(refine), int(threads or 0), bool(keep_flat),
+                              bool(force), bool(augmented), _spec(simplify))
 
 
 def _to_networkx(tree):
@@ -125,4 +133,7 @@ def _to_networkx(tree):
 
 
 Tree.to_networkx = _to_networkx
-Tree.simplify_by = lambda self, spec: self.simplify(_threshold(spec, self))
+_native_simplify_by = Tree.simplify_by
+Tree.simplify_by = lambda self, spec: _native_simplify_by(self, _spec(spec))
+Tree.simplify_by.__doc__ = ("The tree simplified by a persistence threshold: a number, or a "
+                            "percentage of the value range such as '0.5%'.")

@@ -1,8 +1,8 @@
 #include "analysis/case_study.hpp"
 
+#include "exact/exact_contour_tree.hpp"
 #include "pl/pl_contour_tree.hpp"
 #include "pl/refinement.hpp"
-#include "tree/exact_contour_tree.hpp"
 
 #include <algorithm>
 #include <chrono>

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "poly/bernstein_triangle.hpp"
+#include "poly/reference_triangle.hpp"
 
 #include <array>
 #include <cstdint>
@@ -25,12 +26,5 @@ struct CellNodes {
   std::array<std::vector<int>, 3> chain;
   std::array<std::vector<double>, 3> chain_s;
 };
-
-// Position on local edge k at parameter s from corner k.
-Vec2 point_on_edge(int k, double s);
-// Inward normal direction of local edge k in the reference triangle (not normalised).
-Vec2 inward_normal(int k);
-// Direction of local edge k from corner k to corner k+1 (not normalised).
-Vec2 edge_tangent(int k);
 
 } // namespace hoct

@@ -1,6 +1,6 @@
 #include "datasets/box_surface.hpp"
 
-#include "error.hpp"
+#include "util/error.hpp"
 
 #include <array>
 #include <unordered_map>

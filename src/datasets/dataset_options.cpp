@@ -1,7 +1,7 @@
 #include "datasets/dataset_options.hpp"
 
-#include "error.hpp"
 #include "poly/lattice.hpp"
+#include "util/error.hpp"
 
 #include <cstdio>
 

@@ -1,7 +1,7 @@
 #include "datasets/datasets.hpp"
 
 #include "datasets/dataset_options.hpp"
-#include "error.hpp"
+#include "util/error.hpp"
 
 #include <utility>
 

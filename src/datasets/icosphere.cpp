@@ -1,6 +1,6 @@
 #include "datasets/icosphere.hpp"
 
-#include "error.hpp"
+#include "util/error.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,7 +1,7 @@
 #include "datasets/lagrange_mesh_builder.hpp"
 
-#include "error.hpp"
 #include "poly/lattice.hpp"
+#include "util/error.hpp"
 
 #include <algorithm>
 #include <array>

@@ -1,7 +1,7 @@
 #include "datasets/planar_triangulation.hpp"
 
 #include "datasets/seeded_random.hpp"
-#include "error.hpp"
+#include "util/error.hpp"
 
 #include <algorithm>
 #include <cmath>

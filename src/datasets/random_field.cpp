@@ -8,7 +8,7 @@
 #include "datasets/lagrange_mesh_builder.hpp"
 #include "datasets/planar_triangulation.hpp"
 #include "datasets/seeded_random.hpp"
-#include "error.hpp"
+#include "util/error.hpp"
 
 #include <algorithm>
 #include <array>

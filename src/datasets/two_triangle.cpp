@@ -17,7 +17,7 @@
 #include "datasets/dataset_options.hpp"
 #include "datasets/lagrange_mesh_builder.hpp"
 #include "datasets/seeded_random.hpp"
-#include "error.hpp"
+#include "util/error.hpp"
 
 #include <array>
 

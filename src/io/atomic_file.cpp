@@ -1,6 +1,6 @@
 #include "io/atomic_file.hpp"
 
-#include "error.hpp"
+#include "util/error.hpp"
 
 #include <atomic>
 #include <cerrno>

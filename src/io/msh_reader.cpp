@@ -30,12 +30,12 @@
 // from the file is checked against the bytes left before anything is allocated for it.
 #include "io/msh_reader.hpp"
 
-#include "error.hpp"
 #include "io/msh_element_types.hpp"
 #include "io/msh_scanner.hpp"
 #include "io/tag_index.hpp"
 #include "poly/lagrange_node_order.hpp"
 #include "poly/lattice.hpp"
+#include "util/error.hpp"
 
 #include <algorithm>
 #include <array>

@@ -1,6 +1,6 @@
 #include "io/msh_scanner.hpp"
 
-#include "error.hpp"
+#include "util/error.hpp"
 
 #include <algorithm>
 #include <charconv>

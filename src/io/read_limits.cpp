@@ -1,6 +1,6 @@
 #include "io/read_limits.hpp"
 
-#include "error.hpp"
+#include "util/error.hpp"
 
 #include <unistd.h>
 

@@ -1,8 +1,8 @@
 #include "io/read_mesh.hpp"
 
-#include "error.hpp"
 #include "io/msh_reader.hpp"
 #include "io/vtu_reader.hpp"
+#include "util/error.hpp"
 
 #include <algorithm>
 #include <filesystem>

@@ -1,7 +1,7 @@
 #include "io/tree_json.hpp"
 
-#include "error.hpp"
 #include "io/atomic_file.hpp"
+#include "util/error.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -68,7 +68,7 @@ private:
   std::size_t field_start_ = 0;
 };
 
-std::string to_json_text(const TreeResult &t) {
+std::string to_json_text(const TreeResult &t, bool timings) {
   TreeJsonWriter w;
   w.field("format", "hoct-contour-tree");
   w.field("version", 1);
@@ -136,7 +136,7 @@ std::string to_json_text(const TreeResult &t) {
   stats["arcs"] = t.arcs.size();
   stats["nodes_by_type"] = by_type;
   stats["nodes_by_location"] = by_location;
-  for (const auto &[k, v] : t.stats)
+  for (const auto &[k, v] : t.stats.entries(timings))
     stats[k] = v;
   w.field("stats", stats);
   return w.finish();
@@ -172,10 +172,12 @@ PersistencePair::Kind parse_kind(const std::string &s) {
 
 } // namespace
 
-std::string tree_to_json(const TreeResult &tree) { return to_json_text(tree); }
+std::string tree_to_json(const TreeResult &tree, bool timings) {
+  return to_json_text(tree, timings);
+}
 
-void write_tree_json(const std::string &path, const TreeResult &tree) {
-  const std::string text = tree_to_json(tree);
+void write_tree_json(const std::string &path, const TreeResult &tree, bool timings) {
+  const std::string text = tree_to_json(tree, timings);
   write_file_atomic(
       path, [&](std::ostream &out) { out << text << "\n"; }, false);
 }
@@ -257,10 +259,13 @@ TreeResult read_tree_json(const std::string &path) {
         br.depth = b.value("depth", 0);
         t.branches.push_back(br);
       }
-    if (j.contains("stats"))
+    if (j.contains("stats")) {
+      std::vector<std::pair<std::string, double>> entries;
       for (const auto &[k, v] : j.at("stats").items())
-        if (v.is_number())
-          t.stats.emplace_back(k, v.get<double>());
+        if (v.is_number() && k != "nodes" && k != "arcs")
+          entries.emplace_back(k, v.get<double>());
+      t.stats = TreeStats::from_entries(entries);
+    }
     return t;
   } catch (const json::exception &e) {
     throw InputError(path + ": malformed contour-tree file: " + e.what());

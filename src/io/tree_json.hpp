@@ -15,11 +15,12 @@
 
 namespace hoct {
 
-// Writes atomically (temporary file, then rename).
-void write_tree_json(const std::string &path, const TreeResult &tree);
+// Writes atomically (temporary file, then rename). Without `timings` the time_* statistics are
+// left out: the same tree then gives the same bytes, whatever the threads or the front end.
+void write_tree_json(const std::string &path, const TreeResult &tree, bool timings = true);
 // The same text as write_tree_json writes: the header's fields and "stats" one per line, each
 // node, arc, pair and branch compact on a line of its own.
-std::string tree_to_json(const TreeResult &tree);
+std::string tree_to_json(const TreeResult &tree, bool timings = true);
 
 // Reads a file written by write_tree_json; throws InputError naming the file and the problem.
 TreeResult read_tree_json(const std::string &path);

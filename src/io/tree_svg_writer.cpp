@@ -1,8 +1,8 @@
 #include "io/tree_svg_writer.hpp"
 
-#include "error.hpp"
 #include "io/atomic_file.hpp"
 #include "io/vtk_xml_arrays.hpp"
+#include "util/error.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,7 +1,7 @@
 #include "io/vtk_xml_arrays.hpp"
 
-#include "error.hpp"
 #include "io/base64.hpp"
+#include "util/error.hpp"
 
 #include <zlib.h>
 
@@ -57,8 +57,8 @@ std::string VtkXmlArrays::encode_inline(const void *data, std::size_t bytes) con
 }
 
 template <class T>
-std::string VtkXmlArrays::element(const std::string &name, const char *type,
-                                  std::span<const T> v, int components) {
+std::string VtkXmlArrays::element(const std::string &name, const char *type, std::span<const T> v,
+                                  int components) {
   std::string e = "<DataArray type=\"" + std::string(type) + "\" Name=\"" + xml_escape(name) +
                   "\" NumberOfComponents=\"" + std::to_string(components) + "\" format=\"";
   const std::size_t bytes = v.size() * sizeof(T);

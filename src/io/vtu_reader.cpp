@@ -1,9 +1,9 @@
 #include "io/vtu_reader.hpp"
 
-#include "error.hpp"
 #include "io/base64.hpp"
 #include "io/file_bytes.hpp"
 #include "io/vtk_cells.hpp"
+#include "util/error.hpp"
 #include "util/page_pool.hpp"
 #include "util/parallel_for.hpp"
 

@@ -1,7 +1,7 @@
 #include "mesh/duplicate_points.hpp"
 
-#include "error.hpp"
 #include "util/concurrent_sets.hpp"
+#include "util/error.hpp"
 #include "util/parallel_for.hpp"
 #include "util/parallel_sort.hpp"
 #include "util/uninitialized_vector.hpp"

@@ -67,10 +67,7 @@ Field Field::build(const MeshInput &in, const Topology &topo, ProblemLog &proble
         }
       f.edge_degree_[e] = static_cast<uint8_t>(degree);
       owner[e] = o;
-      owner_local[e] = -1;
-      for (int k = 0; k < 3; ++k)
-        if (topo.cell_edge(o, k) == e)
-          owner_local[e] = static_cast<int8_t>(k);
+      owner_local[e] = static_cast<int8_t>(topo.local_edge(o, e));
     }
   });
 
@@ -103,9 +100,7 @@ Field Field::build(const MeshInput &in, const Topology &topo, ProblemLog &proble
         const int64_t o = cells[i];
         if (o == c)
           continue;
-        int ko = 0;
-        while (topo.cell_edge(o, ko) != e)
-          ++ko;
+        const int ko = topo.local_edge(o, e);
         const int od = in.cell_degree[o];
         edge_node_values(in, o, ko, topo.edge_reversed(o, ko), other_vals, other_ids);
         if (od == d && std::equal(other_ids, other_ids + d + 1, ids))
@@ -125,7 +120,7 @@ Field Field::build(const MeshInput &in, const Topology &topo, ProblemLog &proble
             << topo.vertex_point(topo.edge_vertices(e)[0]) << "-"
             << topo.vertex_point(topo.edge_vertices(e)[1]) << ") by " << gap
             << " (the field must be continuous)";
-          log.add("discontinuous field across an edge", Severity::Error, m.str());
+          log.add(Problem::DiscontinuousEdge, m.str());
         }
       }
     }
@@ -243,9 +238,7 @@ Field Field::build_from_polynomials(const Topology &topo,
       if (cells[ec[i]].degree() > cells[owner].degree())
         owner = ec[i];
     auto restriction = [&](int64_t c) {
-      int k = 0;
-      while (topo.cell_edge(c, k) != e)
-        ++k;
+      const int k = topo.local_edge(c, e);
       const BernsteinPoly p = cells[c].edge(k);
       return topo.edge_reversed(c, k) ? p.reversed() : p;
     };
@@ -265,7 +258,7 @@ Field Field::build_from_polynomials(const Topology &topo,
           << topo.vertex_point(topo.edge_vertices(e)[0]) << "-"
           << topo.vertex_point(topo.edge_vertices(e)[1]) << ") by " << gap
           << " (the field must be continuous)";
-        problems.add("discontinuous field across an edge", Severity::Error, m.str());
+        problems.add(Problem::DiscontinuousEdge, m.str());
       }
     }
   }
@@ -282,7 +275,7 @@ Field Field::build_from_polynomials(const Topology &topo,
       if (std::isnan(f.vertex_value_[v]))
         f.vertex_value_[v] = val;
       else if (!(std::abs(val - f.vertex_value_[v]) <= tol))
-        problems.add("discontinuous field at a vertex", Severity::Error,
+        problems.add(Problem::DiscontinuousVertex,
                      "cell " + std::to_string(c) + " disagrees with a neighbour at point " +
                          std::to_string(topo.vertex_point(v)) + " by " +
                          std::to_string(std::abs(val - f.vertex_value_[v])));

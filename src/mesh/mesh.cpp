@@ -1,9 +1,9 @@
 #include "mesh/mesh.hpp"
 
-#include "error.hpp"
 #include "mesh/duplicate_points.hpp"
 #include "mesh/mesh_checks.hpp"
 #include "poly/sample_fit.hpp"
+#include "util/error.hpp"
 #include "util/page_pool.hpp"
 
 #include <chrono>
@@ -83,9 +83,9 @@ Mesh build_mesh_from_samples(const MeshInput &input, const std::vector<CellSampl
   m.field_name = input.field_name;
   m.num_points = static_cast<int64_t>(input.points.size());
   if (samples.size() != input.num_cells())
-    m.problems.add("inconsistent arrays", Severity::Error,
-                   std::to_string(samples.size()) + " sample sets for " +
-                       std::to_string(input.num_cells()) + " cells");
+    m.problems.add(Problem::InconsistentArrays, std::to_string(samples.size()) +
+                                                    " sample sets for " +
+                                                    std::to_string(input.num_cells()) + " cells");
   else if (check_input(input, m.problems, options.threads)) {
     m.topology = Topology::build(input, m.problems, options.threads);
     check_duplicate_vertices(input, m.topology, m.problems, options.threads);
@@ -96,8 +96,7 @@ Mesh build_mesh_from_samples(const MeshInput &input, const std::vector<CellSampl
         polys[c] =
             bernstein_from_samples(samples[c].positions, samples[c].values, samples[c].degree);
       } catch (const Error &e) {
-        m.problems.add("bad sample set", Severity::Error,
-                       "cell " + std::to_string(c) + ": " + e.what());
+        m.problems.add(Problem::BadSampleSet, "cell " + std::to_string(c) + ": " + e.what());
         fitted = false;
       }
     }

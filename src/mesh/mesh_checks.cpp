@@ -34,18 +34,18 @@ std::string format_double(double v) {
 void check_point(const MeshInput &in, int64_t p, ProblemLog &problems) {
   const auto &x = in.points[p];
   if (!std::isfinite(x[0]) || !std::isfinite(x[1]) || !std::isfinite(x[2]))
-    problems.add("non-finite point coordinate", Severity::Error,
+    problems.add(Problem::NonFiniteCoordinate,
                  "point " + std::to_string(p) + " has a NaN or infinite coordinate");
   else if (std::abs(x[0]) > kMaxMagnitude || std::abs(x[1]) > kMaxMagnitude ||
            std::abs(x[2]) > kMaxMagnitude)
-    problems.add("coordinate out of range", Severity::Error,
+    problems.add(Problem::CoordinateOutOfRange,
                  "point " + std::to_string(p) + " has a coordinate beyond 1e100 in magnitude " +
                      "(products of coordinates would overflow double precision)");
   if (!std::isfinite(in.values[p]))
-    problems.add("non-finite value", Severity::Error,
+    problems.add(Problem::NonFiniteValue,
                  "point " + std::to_string(p) + " has value " + std::to_string(in.values[p]));
   else if (std::abs(in.values[p]) > kMaxMagnitude)
-    problems.add("value out of range", Severity::Error,
+    problems.add(Problem::ValueOutOfRange,
                  "point " + std::to_string(p) + " has value " + format_double(in.values[p]) +
                      ", beyond 1e100 in magnitude (the Bernstein form and the root isolation "
                      "would overflow double precision; rescale the field)");
@@ -58,16 +58,15 @@ bool check_cell(const MeshInput &in, int64_t c, std::vector<int64_t> &seen, Prob
   const int d = in.cell_degree[c];
   const int64_t n = in.cell_offsets[c + 1] - in.cell_offsets[c];
   if (d < 1 || n != lattice_size(d)) {
-    problems.add("bad cell", Severity::Error,
-                 "cell " + std::to_string(c) + " has degree " + std::to_string(d) + " but " +
-                     std::to_string(n) + " nodes");
+    problems.add(Problem::BadCell, "cell " + std::to_string(c) + " has degree " +
+                                       std::to_string(d) + " but " + std::to_string(n) + " nodes");
     return false;
   }
   // The conversions to Bernstein form (and the per-edge buffers of Field) stop at kMaxDegree.
   if (d > kMaxDegree) {
-    problems.add("unsupported degree", Severity::Error,
-                 "cell " + std::to_string(c) + " has degree " + std::to_string(d) + " (at most " +
-                     std::to_string(kMaxDegree) + " supported)");
+    problems.add(Problem::UnsupportedDegree, "cell " + std::to_string(c) + " has degree " +
+                                                 std::to_string(d) + " (at most " +
+                                                 std::to_string(kMaxDegree) + " supported)");
     return false;
   }
   bool ok = true;
@@ -75,15 +74,15 @@ bool check_cell(const MeshInput &in, int64_t c, std::vector<int64_t> &seen, Prob
               in.cell_nodes.begin() + in.cell_offsets[c + 1]);
   for (int64_t id : seen)
     if (id < 0 || id >= np) {
-      problems.add("missing node", Severity::Error,
-                   "cell " + std::to_string(c) + " refers to point " + std::to_string(id) +
-                       ", but there are " + std::to_string(np) + " points");
+      problems.add(Problem::MissingNode, "cell " + std::to_string(c) + " refers to point " +
+                                             std::to_string(id) + ", but there are " +
+                                             std::to_string(np) + " points");
       ok = false;
       break;
     }
   std::sort(seen.begin(), seen.end());
   if (std::adjacent_find(seen.begin(), seen.end()) != seen.end())
-    problems.add("inconsistent nodes", Severity::Error,
+    problems.add(Problem::InconsistentNodes,
                  "cell " + std::to_string(c) + " uses point " +
                      std::to_string(*std::adjacent_find(seen.begin(), seen.end())) +
                      " for two of its nodes");
@@ -96,18 +95,17 @@ bool check_input(const MeshInput &in, ProblemLog &problems, int threads) {
   bool ok = true;
   const int64_t np = static_cast<int64_t>(in.points.size());
   if (in.values.size() != in.points.size()) {
-    problems.add("inconsistent arrays", Severity::Error,
-                 std::to_string(in.points.size()) + " points but " +
-                     std::to_string(in.values.size()) + " values");
+    problems.add(Problem::InconsistentArrays, std::to_string(in.points.size()) + " points but " +
+                                                  std::to_string(in.values.size()) + " values");
     return false;
   }
   if (in.cell_offsets.size() != in.cell_degree.size() + 1 || in.cell_offsets.front() != 0 ||
       in.cell_offsets.back() != static_cast<int64_t>(in.cell_nodes.size())) {
-    problems.add("inconsistent arrays", Severity::Error, "cell offsets do not match the cells");
+    problems.add(Problem::InconsistentArrays, "cell offsets do not match the cells");
     return false;
   }
   if (in.cell_degree.empty()) {
-    problems.add("empty mesh", Severity::Error, "the mesh has no triangle cells");
+    problems.add(Problem::EmptyMesh, "the mesh has no triangle cells");
     return false;
   }
   // Points, then cells, in fixed blocks on threads (problems appended in block order).
@@ -142,7 +140,7 @@ bool check_input(const MeshInput &in, ProblemLog &problems, int threads) {
       << kMinValueRange
       << ": products of derivatives would underflow and critical points be lost; rescale the "
          "field";
-    problems.add("value range too small", Severity::Error, m.str());
+    problems.add(Problem::ValueRangeTooSmall, m.str());
   }
   const int64_t nc = static_cast<int64_t>(in.cell_degree.size());
   const int64_t cell_blocks = problem_blocks(nc);
@@ -157,7 +155,7 @@ bool check_input(const MeshInput &in, ProblemLog &problems, int threads) {
                   });
   cell_problems.append_to(problems);
   ok = ok && cells_ok.load();
-  return ok && problems.count("inconsistent nodes") == 0;
+  return ok && problems.count(Problem::InconsistentNodes) == 0;
 }
 
 namespace {
@@ -189,7 +187,7 @@ void check_duplicate_vertices(const MeshInput &in, const Topology &topo, Problem
         << ", " << p[1] << ", " << p[2]
         << ") but are different vertices: the cells around them are not connected there (a "
            "crack, holes or separate pieces). Merge them by position (hoct: --merge-duplicates)";
-      problems.add("duplicate vertices", Severity::Error, m.str());
+      problems.add(Problem::DuplicateVertices, m.str());
     }
 }
 
@@ -242,7 +240,7 @@ int planar_jacobian_sign(const Geometry &g, int64_t c, double area_tol, ProblemL
     const double det = j[0][0] * j[1][1] - j[0][1] * j[1][0];
     const int s = det > area_tol ? 1 : det < -area_tol ? -1 : 0;
     if (s == 0)
-      problems.add("degenerate cell (zero area)", Severity::Error, cell_str(c) + " has zero area");
+      problems.add(Problem::ZeroArea, cell_str(c) + " has zero area");
     return s;
   }
   // det J = x_u y_v - x_v y_u as a Bernstein polynomial of degree 2(p-1): where its coefficients
@@ -285,9 +283,9 @@ int planar_jacobian_sign(const Geometry &g, int64_t c, double area_tol, ProblemL
   if (smax < -area_tol)
     return -1;
   if (std::max(std::abs(smin), std::abs(smax)) <= area_tol)
-    problems.add("degenerate cell (zero area)", Severity::Error, cell_str(c) + " has zero area");
+    problems.add(Problem::ZeroArea, cell_str(c) + " has zero area");
   else
-    problems.add("inverted cell (folded curved cell)", Severity::Error,
+    problems.add(Problem::FoldedCell,
                  cell_str(c) + ": its Jacobian changes sign inside the cell (min " +
                      std::to_string(smin) + ", max " + std::to_string(smax) + ")");
   return 0;
@@ -338,11 +336,10 @@ void check_surface_cell(const Geometry &g, int64_t c, double area_tol, ProblemLo
       folded = true;
   });
   if (degenerate)
-    problems.add("degenerate cell (zero area)", Severity::Error,
+    problems.add(Problem::ZeroArea,
                  cell_str(c) + " has zero area at some point (its map is singular)");
   else if (folded)
-    problems.add("inverted cell (folded curved cell)", Severity::Error,
-                 cell_str(c) + ": its surface normal flips inside the cell");
+    problems.add(Problem::FoldedCell, cell_str(c) + ": its surface normal flips inside the cell");
 }
 
 } // namespace
@@ -386,7 +383,7 @@ void check_geometry(const Geometry &g, const Topology &topo, ProblemLog &problem
     parallel_chunks(nc, blocks, cell_threads, [&](int64_t b, int64_t begin, int64_t end, int) {
       for (int64_t c = begin; c < end; ++c)
         if (sign[c] == minority)
-          inverted[b].add("inverted cell", Severity::Error,
+          inverted[b].add(Problem::InvertedCell,
                           cell_str(c) + " is inverted (its orientation disagrees with its "
                                         "neighbours': the mesh overlaps itself)");
     });

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "util/uninitialized_vector.hpp"
+#include "util/vec.hpp"
 
 #include <array>
 #include <cstdint>
@@ -12,8 +13,6 @@
 #include <vector>
 
 namespace hoct {
-
-using Vec3 = std::array<double, 3>;
 
 // Its arrays' large buffers come from the page pool (util/page_pool.hpp): inside a PageReuseScope
 // around reading, building and computing, the pages of the input the mesh build consumes serve

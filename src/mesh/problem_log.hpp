@@ -11,7 +11,45 @@ namespace hoct {
 
 enum class Severity { Warning, Error };
 
-struct ProblemKind {
+// Every kind of problem the mesh build reports, in the order of their names (the summary's).
+enum class Problem : uint8_t {
+  BadCell,
+  BadSampleSet,
+  CoordinateOutOfRange,
+  RepeatedCorner,
+  RepeatedEdge,
+  ZeroArea,
+  DiscontinuousEdge,
+  DiscontinuousVertex,
+  DuplicateVertices,
+  EmptyMesh,
+  InconsistentArrays,
+  InconsistentNodes,
+  InvertedCell,
+  FoldedCell,
+  MissingNode,
+  NonFiniteCoordinate,
+  NonFiniteValue,
+  NonManifoldEdge,
+  NonManifoldVertex,
+  NonOrientable,
+  UnsupportedDegree,
+  ValueOutOfRange,
+  ValueRangeTooSmall,
+};
+
+struct ProblemInfo {
+  const char *name; // as reports print it, e.g. "non-manifold edge"
+  Severity severity;
+  // A contour tree is still well defined past it (hoct tree --force): the algorithm works in
+  // each cell's reference triangle, so inverted or folded cells do not change the field's tree,
+  // and unmerged duplicate vertices only cut the surface along cracks.
+  bool forceable;
+};
+const ProblemInfo &problem_info(Problem p);
+inline const char *to_string(Problem p) { return problem_info(p).name; }
+
+struct ProblemRecord {
   Severity severity = Severity::Error;
   int64_t count = 0;
   std::vector<std::string> examples; // at most ProblemLog::kMaxExamples
@@ -21,19 +59,19 @@ class ProblemLog {
 public:
   static constexpr int kMaxExamples = 5;
 
-  void add(const std::string &kind, Severity severity, const std::string &message);
+  void add(Problem kind, const std::string &message);
   // Adds everything `later` recorded, as if its add calls had come after this log's: logs kept
   // per block of a parallel loop and appended in block order equal one serial log.
   void append(const ProblemLog &later);
   bool has_errors() const;
   bool empty() const { return kinds_.empty(); }
-  int64_t count(const std::string &kind) const;
-  const std::map<std::string, ProblemKind> &kinds() const { return kinds_; }
-  // Multi-line human-readable summary ("error: 3 non-manifold edge(s): ..."), errors first.
+  int64_t count(Problem kind) const;
+  const std::map<Problem, ProblemRecord> &kinds() const { return kinds_; }
+  // Multi-line human-readable summary ("error: 3 x non-manifold edge ..."), errors first.
   std::string summary() const;
 
 private:
-  std::map<std::string, ProblemKind> kinds_;
+  std::map<Problem, ProblemRecord> kinds_;
 };
 
 // Problems found by the blocks of a parallel loop, one log per block, appended in block order:

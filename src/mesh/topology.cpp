@@ -93,7 +93,7 @@ Topology Topology::build(const MeshInput &in, ProblemLog &problems, int threads)
           std::ostringstream m;
           m << "cell " << c << " uses the same corner point twice (points " << corner[0] << ", "
             << corner[1] << ", " << corner[2] << ")";
-          repeated[b].add("degenerate cell (repeated corner)", Severity::Error, m.str());
+          repeated[b].add(Problem::RepeatedCorner, m.str());
         }
       }
     });
@@ -205,12 +205,11 @@ Topology Topology::build(const MeshInput &in, ProblemLog &problems, int threads)
             for (int64_t r = i; r < j; ++r)
               m << (r > i ? ", " : "") << rec[r].cell_local / 3;
             m << ")";
-            found[b].add("non-manifold edge", Severity::Error, m.str());
+            found[b].add(Problem::NonManifoldEdge, m.str());
           }
           if (count == 2 && rec[i].cell_local / 3 == rec[i + 1].cell_local / 3) {
-            found[b].add("degenerate cell (repeated edge)", Severity::Error,
-                         "cell " + std::to_string(rec[i].cell_local / 3) +
-                             " uses the same edge twice");
+            found[b].add(Problem::RepeatedEdge, "cell " + std::to_string(rec[i].cell_local / 3) +
+                                                    " uses the same edge twice");
           }
           i = j;
         }
@@ -300,9 +299,9 @@ Topology Topology::build(const MeshInput &in, ProblemLog &problems, int threads)
   }
   if (orientation_conflicts > 0) {
     t.orientable_ = false;
-    problems.add("non-orientable surface", Severity::Warning,
-                 "the cells cannot be oriented consistently (" +
-                     std::to_string(orientation_conflicts / 2) + " conflicting edges)");
+    problems.add(Problem::NonOrientable, "the cells cannot be oriented consistently (" +
+                                             std::to_string(orientation_conflicts / 2) +
+                                             " conflicting edges)");
   }
 
   // Boundary loops: components of the boundary-edge graph; every boundary vertex of a manifold
@@ -329,7 +328,7 @@ Topology Topology::build(const MeshInput &in, ProblemLog &problems, int threads)
                           continue;
                         roots_here += loops.find(v) == v;
                         if (boundary_degree[v] != 2)
-                          pinched[b].add("non-manifold vertex", Severity::Error,
+                          pinched[b].add(Problem::NonManifoldVertex,
                                          "point " + std::to_string(t.vertex_point_[v]) +
                                              " touches " + std::to_string(boundary_degree[v]) +
                                              " boundary edges (a pinch: two boundary loops meet "
@@ -350,9 +349,9 @@ Topology Topology::build(const MeshInput &in, ProblemLog &problems, int threads)
   // the walks' lengths are summed first, and only when they fall short is each vertex looked
   // at. Edges with more than two cells and cells with a repeated corner (reported above) make
   // fans ill-defined: the walk is skipped then.
-  const bool walkable = problems.count("non-manifold edge") == 0 &&
-                        problems.count("degenerate cell (repeated corner)") == 0 &&
-                        problems.count("degenerate cell (repeated edge)") == 0;
+  const bool walkable = problems.count(Problem::NonManifoldEdge) == 0 &&
+                        problems.count(Problem::RepeatedCorner) == 0 &&
+                        problems.count(Problem::RepeatedEdge) == 0;
   // The cells in v's fan through corner k of cell c.
   auto fan_size = [&](int64_t v, int64_t c0, int k0) {
     int64_t size = 1;
@@ -405,7 +404,7 @@ Topology Topology::build(const MeshInput &in, ProblemLog &problems, int threads)
       const int64_t fan = fan_size(v, t.vertex_cell_[v], t.vertex_corner_[v]);
       // More than two boundary edges: reported above as a pinch of boundary loops.
       if (fan != corners[v] && boundary_degree[v] <= 2)
-        problems.add("non-manifold vertex", Severity::Error,
+        problems.add(Problem::NonManifoldVertex,
                      "point " + std::to_string(t.vertex_point_[v]) + ": its " +
                          std::to_string(corners[v]) + " cells form more than one fan (" +
                          std::to_string(fan) + " of them around cell " +

@@ -38,6 +38,13 @@ public:
   std::span<const std::array<int64_t, 2>> all_edge_vertices() const { return edge_vertices_; }
   int64_t cell_edge(int64_t c, int k) const { return cell_edges_[c][k]; }
   bool edge_reversed(int64_t c, int k) const { return (cell_edge_reversed_[c] >> k) & 1u; }
+  // The local index (0, 1, 2) of edge e in cell c, or -1 if c does not have it.
+  int local_edge(int64_t c, int64_t e) const {
+    for (int k = 0; k < 3; ++k)
+      if (cell_edges_[c][k] == e)
+        return k;
+    return -1;
+  }
 
   // Cells incident to edge e (1 on the boundary, 2 inside, more if non-manifold), ascending.
   const int64_t *edge_cells_begin(int64_t e) const { return &edge_cells_[edge_cell_offset_[e]]; }

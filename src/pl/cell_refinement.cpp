@@ -1,19 +1,16 @@
 #include "pl/cell_refinement.hpp"
 
 #include "poly/lattice.hpp"
+#include "poly/reference_triangle.hpp"
 
 #include <algorithm>
 
 namespace hoct {
 
 CellRefinement refine_cell(int k, const std::array<std::vector<double>, 3> &extra) {
-  static constexpr double kCorner[3][2] = {{0, 0}, {1, 0}, {0, 1}};
   CellRefinement r;
   std::vector<int> local(lattice_size(k));
-  auto edge_point = [&](int e, double s) {
-    return std::array<double, 2>{kCorner[e][0] + s * (kCorner[(e + 1) % 3][0] - kCorner[e][0]),
-                                 kCorner[e][1] + s * (kCorner[(e + 1) % 3][1] - kCorner[e][1])};
-  };
+  auto edge_point = [](int e, double s) { return point_on_edge(e, s); };
   for (int b = 0; b <= k; ++b)
     for (int a = 0; a + b <= k; ++a) {
       CellSubVertex sv;

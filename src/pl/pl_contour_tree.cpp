@@ -3,34 +3,29 @@
 #include "tree/sweep_contour_tree.hpp"
 #include "util/page_pool.hpp"
 #include "util/parallel_for.hpp"
+#include "util/stopwatch.hpp"
 #include "util/uninitialized_vector.hpp"
-
-#include <chrono>
 
 namespace hoct {
 
 TreeResult pl_contour_tree(const PlMesh &m, bool augmented, const std::string &method,
                            bool with_graph, int threads) {
-  using clock = std::chrono::steady_clock;
-  auto seconds = [](clock::time_point a, clock::time_point b) {
-    return std::chrono::duration<double>(b - a).count();
-  };
   const PageReuseScope reuse_pages; // the edge list's pages serve the sweeps after it
-  const auto t0 = clock::now();
+  Stopwatch clock;
   // The triangles' sides (an interior edge twice: the sweeps do not mind duplicates).
   UninitializedVector<GraphEdge> edges;
   edges.resize(m.triangles.size() * 3);
   for (std::size_t t = 0; t < m.triangles.size(); ++t)
     for (int k = 0; k < 3; ++k)
       edges[3 * t + k] = {m.triangles[t][k], m.triangles[t][(k + 1) % 3]};
-  const auto t1 = clock::now();
+  const double graph_seconds = clock.lap();
   SweepTimings sweep;
   // A thread per sweep only where it pays (starting one costs more on small meshes).
   const int sweep_threads =
       threads_for(static_cast<int64_t>(m.values.size()), thread_count(threads), 8192);
   const ContourTree ct =
       sweep_contour_tree(m.values, {edges, {}, {}}, augmented, sweep_threads, &sweep);
-  const auto t3 = clock::now();
+  clock.lap();
 
   TreeResult r;
   r.method = method;
@@ -65,13 +60,12 @@ TreeResult pl_contour_tree(const PlMesh &m, bool augmented, const std::string &m
     r.graph = std::move(graph);
   }
   r.pairs = tree_pairs(ct);
-  const auto t4 = clock::now();
-  r.add_stat("pl_vertices", static_cast<double>(m.values.size()));
-  r.add_stat("pl_triangles", static_cast<double>(m.triangles.size()));
-  r.add_stat("time_graph_s", seconds(t0, t1));
-  r.add_stat("time_sweeps_s", sweep.order + sweep.sweeps);
-  r.add_stat("time_merge_s", sweep.merge);
-  r.add_stat("time_pairs_s", seconds(t3, t4));
+  r.stats.pl =
+      PlCounts{static_cast<int64_t>(m.values.size()), static_cast<int64_t>(m.triangles.size())};
+  r.stats.time.graph = graph_seconds;
+  r.stats.time.sweeps = sweep.order + sweep.sweeps;
+  r.stats.time.merge = sweep.merge;
+  r.stats.time.pairs = clock.lap();
   return r;
 }
 

@@ -1,8 +1,9 @@
 #include "pl/refinement.hpp"
 
-#include "error.hpp"
 #include "pl/cell_refinement.hpp"
 #include "poly/lattice.hpp"
+#include "poly/reference_triangle.hpp"
+#include "util/error.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -29,11 +30,10 @@ PlMesh refine(const Mesh &mesh, const RefinementOptions &opt) {
     pl.source_uv.push_back({u, v});
     return static_cast<int64_t>(pl.values.size() - 1);
   };
-  static constexpr double kCorner[3][2] = {{0, 0}, {1, 0}, {0, 1}};
   // Vertices first: PL vertex id = mesh vertex id.
   for (int64_t v = 0; v < nv; ++v)
-    add(topo.vertex_cell(v), kCorner[topo.vertex_corner(v)][0], kCorner[topo.vertex_corner(v)][1],
-        field.vertex_value(v));
+    add(topo.vertex_cell(v), kReferenceCorner[topo.vertex_corner(v)][0],
+        kReferenceCorner[topo.vertex_corner(v)][1], field.vertex_value(v));
 
   // Each edge's extra points (lo -> hi parameters, sorted, off the lattice), and the PL ids of
   // its lattice points (steps 1..k-1 from lo) and extra points, created once per edge.
@@ -53,16 +53,13 @@ PlMesh refine(const Mesh &mesh, const RefinementOptions &opt) {
                    extra[e].end());
     // Positions through the first cell of the edge.
     const int64_t c = topo.edge_cells_begin(e)[0];
-    int lk = 0;
-    while (topo.cell_edge(c, lk) != e)
-      ++lk;
+    const int lk = topo.local_edge(c, e);
     const bool rev = topo.edge_reversed(c, lk);
     const BernsteinPoly p = field.edge_polynomial(e);
     auto at = [&](double t) {
       const double s = rev ? 1 - t : t;
-      const double u = kCorner[lk][0] + s * (kCorner[(lk + 1) % 3][0] - kCorner[lk][0]);
-      const double v = kCorner[lk][1] + s * (kCorner[(lk + 1) % 3][1] - kCorner[lk][1]);
-      return add(c, u, v, p(t));
+      const Vec2 uv = point_on_edge(lk, s);
+      return add(c, uv[0], uv[1], p(t));
     };
     for (int s = 1; s < k; ++s)
       lattice_id[static_cast<std::size_t>(e) * (k - 1) + (s - 1)] = at(static_cast<double>(s) / k);

@@ -8,6 +8,7 @@
 
 #include "poly/bernstein_univariate.hpp"
 #include "poly/lattice.hpp"
+#include "util/vec.hpp"
 
 #include <array>
 #include <span>
@@ -16,7 +17,6 @@
 
 namespace hoct {
 
-using Vec2 = std::array<double, 2>;
 using Mat2 = std::array<std::array<double, 2>, 2>;
 
 class BernsteinTriangle {

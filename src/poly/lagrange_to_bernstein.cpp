@@ -1,8 +1,8 @@
 #include "poly/lagrange_to_bernstein.hpp"
 
-#include "error.hpp"
 #include "poly/binomial.hpp"
 #include "poly/lattice.hpp"
+#include "util/error.hpp"
 
 #include <Eigen/Dense>
 #include <array>

@@ -1,8 +1,8 @@
 #include "poly/sample_fit.hpp"
 
-#include "error.hpp"
 #include "poly/binomial.hpp"
 #include "poly/lattice.hpp"
+#include "util/error.hpp"
 
 #include <Eigen/Dense>
 #include <cmath>

@@ -1,10 +1,10 @@
 #include "render/field_renderer.hpp"
 
-#include "error.hpp"
 #include "io/atomic_file.hpp"
 #include "poly/lattice.hpp"
 #include "poly/root_isolation.hpp"
 #include "render/colormap.hpp"
+#include "util/error.hpp"
 
 #include <cairo-svg.h>
 #include <cairo.h>

@@ -5,8 +5,8 @@
 // whose values lie between theirs.
 #pragma once
 
-#include "mesh/mesh_input.hpp"
 #include "util/uninitialized_vector.hpp"
+#include "util/vec.hpp"
 
 #include <array>
 #include <cstdint>

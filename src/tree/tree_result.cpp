@@ -92,7 +92,7 @@ TreeResult contract_flat(const TreeResult &t) {
   TreeResult r = derived_result(t, f.tree, f.kept);
   for (std::size_t i = 0; i < r.nodes.size(); ++i)
     r.nodes[i].merged = f.size[i];
-  r.add_stat("flat_nodes_merged", static_cast<double>(t.nodes.size() - r.nodes.size()));
+  r.stats.flat_nodes_merged = static_cast<int64_t>(t.nodes.size() - r.nodes.size());
   decompose_branches(r);
   return r;
 }
@@ -100,8 +100,8 @@ TreeResult contract_flat(const TreeResult &t) {
 TreeResult simplify_tree(const TreeResult &t, double threshold) {
   const Simplification s = simplify(as_contour_tree(t), threshold);
   TreeResult r = derived_result(t, s.tree, s.kept);
-  r.add_stat("nodes_before_simplification", static_cast<double>(t.nodes.size()));
-  r.add_stat("simplification_threshold", threshold);
+  r.stats.nodes_before_simplification = static_cast<int64_t>(t.nodes.size());
+  r.stats.simplification_threshold = threshold;
   decompose_branches(r);
   return r;
 }

@@ -1,14 +1,15 @@
 // What hoct reports for a contour tree, independent of how it was computed (exact, PL of the
 // input's nodes, PL of a refinement) and of the output format: nodes with type, value, position
-// and where they sit in the input mesh; arcs; persistence pairs; and named statistics (counts,
-// timings, fallbacks). Writers (io/tree_json_writer, io/tree_vtp_writer) consume it.
+// and where they sit in the input mesh; arcs; persistence pairs; and typed statistics (counts,
+// timings, fallbacks: tree/tree_stats.hpp). Writers (io/tree_json, io/tree_vtp_writer) consume it.
 #pragma once
 
-#include "mesh/mesh_input.hpp"
 #include "tree/contour_tree.hpp"
 #include "tree/geometric_graph.hpp"
 #include "tree/persistence.hpp"
 #include "tree/simplification.hpp"
+#include "tree/tree_stats.hpp"
+#include "util/vec.hpp"
 
 #include <array>
 #include <cstdint>
@@ -46,7 +47,7 @@ struct TreeResult {
   std::vector<std::array<int64_t, 2>> arcs; // indices into nodes, lower node first
   std::vector<PersistencePair> pairs;       // birth/death are indices into nodes
   std::vector<Branch> branches;             // branch decomposition (indices into nodes)
-  std::vector<std::pair<std::string, double>> stats;
+  TreeStats stats;
   // Why the result was computed although the input is not a valid disk or sphere (hoct tree
   // --force); empty for a regular result.
   std::vector<std::string> forced;
@@ -55,7 +56,6 @@ struct TreeResult {
   std::shared_ptr<const GeometricGraph> graph;
   std::vector<std::vector<Vec3>> arc_paths;
 
-  void add_stat(const std::string &name, double value) { stats.emplace_back(name, value); }
   // Counts of nodes by type: minimum, maximum, saddle, regular.
   std::array<int64_t, 4> type_counts() const;
 };

@@ -3,10 +3,10 @@
 // cells. Each must give a valid tree (checked against independent truth where there is one) in
 // near-linear time: the timings of two sizes are compared, a quadratic algorithm would show a
 // ratio near the square of the size ratio.
+#include "exact/exact_contour_tree.hpp"
 #include "fuzz_harness.hpp"
 #include "mesh/mesh.hpp"
 #include "test_meshes.hpp"
-#include "tree/exact_contour_tree.hpp"
 
 #include <gtest/gtest.h>
 
@@ -94,7 +94,7 @@ TEST(AdversarialMeshes, VertexSharedBy100000Cells) {
 // those cells fell back to the PL rule (31 spurious minima within 1e-5, found by this test). The
 // sector is now entered along the Hessian-conjugate direction: every cell certifies.
 double stat(const TreeResult &t, const std::string &name) {
-  for (const auto &[k, v] : t.stats)
+  for (const auto &[k, v] : t.stats.entries())
     if (k == name)
       return v;
   ADD_FAILURE() << "no statistic " << name;

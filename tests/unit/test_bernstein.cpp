@@ -6,7 +6,7 @@
 #include "poly/lattice.hpp"
 #include "poly/sample_fit.hpp"
 
-#include "error.hpp"
+#include "util/error.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,8 +1,8 @@
 // build_mesh on an input it consumes (MeshInput &&, as the CLI builds its meshes) gives the
 // mesh and the report of build_mesh on a kept input, bit for bit, and leaves the input empty.
-#include "error.hpp"
 #include "mesh/mesh.hpp"
 #include "test_meshes.hpp"
+#include "util/error.hpp"
 
 #include <gtest/gtest.h>
 

@@ -6,10 +6,10 @@
 // sees the features the datasets are designed to have.
 #include "datasets/datasets.hpp"
 #include "datasets/seeded_random.hpp"
-#include "error.hpp"
+#include "exact/exact_contour_tree.hpp"
 #include "mesh/mesh.hpp"
 #include "poly/lattice.hpp"
-#include "tree/exact_contour_tree.hpp"
+#include "util/error.hpp"
 
 #include <Eigen/Dense>
 #include <gtest/gtest.h>
@@ -581,7 +581,7 @@ TEST(Datasets, ExactTreeSeesTheDesignedFeatures) {
   }
   const TreeResult c = exact_contour_tree(build_mesh(make("conductor", 1200)));
   double fallbacks = 0;
-  for (const auto &[k, v] : c.stats)
+  for (const auto &[k, v] : c.stats.entries())
     if (k == "fallback_cells")
       fallbacks = v;
   EXPECT_GT(fallbacks, 0);
@@ -639,7 +639,8 @@ TEST(Datasets, RandomPlateauRaisesTheLowestValues) {
   EXPECT_GE(on, below);
   const Mesh mesh = build_mesh(flat);
   const TreeResult tree = exact_contour_tree(mesh);
-  std::map<std::string, double> stats(tree.stats.begin(), tree.stats.end());
+  const auto entries = tree.stats.entries();
+  std::map<std::string, double> stats(entries.begin(), entries.end());
   EXPECT_GT(stats["fallback_constant_cell"], 0.1 * static_cast<double>(mesh.topology.num_cells()));
   // Every fallback cell here has a constant edge, and such cells are not searched for interior
   // critical points (the refinement would not use them): no other reason is counted.

@@ -1,14 +1,14 @@
 // Degenerate fields (issue 8): constant fields, plateaus, saddles exactly on vertices and edges,
 // monkey saddles, ties, non-finite, huge and tiny values. Each gives a tree that passes the
-// invariant checker (tree/tree_check.hpp) or a clear hoct::Error.
-#include "error.hpp"
+// invariant checker (analysis/tree_check.hpp) or a clear hoct::Error.
+#include "analysis/tree_check.hpp"
+#include "exact/exact_contour_tree.hpp"
 #include "mesh/mesh.hpp"
 #include "pl/pl_contour_tree.hpp"
 #include "pl/refinement.hpp"
 #include "test_meshes.hpp"
-#include "tree/exact_contour_tree.hpp"
 #include "tree/persistence.hpp"
-#include "tree/tree_check.hpp"
+#include "util/error.hpp"
 
 #include <gtest/gtest.h>
 
@@ -93,7 +93,7 @@ TEST(DegenerateFields, ConstantCellsAreFlatRegionsWithoutSubVertices) {
   }));
   const TreeResult raw = exact_contour_tree(m);
   auto stat = [&](const char *name) {
-    for (const auto &[k, v] : raw.stats)
+    for (const auto &[k, v] : raw.stats.entries())
       if (k == name)
         return static_cast<int64_t>(v);
     return int64_t{-1};
@@ -243,7 +243,7 @@ TEST(DegenerateFields, NearTangentEdgeDerivativeIsDegenerate) {
       rng, false);
   const TreeResult t = exact_contour_tree(build_mesh(in));
   double degenerate_edges = -1;
-  for (const auto &[k, v] : t.stats)
+  for (const auto &[k, v] : t.stats.entries())
     if (k == "fallback_degenerate_edge")
       degenerate_edges = v;
   EXPECT_EQ(degenerate_edges, 1);

@@ -1,28 +1,70 @@
-// mesh/domain_check: a disk and a sphere pass, two components do not.
+// pipeline/domain_check: a disk and a sphere pass, two components do not unless forced, and a
+// forceable problem is only forceable.
 #include "datasets/datasets.hpp"
-#include "mesh/domain_check.hpp"
 #include "mesh/mesh.hpp"
+#include "pipeline/domain_check.hpp"
+#include "util/error.hpp"
 
 #include <gtest/gtest.h>
 
 namespace hoct {
 namespace {
 
-TEST(DomainCheck, DiskAndSpherePassTwoComponentsDoNot) {
-  for (const char *name : {"two-triangle", "sphere"}) {
-    const Mesh mesh = build_mesh(generate_dataset(name, {}));
-    EXPECT_EQ(domain_problem(mesh.topology), "") << name;
-  }
+MeshInput two_triangles() {
   MeshInput two;
   two.points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {5, 0, 0}, {6, 0, 0}, {5, 1, 0}};
   two.values = {0, 1, 2, 3, 4, 5};
+  two.source = "two.vtu";
   const int64_t a[3] = {0, 1, 2}, b[3] = {3, 4, 5};
   two.add_cell(1, a);
   two.add_cell(1, b);
-  const std::string problem = domain_problem(build_mesh(two).topology);
-  EXPECT_NE(problem.find("not a disk or a sphere but 2 separate components: 2 component(s)"),
-            std::string::npos)
-      << problem;
+  return two;
+}
+
+TEST(DomainCheck, DiskAndSpherePassTwoComponentsDoNot) {
+  for (const char *name : {"two-triangle", "sphere"}) {
+    const Mesh mesh = build_mesh(generate_dataset(name, {}));
+    EXPECT_EQ(domain_shape(mesh.topology), "") << name;
+    EXPECT_TRUE(check_domain(mesh, false).empty()) << name;
+  }
+  const Mesh two = build_mesh(two_triangles());
+  EXPECT_NE(domain_shape(two.topology).find("2 separate components: 2 component(s)"),
+            std::string::npos);
+  try {
+    check_domain(two, false);
+    FAIL() << "two components accepted";
+  } catch (const Error &e) {
+    const std::string what = e.what();
+    EXPECT_EQ(what.rfind("two.vtu: the domain is not a disk or a sphere but 2 separate", 0), 0u)
+        << what;
+    EXPECT_NE(what.find("--force"), std::string::npos) << what;
+  }
+  const auto reasons = check_domain(two, true);
+  ASSERT_EQ(reasons.size(), 1u);
+  EXPECT_NE(reasons[0].find("join/split merge"), std::string::npos);
+}
+
+TEST(DomainCheck, OnlyForceableProblemsAreForced) {
+  // An inverted cell (clockwise in a counter-clockwise disk) can be forced; a non-manifold edge
+  // cannot.
+  EXPECT_TRUE(problem_info(Problem::InvertedCell).forceable);
+  EXPECT_TRUE(problem_info(Problem::FoldedCell).forceable);
+  EXPECT_TRUE(problem_info(Problem::DuplicateVertices).forceable);
+  EXPECT_FALSE(problem_info(Problem::NonManifoldEdge).forceable);
+  EXPECT_FALSE(problem_info(Problem::NonFiniteValue).forceable);
+  MeshInput fin;
+  fin.points = {{0, 0, 0}, {1, 0, 0}, {0.5, 1, 0}, {0.5, -1, 0}, {0.5, 0, 1}};
+  fin.values = {0, 1, 2, 3, 4};
+  fin.source = "fin";
+  const int64_t a[3] = {0, 1, 2}, b[3] = {1, 0, 3}, c[3] = {0, 1, 4};
+  fin.add_cell(1, a);
+  fin.add_cell(1, b);
+  fin.add_cell(1, c);
+  const Mesh m = build_mesh(fin, {.throw_on_error = false});
+  ASSERT_GT(m.problems.count(Problem::NonManifoldEdge), 0);
+  for (bool force : {false, true})
+    EXPECT_THROW(check_domain(m, force), Error) << force;
+  EXPECT_THROW(require_valid_mesh(m, true), Error);
 }
 
 } // namespace

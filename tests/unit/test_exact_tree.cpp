@@ -1,11 +1,11 @@
 // The exact contour tree against fields with known critical points, the PL tree of a fine
 // refinement, and the tree invariants.
+#include "exact/exact_contour_tree.hpp"
 #include "mesh/mesh.hpp"
 #include "pl/pl_contour_tree.hpp"
 #include "pl/refinement.hpp"
 #include "test_functions.hpp"
 #include "test_meshes.hpp"
-#include "tree/exact_contour_tree.hpp"
 #include "tree/persistence.hpp"
 
 #include <gtest/gtest.h>
@@ -20,7 +20,7 @@ using testing::horner;
 using testing::Rotation;
 
 double stat(const TreeResult &t, const std::string &name) {
-  for (const auto &[k, v] : t.stats)
+  for (const auto &[k, v] : t.stats.entries())
     if (k == name)
       return v;
   return -1;
@@ -349,7 +349,7 @@ TEST(ExactTree, IdenticalForAnyThreadCount) {
         EXPECT_EQ(t->nodes[i].type, a.nodes[i].type);
       }
       EXPECT_EQ(t->arcs, a.arcs) << name;
-      for (const auto &[k, v] : a.stats) {
+      for (const auto &[k, v] : a.stats.entries()) {
         if (k.rfind("time_", 0) != 0) {
           EXPECT_EQ(stat(*t, k), v) << name << " " << k;
         }

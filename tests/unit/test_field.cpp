@@ -1,9 +1,9 @@
 // The field: interpolation of the node values, and bit-identical edge restrictions on both sides
 // of every edge, on random meshes of degree 1..8 (uniform and mixed).
-#include "error.hpp"
 #include "mesh/mesh.hpp"
 #include "poly/lattice.hpp"
 #include "test_meshes.hpp"
+#include "util/error.hpp"
 
 #include <gtest/gtest.h>
 
@@ -109,7 +109,7 @@ TEST(Field, DiscontinuityAcrossAnEdgeIsReported) {
       verts, tris, [](int64_t c) { return c == 0 ? 2 : 3; }, nullptr, nullptr, rng);
   ProblemLog log;
   const Mesh m = build_mesh(in, {.throw_on_error = false});
-  EXPECT_GT(m.problems.count("discontinuous field across an edge"), 0);
+  EXPECT_GT(m.problems.count(Problem::DiscontinuousEdge), 0);
   EXPECT_THROW(build_mesh(in), Error);
 }
 
@@ -182,14 +182,15 @@ TEST(FieldFromSamples, ArbitrarySamplesGiveAContinuousExactField) {
   for (auto &v : bad[5].values)
     v += 0.1;
   const Mesh b = build_mesh_from_samples(in, bad, {false});
-  EXPECT_GT(b.problems.count("discontinuous field across an edge"), 0);
+  EXPECT_GT(b.problems.count(Problem::DiscontinuousEdge), 0);
   // A degenerate sample set: all samples of cell 3 on one line.
   auto line = samples;
   for (auto &p : line[3].positions)
     p = {p[0], 0.0};
   const Mesh l = build_mesh_from_samples(in, line, {false});
-  ASSERT_EQ(l.problems.count("bad sample set"), 1);
-  EXPECT_NE(l.problems.kinds().at("bad sample set").examples[0].find("cell 3"), std::string::npos);
+  ASSERT_EQ(l.problems.count(Problem::BadSampleSet), 1);
+  EXPECT_NE(l.problems.kinds().at(Problem::BadSampleSet).examples[0].find("cell 3"),
+            std::string::npos);
 }
 
 } // namespace

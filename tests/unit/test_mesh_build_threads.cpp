@@ -177,9 +177,9 @@ TEST(Topology, SameProblemsOnAnyThreadCount) {
     in.cell_nodes[node] = static_cast<int64_t>(in.points.size()) - 1;
   }
   const Built one = build(in, 1), two = build(in, 2), three = build(in, 3);
-  EXPECT_EQ(one.problems.count("non-manifold edge"), 12);
-  EXPECT_EQ(one.problems.count("degenerate cell (repeated corner)"), 12);
-  EXPECT_GE(one.problems.count("non-manifold vertex"), 12);
+  EXPECT_EQ(one.problems.count(Problem::NonManifoldEdge), 12);
+  EXPECT_EQ(one.problems.count(Problem::RepeatedCorner), 12);
+  EXPECT_GE(one.problems.count(Problem::NonManifoldVertex), 12);
   // The grids, and each added cell on its own (joined to nothing through a two-cell edge).
   EXPECT_EQ(one.topology.components(), 2 + 3 * 12);
   EXPECT_EQ(one.problems.summary(), two.problems.summary());
@@ -190,7 +190,7 @@ TEST(Topology, SameProblemsOnAnyThreadCount) {
   ProblemLog p1, p2;
   Field::build(in, one.topology, p1, 1);
   Field::build(in, two.topology, p2, 2);
-  EXPECT_EQ(p1.count("discontinuous field across an edge"), 10);
+  EXPECT_EQ(p1.count(Problem::DiscontinuousEdge), 10);
   EXPECT_EQ(p1.summary(), p2.summary());
 }
 
@@ -212,10 +212,10 @@ TEST(MeshChecks, SameInputReportOnAnyThreadCount) {
   EXPECT_EQ(check_input(in, two, 2), ok1);
   EXPECT_EQ(check_input(in, three, 3), ok1);
   EXPECT_FALSE(ok1);
-  EXPECT_EQ(one.count("non-finite point coordinate"), 7);
-  EXPECT_EQ(one.count("value out of range"), 7);
-  EXPECT_EQ(one.count("missing node"), 7);
-  EXPECT_EQ(one.count("inconsistent nodes"), 7);
+  EXPECT_EQ(one.count(Problem::NonFiniteCoordinate), 7);
+  EXPECT_EQ(one.count(Problem::ValueOutOfRange), 7);
+  EXPECT_EQ(one.count(Problem::MissingNode), 7);
+  EXPECT_EQ(one.count(Problem::InconsistentNodes), 7);
   EXPECT_EQ(one.summary(), two.summary());
   EXPECT_EQ(one.summary(), three.summary());
 }
@@ -270,7 +270,7 @@ void fold(MeshInput &in, int64_t c) {
 }
 
 // check_geometry on 1, 2 and 3 threads: the same report.
-void expect_same_geometry_report(const MeshInput &in, const char *expected_kind) {
+void expect_same_geometry_report(const MeshInput &in, Problem expected_kind) {
   ProblemLog build_log;
   const Topology topo = Topology::build(in, build_log, 2);
   const Geometry g = Geometry::build(in, 2);
@@ -296,8 +296,8 @@ TEST(MeshChecks, SameGeometryReportOnAnyThreadCount) {
                                             corner_index(plane.cell_degree[c], 0)]];
     p[0] += 4.0 / kGrid;
   }
-  expect_same_geometry_report(plane, "inverted cell");
-  expect_same_geometry_report(plane, "inverted cell (folded curved cell)");
+  expect_same_geometry_report(plane, Problem::InvertedCell);
+  expect_same_geometry_report(plane, Problem::FoldedCell);
   // A surface: a sphere of 67,712 cells, some folded.
   std::mt19937_64 rng(15);
   std::vector<Vec3> v;
@@ -308,7 +308,7 @@ TEST(MeshChecks, SameGeometryReportOnAnyThreadCount) {
   const int64_t ns = static_cast<int64_t>(sphere.num_cells());
   for (int k = 0; k < 7; ++k)
     fold(sphere, k * ns / 7 + 3);
-  expect_same_geometry_report(sphere, "inverted cell (folded curved cell)");
+  expect_same_geometry_report(sphere, Problem::FoldedCell);
 }
 
 TEST(MeshChecks, CurvedSurfaceCellsFoldedAreAllFoundAndNoOthers) {
@@ -333,7 +333,7 @@ TEST(MeshChecks, CurvedSurfaceCellsFoldedAreAllFoundAndNoOthers) {
       fold(sphere, k * nc / 7 + 3);
     ProblemLog folded;
     check_geometry(Geometry::build(sphere, 1), topo, folded, 1);
-    EXPECT_EQ(folded.count("inverted cell (folded curved cell)"), 7) << folded.summary();
+    EXPECT_EQ(folded.count(Problem::FoldedCell), 7) << folded.summary();
   }
 }
 

@@ -7,10 +7,10 @@
 //  - malformed files, each of which must give an InputError that starts with the file name and
 //    the place (line, or byte offset in binary files) and names the problem;
 //  - every truncation and many corruptions of the good files, which must fail cleanly.
-#include "error.hpp"
 #include "io/msh_element_types.hpp"
 #include "io/msh_reader.hpp"
 #include "poly/lattice.hpp"
+#include "util/error.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,12 +1,12 @@
 // The PL contour tree of a fine exact refinement against an analytic field with known critical
 // points, and the JSON output contract (round trip, errors).
-#include "error.hpp"
 #include "io/tree_json.hpp"
 #include "mesh/mesh.hpp"
 #include "pl/pl_contour_tree.hpp"
 #include "pl/refinement.hpp"
 #include "test_functions.hpp"
 #include "test_meshes.hpp"
+#include "util/error.hpp"
 
 #include <gtest/gtest.h>
 

@@ -2,7 +2,6 @@
 // bytes it has before anything is allocated for them, and against the memory budget
 // (ReadLimits, the CLI's --max-memory) with a "needs ~X, limit Y" message. Each hostile header
 // here used to reach an allocation or a read past the data (under ASan: a report).
-#include "error.hpp"
 #include "io/base64.hpp"
 #include "io/msh_reader.hpp"
 #include "io/read_limits.hpp"
@@ -10,6 +9,7 @@
 #include "io/vtu_writer.hpp"
 #include "mesh/mesh.hpp"
 #include "test_meshes.hpp"
+#include "util/error.hpp"
 
 #include <gtest/gtest.h>
 

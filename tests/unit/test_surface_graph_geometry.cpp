@@ -2,10 +2,10 @@
 // arc is drawn through them: the same points as the mesh's maps, none inside pieces of
 // straight-sided cells, and arcs that can still be drawn once the mesh is gone.
 #include "datasets/datasets.hpp"
+#include "exact/exact_contour_tree.hpp"
+#include "exact/surface_graph_geometry.hpp"
 #include "mesh/mesh.hpp"
 #include "poly/lattice.hpp"
-#include "tree/exact_contour_tree.hpp"
-#include "tree/surface_graph_geometry.hpp"
 
 #include <gtest/gtest.h>
 

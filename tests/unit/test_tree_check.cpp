@@ -1,10 +1,10 @@
-// The invariant checker (tree/tree_check.hpp): it passes on the exact trees of every generated
+// The invariant checker (analysis/tree_check.hpp): it passes on the exact trees of every generated
 // dataset and of random fields, and fails on each kind of deliberately corrupted tree.
+#include "analysis/tree_check.hpp"
 #include "datasets/datasets.hpp"
+#include "exact/exact_contour_tree.hpp"
 #include "mesh/mesh.hpp"
 #include "test_meshes.hpp"
-#include "tree/exact_contour_tree.hpp"
-#include "tree/tree_check.hpp"
 
 #include <gtest/gtest.h>
 

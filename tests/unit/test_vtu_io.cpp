@@ -1,12 +1,12 @@
 // The VTU writer and reader: exact round trips in every encoding and degree, base64 edge cases,
 // and a clear error (file name and what is wrong) for every kind of malformed file.
 #include "datasets/datasets.hpp"
-#include "error.hpp"
 #include "io/base64.hpp"
 #include "io/vtu_reader.hpp"
 #include "io/vtu_writer.hpp"
 #include "poly/lattice.hpp"
 #include "test_meshes.hpp"
+#include "util/error.hpp"
 
 #include <gtest/gtest.h>
 #include <zlib.h>

@@ -1,7 +1,7 @@
 #include "hoct_vtk_convert.h"
 
-#include "error.hpp"
 #include "io/vtk_cells.hpp"
+#include "util/error.hpp"
 
 #include <vtkCellArray.h>
 #include <vtkCellData.h>

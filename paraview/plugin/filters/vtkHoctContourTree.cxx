@@ -1,11 +1,9 @@
 #include "vtkHoctContourTree.h"
 
-#include "error.hpp"
 #include "hoct_vtk_convert.h"
 #include "io/tree_polydata.hpp"
-#include "mesh/domain_check.hpp"
 #include "mesh/mesh.hpp"
-#include "tree/exact_contour_tree.hpp"
+#include "pipeline/compute_tree.hpp"
 #include "util/parallel_for.hpp"
 
 #include <vtkDataArray.h>
@@ -17,6 +15,7 @@
 #include <vtkInformationVector.h>
 #include <vtkObjectFactory.h>
 #include <vtkPolyData.h>
+#include <vtkStringArray.h>
 #include <vtkUnstructuredGrid.h>
 
 #include <exception>
@@ -39,9 +38,17 @@ int vtkHoctContourTree::FillInputPortInformation(int, vtkInformation *info) {
 
 namespace {
 
-// The tree's statistics (counts, fallbacks, timings) as one-value field-data arrays.
+// The tree's statistics (counts, fallbacks, timings) as one-value field-data arrays, and why it
+// was forced (Force), if it was, as the string array ForcedReasons.
 void add_stats(const hoct::TreeResult &tree, vtkPolyData *out) {
-  for (const auto &[name, value] : tree.stats) {
+  if (!tree.forced.empty()) {
+    vtkNew<vtkStringArray> reasons;
+    reasons->SetName("ForcedReasons");
+    for (const auto &why : tree.forced)
+      reasons->InsertNextValue(why);
+    out->GetFieldData()->AddArray(reasons);
+  }
+  for (const auto &[name, value] : tree.stats.entries()) {
     vtkNew<vtkDoubleArray> a;
     a->SetName(name.c_str());
     a->InsertNextValue(value);
@@ -53,56 +60,53 @@ void add_stats(const hoct::TreeResult &tree, vtkPolyData *out) {
 
 int vtkHoctContourTree::RequestData(vtkInformation *, vtkInformationVector **inputVector,
                                     vtkInformationVector *outputVector) {
-  vtkUnstructuredGrid *input = vtkUnstructuredGrid::GetData(inputVector[0]);
+  vtkUnstructuredGrid *grid = vtkUnstructuredGrid::GetData(inputVector[0]);
   vtkPolyData *points = vtkPolyData::GetData(outputVector, 0);
   vtkPolyData *arcs = vtkPolyData::GetData(outputVector, 1);
   vtkPolyData *simplified = vtkPolyData::GetData(outputVector, 2);
-  if (!input || !points || !arcs || !simplified) {
+  if (!grid || !points || !arcs || !simplified) {
     vtkErrorMacro("Higher-Order Contour Tree: missing input or output");
     return 0;
   }
   try {
-    // The same library calls as `hoct tree` (apps/hoct/cmd_tree.cpp), the mesh built from an
-    // input it consumes (its arrays released as the mesh takes their place).
-    hoct::MeshInput mesh_input =
-        hoct::paraview::mesh_input_from_grid(input, this->GetInputArrayToProcess(0, inputVector));
+    // The properties as a library request: the same call as `hoct tree` (pipeline/compute_tree).
+    hoct::TreeRequest rq;
+    rq.method = this->Method == LINEAR   ? hoct::TreeMethod::Linear
+                : this->Method == REFINE ? hoct::TreeMethod::Refine
+                                         : hoct::TreeMethod::Exact;
+    rq.refine = this->RefineLevel;
+    rq.augmented = this->Augmented;
+    rq.keep_flat = this->KeepFlat;
+    rq.force = this->Force;
+    rq.threads = this->Threads;
+    rq.arcs = hoct::ArcGeometry::AllPaths;
+    if (this->PersistenceThreshold > 0 && !this->Augmented)
+      rq.simplify =
+          hoct::Threshold{this->PersistenceThreshold, this->ThresholdMode == PERCENT_OF_RANGE};
+    else if (this->PersistenceThreshold > 0)
+      vtkWarningMacro("Higher-Order Contour Tree: simplification works on the reduced tree; "
+                      "turn Augmented off to get output 2");
+    hoct::MeshInput input =
+        hoct::paraview::mesh_input_from_grid(grid, this->GetInputArrayToProcess(0, inputVector));
     this->UpdateProgress(0.1);
-    const int threads = hoct::thread_count(this->Threads);
+    // Only the linear method reads the input's nodes again; else the build consumes them.
+    const hoct::MeshBuildOptions build{.throw_on_error = false,
+                                       .threads = hoct::thread_count(this->Threads)};
+    const bool keep_input = rq.method == hoct::TreeMethod::Linear;
     const hoct::Mesh mesh =
-        hoct::build_mesh(std::move(mesh_input), {.throw_on_error = true, .threads = threads});
-    const std::string problem = hoct::domain_problem(mesh.topology);
-    if (!problem.empty()) {
-      throw hoct::Error("the input grid: " + problem);
-    }
-    hoct::ExactTreeOptions options;
-    options.augmented = this->Augmented;
-    options.threads = threads;
-    options.arc_geometry = !this->Augmented; // as hoct tree: an augmented tree's arcs straight
-    hoct::TreeResult tree = hoct::exact_contour_tree(mesh, options);
-    this->UpdateProgress(0.7);
-    if (!this->Augmented) {
-      tree = hoct::contract_flat(tree); // one node per flat region, as the CLI
-    }
-    hoct::compute_arc_paths(tree, threads);
-    const hoct::TreePolyData layout = hoct::tree_polydata(tree);
+        keep_input ? hoct::build_mesh(input, build) : hoct::build_mesh(std::move(input), build);
+    const hoct::TreeOutcome out = hoct::compute_tree(mesh, rq, keep_input ? &input : nullptr);
+    for (const auto &why : out.warnings)
+      vtkWarningMacro("Higher-Order Contour Tree: Force: " << why);
+    this->UpdateProgress(0.8);
+    const hoct::TreePolyData layout = hoct::tree_polydata(out.tree);
     hoct::paraview::critical_points_polydata(layout, points);
     hoct::paraview::arcs_polydata(layout, /*with_nodes=*/false, arcs);
-    add_stats(tree, points);
-    if (this->PersistenceThreshold > 0) {
-      if (this->Augmented) {
-        vtkWarningMacro("Higher-Order Contour Tree: simplification works on the reduced tree; "
-                        "turn Augmented off to get output 2");
-      } else {
-        const double range =
-            tree.nodes.empty() ? 0.0 : tree.nodes.back().value - tree.nodes.front().value;
-        const double threshold = this->ThresholdMode == PERCENT_OF_RANGE
-                                     ? this->PersistenceThreshold / 100 * range
-                                     : this->PersistenceThreshold;
-        hoct::TreeResult simple = hoct::simplify_tree(tree, threshold);
-        hoct::compute_arc_paths(simple, threads);
-        hoct::paraview::arcs_polydata(hoct::tree_polydata(simple), /*with_nodes=*/true, simplified);
-        add_stats(simple, simplified);
-      }
+    add_stats(out.tree, points);
+    if (out.simplified) {
+      hoct::paraview::arcs_polydata(hoct::tree_polydata(*out.simplified), /*with_nodes=*/true,
+                                    simplified);
+      add_stats(*out.simplified, simplified);
     }
   } catch (const std::exception &e) {
     points->Initialize();
@@ -119,6 +123,14 @@ void vtkHoctContourTree::PrintSelf(ostream &os, vtkIndent indent) {
   os << indent << "PersistenceThreshold: " << this->PersistenceThreshold << "\n";
   os << indent << "ThresholdMode: "
      << (this->ThresholdMode == PERCENT_OF_RANGE ? "percent of range" : "absolute") << "\n";
+  os << indent << "Method: "
+     << (this->Method == LINEAR   ? "linear"
+         : this->Method == REFINE ? "refine"
+                                  : "exact")
+     << "\n";
+  os << indent << "RefineLevel: " << this->RefineLevel << "\n";
   os << indent << "Augmented: " << this->Augmented << "\n";
+  os << indent << "KeepFlat: " << this->KeepFlat << "\n";
+  os << indent << "Force: " << this->Force << "\n";
   os << indent << "Threads: " << this->Threads << "\n";
 }

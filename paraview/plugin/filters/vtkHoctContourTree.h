@@ -30,6 +30,26 @@ public:
   vtkGetMacro(Augmented, bool);
   vtkBooleanMacro(Augmented, bool);
 
+  // The tree's method: EXACT (the piecewise-polynomial field), LINEAR (PL of the input's nodes,
+  // `hoct tree --linear`) or REFINE (PL of the exact field on RefineLevel x RefineLevel
+  // sub-triangles per cell, `hoct tree --refine K`).
+  enum Methods { EXACT = 0, LINEAR = 1, REFINE = 2 };
+  vtkSetClampMacro(Method, int, EXACT, REFINE);
+  vtkGetMacro(Method, int);
+  vtkSetClampMacro(RefineLevel, int, 1, 1024);
+  vtkGetMacro(RefineLevel, int);
+
+  // Keep the nodes and zero-length arcs of plateaus (`hoct tree --keep-flat`).
+  vtkSetMacro(KeepFlat, bool);
+  vtkGetMacro(KeepFlat, bool);
+  vtkBooleanMacro(KeepFlat, bool);
+
+  // Compute what is well defined on a domain that is not one disk or sphere, or past inverted
+  // cells and unmerged duplicate vertices (`hoct tree --force`); the outputs' field data say why.
+  vtkSetMacro(Force, bool);
+  vtkGetMacro(Force, bool);
+  vtkBooleanMacro(Force, bool);
+
   // Threads for the mesh build, the tree and the arcs (0: all cores). The result does not
   // depend on it.
   vtkSetClampMacro(Threads, int, 0, 1024);
@@ -46,6 +66,10 @@ protected:
   double PersistenceThreshold = 0.0;
   int ThresholdMode = PERCENT_OF_RANGE;
   bool Augmented = false;
+  int Method = EXACT;
+  int RefineLevel = 4;
+  bool KeepFlat = false;
+  bool Force = false;
   int Threads = 0;
 
 private:

@@ -1,5 +1,6 @@
-#include "tree/tree_check.hpp"
+#include "analysis/tree_check.hpp"
 
+#include "poly/reference_triangle.hpp"
 #include "tree/union_find.hpp"
 
 #include <algorithm>
@@ -13,8 +14,7 @@ namespace {
 
 using P2 = std::array<double, 2>;
 
-// The reference triangle's corners.
-constexpr P2 kCorner[3] = {{0, 0}, {1, 0}, {0, 1}};
+constexpr const Vec2 (&kCorner)[3] = kReferenceCorner;
 
 // Differences below this are not told apart: subnormal numbers have no relative precision left
 // (a field of values around 1e-310 evaluates to 0 in places).
@@ -255,12 +255,7 @@ private:
         vertex_cells_[fill[t.cell_vertices(c)[k]]++] = {c, k};
   }
 
-  int local_edge_of(int64_t c, int64_t e) const {
-    for (int k = 0; k < 3; ++k)
-      if (mesh_.topology.cell_edge(c, k) == e)
-        return k;
-    return -1;
-  }
+  int local_edge_of(int64_t c, int64_t e) const { return mesh_.topology.local_edge(c, e); }
 
   // Directions from corner k of the reference triangle towards corner j.
   static P2 towards(int k, int j) {
@@ -382,8 +377,7 @@ private:
     auto half_disk = [&](int64_t cell, int kk, double tt, bool forward) {
       P2 along, inward;
       edge_frame(kk, along, inward);
-      const P2 base = {kCorner[kk][0] + tt * (kCorner[(kk + 1) % 3][0] - kCorner[kk][0]),
-                       kCorner[kk][1] + tt * (kCorner[(kk + 1) % 3][1] - kCorner[kk][1])};
+      const P2 base = point_on_edge(kk, tt);
       // Both ends on the edge itself: along a crease the lower (upper) sectors are thin.
       for (int s = 0; s <= m; ++s) {
         const double w = static_cast<double>(s) / m;

@@ -1,4 +1,4 @@
-#include "tree/surface_graph_geometry.hpp"
+#include "exact/surface_graph_geometry.hpp"
 
 #include <algorithm>
 

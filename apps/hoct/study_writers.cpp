@@ -1,4 +1,4 @@
-#include "io/study_writers.hpp"
+#include "study_writers.hpp"
 
 #include "io/atomic_file.hpp"
 #include "io/vtk_xml_arrays.hpp"

@@ -1,12 +1,10 @@
-#include "cell/cell_nodes.hpp"
+#include "poly/reference_triangle.hpp"
 
 namespace hoct {
 
 Vec2 point_on_edge(int k, double s) {
-  static constexpr double kCorner[3][2] = {{0, 0}, {1, 0}, {0, 1}};
-  const int j = (k + 1) % 3;
-  return {kCorner[k][0] + s * (kCorner[j][0] - kCorner[k][0]),
-          kCorner[k][1] + s * (kCorner[j][1] - kCorner[k][1])};
+  const Vec2 &a = kReferenceCorner[k], &b = kReferenceCorner[(k + 1) % 3];
+  return {a[0] + s * (b[0] - a[0]), a[1] + s * (b[1] - a[1])};
 }
 
 Vec2 inward_normal(int k) {

@@ -1,0 +1,208 @@
+#include "exact/cell_phase.hpp"
+
+#include "cell/sector_connections.hpp"
+#include "poly/gradient_zeros.hpp"
+#include "poly/reference_triangle.hpp"
+#include "util/parallel_for.hpp"
+#include "util/stopwatch.hpp"
+
+#include <algorithm>
+#include <span>
+
+namespace hoct {
+namespace {
+
+using clock_type = Stopwatch::clock;
+
+// Cells per block of the cell loop: a block's critical points are all found before its
+// connections, so that each pass is timed once per block, not per cell (a clock read costs
+// about as much as a cell without critical points).
+constexpr int64_t kCellBlock = 512;
+
+// Per-thread buffers of the cell phase, reused from cell to cell.
+struct CellScratch {
+  // The block's certified interior critical points, cell by cell (the block's cell i's from
+  // critical_first[i] to critical_first[i + 1]).
+  std::vector<InteriorCritical> critical;
+  int32_t critical_first[kCellBlock + 1];
+  // The block's cells that have connections to certify (not falling back, with nodes besides
+  // their corners: with only those, every sector lies along an edge), as offsets in the block.
+  int32_t to_connect[kCellBlock];
+  CellNodes cn;
+  std::vector<int> interior_idx;
+  std::vector<CellEdgeNode> edge_nodes;
+  BernsteinTriangle poly; // the current cell's polynomial (storage reused from cell to cell)
+  SectorResult sectors;   // the current cell's connections
+};
+
+// The certified connections of regular cell c (its interior critical points: `critical`), a
+// cell with nodes besides its corners (with only those, every sector lies along an edge),
+// appended with its interior nodes to `out`; or, when a sector cannot be connected, the reason
+// for falling back (nothing appended).
+uint8_t connect_cell(const Mesh &mesh, const EdgeNodes &en, int64_t c,
+                     std::span<const InteriorCritical> critical, bool arc_geometry,
+                     CellScratch &scratch, CellChunk &out) {
+  const Topology &topo = mesh.topology;
+  const Field &field = mesh.field;
+  const int64_t edge_base = topo.num_vertices();
+  scratch.poly.assign(field.degree(c), field.coefficients(c));
+  const BernsteinTriangle &g = scratch.poly;
+  CellNodes &cn = scratch.cn;
+  cn.nodes.clear();
+  scratch.interior_idx.clear();
+  scratch.edge_nodes.clear();
+  for (int k = 0; k < 3; ++k) {
+    const int64_t v = topo.cell_vertices(c)[k];
+    cn.nodes.push_back({kReferenceCorner[k], field.vertex_value(v), v});
+  }
+  for (int k = 0; k < 3; ++k) {
+    const int64_t e = topo.cell_edge(c, k);
+    const bool rev = topo.edge_reversed(c, k);
+    auto &chain = cn.chain[k];
+    auto &cs = cn.chain_s[k];
+    chain.assign(1, k);
+    cs.assign(1, 0.0);
+    const int64_t n = en.count(e);
+    for (int64_t i = 0; i < n; ++i) {
+      const int64_t gi = rev ? en.offset[e] + n - 1 - i : en.offset[e] + i;
+      const EdgeNode &node = en.nodes[gi];
+      const double s = rev ? 1 - node.t : node.t;
+      const int idx = static_cast<int>(cn.nodes.size());
+      cn.nodes.push_back({point_on_edge(k, s), node.value, edge_base + gi});
+      chain.push_back(idx);
+      cs.push_back(s);
+      scratch.edge_nodes.push_back({k, s, node.second, idx});
+    }
+    chain.push_back((k + 1) % 3);
+    cs.push_back(1.0);
+  }
+  for (std::size_t i = 0; i < critical.size(); ++i) {
+    scratch.interior_idx.push_back(static_cast<int>(cn.nodes.size()));
+    cn.nodes.push_back({critical[i].uv, critical[i].value, -1 - static_cast<int64_t>(i)});
+  }
+  const SectorResult &r = scratch.sectors;
+  connect_sectors(g, cn, scratch.interior_idx, scratch.edge_nodes, out.counters, scratch.sectors,
+                  arc_geometry);
+  if (r.failed || r.degenerate)
+    return fallback_bit(r.failed ? FallbackReason::CertificationFailed
+                                 : FallbackReason::DegenerateEdgeNode);
+  // The cell's interior node i becomes the chunk's node first + i.
+  const int64_t first = static_cast<int64_t>(out.nodes.size());
+  for (const InteriorCritical &p : critical)
+    out.nodes.push_back({c, p.uv, p.value});
+  auto ref = [&](int64_t r) { return r >= 0 ? r : -1 - (first + (-1 - r)); };
+  for (auto [a, b] : r.join)
+    out.join.push_back({ref(a), ref(b)});
+  for (auto [a, b] : r.split)
+    out.split.push_back({ref(a), ref(b)});
+  if (arc_geometry)
+    for (int side = 0; side < 2; ++side) {
+      const auto &edges = side == 0 ? r.join : r.split;
+      const auto &paths = side == 0 ? r.join_paths : r.split_paths;
+      for (std::size_t i = 0; i < edges.size(); ++i) {
+        std::vector<Vec3> inner;
+        for (std::size_t k = 1; k + 1 < paths[i].size(); ++k)
+          inner.push_back(mesh.geometry.position(c, paths[i][k][0], paths[i][k][1]));
+        out.geo.push_back({ref(edges[i].first), ref(edges[i].second), std::move(inner)});
+      }
+    }
+  return 0;
+}
+
+} // namespace
+
+CellPhase run_cell_phase(const Mesh &mesh, const EdgeNodes &en, const ExactTreeOptions &opt,
+                         int threads) {
+  const Topology &topo = mesh.topology;
+  const Field &field = mesh.field;
+  const int64_t nc = topo.num_cells();
+  CellPhase phase;
+  UninitializedVector<uint8_t> &fallback = phase.fallback; // every cell's entry is written below
+  fallback.resize(static_cast<std::size_t>(nc));
+  const int64_t chunks = threads > 1 ? std::min<int64_t>(nc, int64_t{threads} * 16) : 1;
+  phase.chunks.resize(static_cast<std::size_t>(chunks));
+  std::vector<CellChunk> &chunk_out = phase.chunks;
+  parallel_chunks(nc, chunks, threads, [&](int64_t k, int64_t begin, int64_t end, int) {
+    CellChunk &out = chunk_out[k];
+    // The cell shape, asked for only when a sliver's reference-triangle search leaves zeros
+    // unresolved (find_gradient_zeros then retries in that shape).
+    int64_t cell = begin;
+    GradientZeroOptions zero_options;
+    zero_options.frame = [&] { return mesh.geometry.frame(cell); };
+    CellScratch scratch;
+    auto block_start = clock_type::now();
+    for (int64_t block = begin; block < end; block += kCellBlock) {
+      const int64_t block_end = std::min(end, block + kCellBlock);
+      // Pass 1: the cells' interior critical points, and which cells fall back.
+      scratch.critical.clear();
+      int connect_count = 0;
+      for (int64_t c = block; c < block_end; ++c) {
+        scratch.critical_first[c - block] = static_cast<int32_t>(scratch.critical.size());
+        uint8_t why = 0;
+        bool edge_nodes_on = false;
+        for (int j = 0; j < 3; ++j) {
+          const int64_t e = topo.cell_edge(c, j);
+          if (en.degeneracy[e] != kEdgeOk)
+            why |= fallback_bit(FallbackReason::DegenerateEdge);
+          edge_nodes_on |= en.count(e) != 0;
+        }
+        // Most cells: no gradient zero, decided on the stored coefficients.
+        const GradientScreen screen = screen_gradient(field.coefficients(c), field.degree(c),
+                                                      zero_options.constant_tolerance);
+        if (screen.verdict == GradientScreen::kConstant) {
+          why |= fallback_bit(FallbackReason::ConstantCell);
+        } else if (screen.verdict != GradientScreen::kNoZero &&
+                   !(why & fallback_bit(FallbackReason::DegenerateEdge))) {
+          // (A cell with a degenerate edge falls back whatever its interior holds, and the
+          // refinement does not use interior critical points: its zeros are not searched. Next
+          // to a plateau such cells are nearly flat, and their searches took half of the tree
+          // of 10^4 cells clamped over 30% of the values.)
+          scratch.poly.assign(field.degree(c), field.coefficients(c));
+          const BernsteinTriangle &g = scratch.poly;
+          cell = c;
+          const GradientZeros z = find_gradient_zeros(g, zero_options, screen);
+          if (z.constant)
+            why |= fallback_bit(FallbackReason::ConstantCell);
+          if (z.budget_exhausted)
+            why |= fallback_bit(FallbackReason::CriticalCurve);
+          for (const GradientZero &p : z.zeros) {
+            if (!p.certified) {
+              why |= fallback_bit(FallbackReason::UncertifiedZero);
+              ++out.unresolved;
+            } else if (p.near_boundary) {
+              why |= fallback_bit(FallbackReason::ZeroNearBoundary);
+            } else {
+              scratch.critical.push_back({{p.u, p.v}, g(p.u, p.v)});
+            }
+          }
+        }
+        fallback[c] = why;
+        if (!why &&
+            (edge_nodes_on ||
+             scratch.critical.size() > static_cast<std::size_t>(scratch.critical_first[c - block])))
+          scratch.to_connect[connect_count++] = static_cast<int32_t>(c - block);
+      }
+      scratch.critical_first[block_end - block] = static_cast<int32_t>(scratch.critical.size());
+      const auto critical_done = clock_type::now();
+      // Pass 2: the certified connections of the cells that have any.
+      for (int n = 0; n < connect_count; ++n) {
+        const int32_t i = scratch.to_connect[n];
+        const std::span<const InteriorCritical> critical(
+            scratch.critical.data() + scratch.critical_first[i],
+            static_cast<std::size_t>(scratch.critical_first[i + 1] - scratch.critical_first[i]));
+        fallback[block + i] =
+            connect_cell(mesh, en, block + i, critical, opt.arc_geometry, scratch, out);
+      }
+      for (int64_t c = block; c < block_end; ++c)
+        if (fallback[c])
+          out.fallback_cells.push_back(c);
+      const auto block_done = clock_type::now();
+      out.critical_seconds += seconds_between(block_start, critical_done);
+      out.connection_seconds += seconds_between(critical_done, block_done);
+      block_start = block_done;
+    }
+  });
+  return phase;
+}
+
+} // namespace hoct

@@ -1,0 +1,107 @@
+#include "exact/degenerate_cells.hpp"
+
+#include "exact/cell_phase.hpp"
+#include "pl/cell_refinement.hpp"
+
+#include <cmath>
+#include <map>
+
+namespace hoct {
+
+DegenerateCells refine_degenerate_cells(const Mesh &mesh, const EdgeNodes &en, int K,
+                                        bool arc_geometry, ExactGraph &g) {
+  const Topology &topo = mesh.topology;
+  const Field &field = mesh.field;
+  DegenerateCells out;
+  std::map<std::pair<int64_t, int>, int64_t> lattice_node; // (edge, step from lo) -> id
+  std::array<std::vector<double>, 3> extra;
+  std::vector<int64_t> ids;
+  for (const int64_t c : g.fallback_cells) {
+    for (int b = 0; b < kFallbackReasons; ++b)
+      if (g.fallback[c] & (1u << b))
+        ++out.reasons[b];
+    // A constant cell is one flat region (docs/ALGORITHM.md, flat regions): its boundary, the
+    // chains of its three edges (its corners, and the lattice nodes its non-constant neighbours
+    // put there), all of its value, already connects it; sub-vertices inside it would only add
+    // nodes of that value.
+    if (g.fallback[c] & fallback_bit(FallbackReason::ConstantCell)) {
+      for (int k = 0; k < 3; ++k) {
+        g.mark_fallback(topo.cell_vertices(c)[k]);
+        const int64_t e = topo.cell_edge(c, k);
+        for (int64_t i = 0; i < en.count(e); ++i)
+          g.mark_fallback(g.edge_base + en.offset[e] + i);
+      }
+      continue;
+    }
+    const BernsteinTriangle poly = field.cell_polynomial(c);
+    // Edge nodes of each local edge (local parameters, ascending), minus lattice coincidences.
+    std::array<std::vector<int64_t>, 3> extra_ids;
+    std::array<std::map<int, int64_t>, 3> lattice_hits; // local step -> edge node id
+    for (int k = 0; k < 3; ++k) {
+      const int64_t e = topo.cell_edge(c, k);
+      const bool rev = topo.edge_reversed(c, k);
+      extra[k].clear();
+      const int64_t n = en.count(e);
+      for (int64_t i = 0; i < n; ++i) {
+        const int64_t gi = rev ? en.offset[e] + n - 1 - i : en.offset[e] + i;
+        const double s = rev ? 1 - en.nodes[gi].t : en.nodes[gi].t;
+        const double step = std::round(s * K);
+        if (std::abs(s * K - step) <= 1e-9 && step > 0 && step < K) {
+          lattice_hits[k][static_cast<int>(step)] = g.edge_base + gi;
+          continue;
+        }
+        extra[k].push_back(s);
+        extra_ids[k].push_back(g.edge_base + gi);
+      }
+    }
+    const CellRefinement cr = refine_cell(K, extra);
+    ids.resize(cr.vertices.size());
+    for (std::size_t i = 0; i < cr.vertices.size(); ++i) {
+      const CellSubVertex &sv = cr.vertices[i];
+      switch (sv.kind) {
+      case CellSubVertex::Kind::Corner:
+        ids[i] = topo.cell_vertices(c)[sv.corner];
+        break;
+      case CellSubVertex::Kind::EdgeExtra:
+        ids[i] = extra_ids[sv.edge][sv.index];
+        break;
+      case CellSubVertex::Kind::EdgeLattice: {
+        auto hit = lattice_hits[sv.edge].find(sv.index);
+        if (hit != lattice_hits[sv.edge].end()) {
+          ids[i] = hit->second;
+          break;
+        }
+        const int64_t e = topo.cell_edge(c, sv.edge);
+        const int step = topo.edge_reversed(c, sv.edge) ? K - sv.index : sv.index;
+        auto [it, fresh] = lattice_node.try_emplace({e, step}, -1);
+        if (fresh)
+          it->second = g.add_node(field.edge_polynomial(e)(static_cast<double>(step) / K), c,
+                                  {sv.u, sv.v}, NodeLocation::Edge);
+        ids[i] = it->second;
+        break;
+      }
+      case CellSubVertex::Kind::Interior:
+        ids[i] = g.add_node(poly(sv.u, sv.v), c, {sv.u, sv.v}, NodeLocation::Interior);
+        break;
+      }
+    }
+    for (int64_t id : ids)
+      if (id >= g.tail_base)
+        g.tail_source[id - g.tail_base].fallback = true;
+      else
+        g.mark_fallback(id);
+    for (const auto &t : cr.triangles)
+      for (int j = 0; j < 3; ++j) {
+        g.common_edges.push_back({ids[t[j]], ids[t[(j + 1) % 3]]});
+        if (arc_geometry)
+          g.geo_edges.push_back({ids[t[j]], ids[t[(j + 1) % 3]], {}});
+      }
+  }
+
+  out.lattice_on_edge.reserve(lattice_node.size());
+  for (const auto &[key, id] : lattice_node)
+    out.lattice_on_edge.emplace_back(key.first, static_cast<double>(key.second) / K, id);
+  return out;
+}
+
+} // namespace hoct

@@ -1,0 +1,100 @@
+#include "pipeline/compute_tree.hpp"
+
+#include "exact/exact_contour_tree.hpp"
+#include "pipeline/domain_check.hpp"
+#include "pl/pl_contour_tree.hpp"
+#include "pl/pl_mesh.hpp"
+#include "pl/refinement.hpp"
+#include "util/error.hpp"
+#include "util/parallel_for.hpp"
+#include "util/stopwatch.hpp"
+
+namespace hoct {
+namespace {
+
+void check_request(const TreeRequest &rq, const MeshInput *input) {
+  if (rq.method == TreeMethod::Refine && (rq.refine < 1 || rq.refine > 1024))
+    throw Error("refine: K must be between 1 and 1024, not " + std::to_string(rq.refine));
+  if (rq.method == TreeMethod::Linear && input == nullptr)
+    throw Error("the linear method needs the mesh's Lagrange nodes as read (the input)");
+  if (rq.simplify && rq.augmented)
+    throw Error("simplification works on the reduced tree (drop --augmented)");
+  if (rq.threads < 0)
+    throw Error("threads must be 0 (all cores) or more, not " + std::to_string(rq.threads));
+}
+
+// The tree by the requested method, its phases timed.
+TreeResult method_tree(const Mesh &mesh, const TreeRequest &rq, const MeshInput *input,
+                       int threads) {
+  // An augmented tree's arcs join consecutive nodes of a contour-tree arc, which may lie
+  // anywhere on its band: a path between them would wander over it. They are drawn straight.
+  const bool graph = rq.arcs != ArcGeometry::None && !rq.augmented;
+  Stopwatch clock;
+  if (rq.method == TreeMethod::Exact) {
+    ExactTreeOptions eo;
+    eo.augmented = rq.augmented;
+    eo.fallback_refinement = rq.fallback_refinement;
+    eo.threads = threads;
+    eo.arc_geometry = graph;
+    eo.progress = rq.progress;
+    TreeResult tree = exact_contour_tree(mesh, eo);
+    tree.stats.time.tree = clock.seconds();
+    return tree;
+  }
+  const PlMesh pl =
+      rq.method == TreeMethod::Linear ? split_lagrange_cells(*input) : refine(mesh, rq.refine);
+  const double pl_seconds = clock.lap();
+  if (rq.progress)
+    rq.progress("piecewise-linear mesh", pl_seconds);
+  TreeResult tree = pl_contour_tree(pl, rq.augmented, method_name(rq), graph, threads);
+  tree.stats.time.pl_mesh = pl_seconds;
+  tree.stats.time.tree = clock.seconds();
+  return tree;
+}
+
+} // namespace
+
+std::string method_name(const TreeRequest &rq) {
+  switch (rq.method) {
+  case TreeMethod::Exact:
+    return "exact";
+  case TreeMethod::Linear:
+    return "linear";
+  case TreeMethod::Refine:
+    return "refine k=" + std::to_string(rq.refine);
+  }
+  return "?";
+}
+
+TreeOutcome compute_tree(const Mesh &mesh, const TreeRequest &rq, const MeshInput *input) {
+  check_request(rq, input);
+  TreeOutcome out;
+  out.warnings = check_domain(mesh, rq.force);
+  const int threads = thread_count(rq.threads);
+  TreeResult tree = method_tree(mesh, rq, input, threads);
+  // Plateaus (equal values, ordered by node id) give arcs of length zero and leaf branches of
+  // persistence zero: artefacts of the tie-breaking. Each flat region becomes one node.
+  if (!rq.augmented && !rq.keep_flat)
+    tree = contract_flat(tree);
+  else
+    decompose_branches(tree);
+  tree.forced = out.warnings;
+  tree.stats.input_cells = mesh.topology.num_cells();
+  tree.stats.time.read = rq.read_seconds;
+  tree.stats.time.check = rq.build_seconds;
+  tree.stats.time.bernstein = mesh.build_times.field;
+  if (rq.simplify) {
+    const double range =
+        tree.nodes.empty() ? 0 : tree.nodes.back().value - tree.nodes.front().value;
+    out.simplified = simplify_tree(tree, rq.simplify->absolute(range));
+    out.simplified->forced = out.warnings;
+  }
+  if (rq.arcs == ArcGeometry::AllPaths || (rq.arcs == ArcGeometry::Paths && !out.simplified))
+    compute_arc_paths(tree, threads);
+  if (out.simplified && (rq.arcs == ArcGeometry::AllPaths || rq.arcs == ArcGeometry::Paths))
+    compute_arc_paths(*out.simplified, threads);
+  out.tree = std::move(tree);
+  return out;
+}
+
+} // namespace hoct

@@ -1,0 +1,75 @@
+// The statistics of a computed tree, typed: what the exact pipeline counted (nodes, connections,
+// every fallback by reason), what the PL tree worked on, what the reductions did, and the time
+// of each phase. Writers list them as name/value entries (entries()), in one fixed order.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace hoct {
+
+// Why a cell of the exact pipeline falls back to the PL rule on a refinement of itself.
+enum class FallbackReason : uint8_t {
+  ConstantCell,        // the cell's polynomial is constant
+  CriticalCurve,       // its gradient vanishes on a curve (the zero search ran out of budget)
+  UncertifiedZero,     // a gradient zero the search could not certify
+  ZeroNearBoundary,    // a gradient zero too close to the cell's boundary to be placed
+  DegenerateEdge,      // one of its edges is constant or has a degenerate critical point
+  DegenerateEdgeNode,  // an edge node whose sectors cannot be told apart
+  CertificationFailed, // a sector no certified monotone path connects
+};
+inline constexpr int kFallbackReasons = 7;
+// "fallback_constant_cell", ...: the statistic's name.
+const char *stat_name(FallbackReason r);
+
+struct ExactCounts {
+  int64_t cells = 0;
+  int64_t graph_nodes = 0;
+  int64_t edge_critical_points = 0;
+  int64_t interior_critical_points = 0;
+  int64_t connections_direct = 0, connections_traced = 0, connections_failed = 0;
+  int64_t descent_steps = 0;
+  int64_t fallback_cells = 0;
+  std::array<int64_t, kFallbackReasons> fallback_by_reason{}; // cells with each reason
+  int64_t unresolved_interior_zeros = 0;
+
+  int64_t fallbacks(FallbackReason r) const { return fallback_by_reason[static_cast<int>(r)]; }
+};
+
+struct PlCounts {
+  int64_t vertices = 0, triangles = 0;
+};
+
+// Seconds per phase; empty where the phase did not run or was not timed.
+struct TreeTimings {
+  std::optional<double> read, check, bernstein, pl_mesh;
+  // The exact pipeline's phases.
+  std::optional<double> edge_nodes, cells, interior_critical_points, connections, graph_assembly;
+  std::optional<double> graph; // the PL tree's graph
+  std::optional<double> sweeps, merge, pairs, output;
+  std::optional<double> tree; // the whole tree computation
+};
+
+struct TreeStats {
+  std::optional<ExactCounts> exact;
+  std::optional<PlCounts> pl;
+  std::optional<int64_t> input_cells;
+  std::optional<int64_t> flat_nodes_merged;
+  std::optional<int64_t> nodes_before_simplification;
+  std::optional<double> simplification_threshold;
+  TreeTimings time;
+  // Entries this version does not know (read from another version's JSON), kept as they are.
+  std::vector<std::pair<std::string, double>> other;
+
+  // As name/value pairs ("cells", ..., "time_tree_s"), in one fixed order; the time_* entries
+  // only with `timings`.
+  std::vector<std::pair<std::string, double>> entries(bool timings = true) const;
+  // The inverse of entries() (unknown names go to `other`).
+  static TreeStats from_entries(const std::vector<std::pair<std::string, double>> &entries);
+};
+
+} // namespace hoct
