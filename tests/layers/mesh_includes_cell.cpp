@@ -1,0 +1,2 @@
+// Must not compile in the mesh module's layer: cell sits above mesh.
+#include "cell/edge_nodes.hpp"

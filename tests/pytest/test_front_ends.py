@@ -1,0 +1,94 @@
+"""One pipeline behind every front end: for the same request, `hoct tree --json --no-timings`
+and the Python module's `contour_tree(...).to_json(timings=False)` are the same bytes, on every
+generated dataset and for every method and option (the ParaView filter is compared with the
+command line in tests/paraview/test_plugin.py)."""
+import os
+import subprocess
+import tempfile
+
+import pytest
+
+import hoct
+
+HOCT = os.environ.get("HOCT_BIN", "hoct")
+SIZES = {"heater": 1500, "conductor": 1200, "random": 2000}
+
+# (CLI flags, Python keyword arguments): the same request.
+REQUESTS = [
+    ([], {}),
+    (["--linear"], {"method": "linear"}),
+    (["--refine", "2"], {"method": "refine", "refine": 2}),
+    (["--simplify", "1%"], {"simplify": "1%"}),
+    (["--simplify", "0.05"], {"simplify": 0.05}),
+    (["--keep-flat"], {"keep_flat": True}),
+    (["--augmented"], {"augmented": True}),
+    (["--linear", "--simplify", "2%"], {"method": "linear", "simplify": "2%"}),
+    (["--threads", "1"], {"threads": 1}),
+]
+
+
+@pytest.fixture(scope="module")
+def data():
+    with tempfile.TemporaryDirectory(prefix="hoct-front-ends-") as d:
+        paths = {}
+        for name in hoct.dataset_names():
+            path = os.path.join(d, name + ".vtu")
+            cells = SIZES.get(name, 0)
+            subprocess.run([HOCT, "generate", name, "-o", path] +
+                           (["--cells", str(cells)] if cells else []),
+                           check=True, capture_output=True)
+            paths[name] = path
+        yield d, paths
+
+
+def cli_json(path, flags):
+    out = path + ".cli.json"
+    subprocess.run([HOCT, "tree", path, "-q", "--no-timings", "--json", out, *flags], check=True)
+    with open(out) as f:
+        return f.read()
+
+
+@pytest.mark.parametrize("flags,kwargs", REQUESTS, ids=[" ".join(r[0]) or "exact" for r in REQUESTS])
+@pytest.mark.parametrize("name", hoct.dataset_names())
+def test_cli_and_python_write_the_same_bytes(data, name, flags, kwargs):
+    _, paths = data
+    path = paths[name]
+    expected = cli_json(path, flags)
+    got = hoct.contour_tree(hoct.read(path), **kwargs).to_json(timings=False) + "\n"
+    assert got == expected
+    assert '"time_' not in got
+
+
+def test_forced_domains_are_the_same_too(data):
+    # Two separate triangles: refused by both without force, the same forced tree with it.
+    import numpy as np
+
+    d, _ = data
+    points = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0], [3, 0, 0], [4, 0, 0], [3, 1, 0]], float)
+    cells = np.array([[0, 1, 2], [3, 4, 5]])
+    values = np.array([0.0, 1.0, 2.0, 3.0, 4.0, 5.0])
+    path = os.path.join(d, "two.vtu")
+    import meshio
+
+    meshio.write(path, meshio.Mesh(points, [("triangle", cells)], point_data={"f": values}))
+    r = subprocess.run([HOCT, "tree", path, "-q"], capture_output=True, text=True)
+    assert r.returncode == 1 and "2 separate components" in r.stderr
+    with pytest.raises(hoct.HoctError, match="2 separate components"):
+        hoct.contour_tree(hoct.read(path))
+    expected = cli_json(path, ["--force"])
+    assert '"forced": true' in expected
+    assert hoct.contour_tree(hoct.read(path), force=True).to_json(timings=False) + "\n" == expected
+
+
+def test_bad_requests_fail_the_same_way(data):
+    _, paths = data
+    path = paths["sphere"]
+    for flags, kwargs, words in [
+        (["--simplify", "lots"], {"simplify": "lots"}, "is not a threshold"),
+        (["--simplify", "1%", "--augmented"], {"simplify": "1%", "augmented": True},
+         "works on the reduced tree"),
+    ]:
+        r = subprocess.run([HOCT, "tree", path, "-q", *flags], capture_output=True, text=True)
+        assert r.returncode == 1 and words in r.stderr, r.stderr
+        with pytest.raises(hoct.HoctError, match=words):
+            hoct.contour_tree(hoct.read(path), **kwargs)
