@@ -1,24 +1,22 @@
-// Small helpers of the benchmark: wall-clock timing, medians, peak resident memory, statistics
-// of a TreeResult, and a scratch directory for the files a run reads and writes.
+// Small helpers of the benchmark: wall-clock timing, medians, peak resident memory, and a scratch
+// directory for the files a run reads and writes.
 #pragma once
 
 #include "tree/tree_result.hpp"
+#include "util/stopwatch.hpp"
 
-#include <chrono>
 #include <string>
 #include <vector>
 
 namespace hoct::bench {
 
-using clock_type = std::chrono::steady_clock;
+using clock_type = Stopwatch::clock;
 
 inline double seconds_since(clock_type::time_point t0) {
-  return std::chrono::duration<double>(clock_type::now() - t0).count();
+  return seconds_between(t0, clock_type::now());
 }
 
 double median(std::vector<double> v);
-
-// A statistic of the tree ("time_sweeps_s", ...), 0 if absent.
 
 // Peak resident memory of this process (VmHWM, KiB).
 long peak_rss_kib();

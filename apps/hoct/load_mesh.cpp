@@ -5,17 +5,16 @@
 #include "mesh/duplicate_points.hpp"
 #include "util/error.hpp"
 #include "util/parallel_for.hpp"
+#include "util/stopwatch.hpp"
 
-#include <chrono>
 #include <cstdio>
 
 namespace hoct::cli {
 
 LoadedMesh load_mesh(const std::string &path, const std::string &scalar, bool strict,
                      double merge_tolerance, int threads, bool keep_input) {
-  using clock = std::chrono::steady_clock;
   LoadedMesh r;
-  const auto t0 = clock::now();
+  Stopwatch clock;
   ReadLimits limits = read_limits();
   limits.threads = thread_count(threads);
   r.input = read_mesh(path, scalar, limits);
@@ -27,12 +26,10 @@ LoadedMesh load_mesh(const std::string &path, const std::string &scalar, bool st
                    "bounding-box diagonal)\n",
                    static_cast<long long>(m.merged_points), path.c_str(), merge_tolerance);
   }
-  const auto t1 = clock::now();
+  r.read_seconds = clock.lap();
   const MeshBuildOptions build{.throw_on_error = strict, .threads = thread_count(threads)};
   r.mesh = keep_input ? build_mesh(r.input, build) : build_mesh(std::move(r.input), build);
-  const auto t2 = clock::now();
-  r.read_seconds = std::chrono::duration<double>(t1 - t0).count();
-  r.build_seconds = std::chrono::duration<double>(t2 - t1).count();
+  r.build_seconds = clock.lap();
   return r;
 }
 

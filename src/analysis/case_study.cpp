@@ -3,9 +3,9 @@
 #include "exact/exact_contour_tree.hpp"
 #include "pl/pl_contour_tree.hpp"
 #include "pl/refinement.hpp"
+#include "util/stopwatch.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 
 namespace hoct {
@@ -34,17 +34,16 @@ std::vector<int64_t> features(const TreeResult &t, double threshold) {
 } // namespace
 
 std::vector<StudyRow> case_study(const Mesh &mesh, const StudyOptions &opt) {
-  using clock = std::chrono::steady_clock;
   std::vector<StudyRow> rows;
   const double radius = opt.match_radius > 0 ? opt.match_radius : 0.05 * mesh.geometry.extent();
   ExactTreeOptions eo;
   eo.threads = opt.threads;
-  auto t0 = clock::now();
+  Stopwatch clock;
   // Flat regions contracted in both trees, as `hoct tree` reports them.
   const TreeResult exact = contract_flat(exact_contour_tree(mesh, eo));
   StudyRow er;
   er.triangles = mesh.topology.num_cells();
-  er.seconds = std::chrono::duration<double>(clock::now() - t0).count();
+  er.seconds = clock.lap();
   const auto ec = exact.type_counts();
   er.counts = {ec[0], ec[1], ec[2]};
   rows.push_back(er);
@@ -52,10 +51,10 @@ std::vector<StudyRow> case_study(const Mesh &mesh, const StudyOptions &opt) {
   for (int k : opt.levels) {
     StudyRow r;
     r.k = k;
-    t0 = clock::now();
+    clock.lap();
     const PlMesh pl = refine(mesh, k);
     const TreeResult t = contract_flat(pl_contour_tree(pl, false, ""));
-    r.seconds = std::chrono::duration<double>(clock::now() - t0).count();
+    r.seconds = clock.lap();
     r.triangles = static_cast<int64_t>(pl.triangles.size());
     const auto c = t.type_counts();
     r.counts = {c[0], c[1], c[2]};

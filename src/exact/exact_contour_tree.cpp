@@ -19,30 +19,14 @@ namespace {
 // The tree's nodes where they lie in the mesh, its arcs and persistence pairs.
 TreeResult tree_result(const Mesh &mesh, const EdgeNodes &en, const ExactGraph &g,
                        const ContourTree &ct, bool augmented) {
-  TreeResult r;
-  r.method = "exact";
-  r.augmented = augmented;
-  const auto types = ct.types();
-  const auto deg = ct.degrees();
-  r.nodes.resize(ct.size());
-  for (int64_t i = 0; i < ct.size(); ++i) {
-    const int64_t id = ct.nodes[i];
-    TreeNode &n = r.nodes[i];
-    n.type = types[i];
-    n.value = ct.values[i];
-    const NodeSource where = g.source(mesh.topology, en, id);
+  return tree_result_of(ct, "exact", augmented, [&](TreeNode &n) {
+    const NodeSource where = g.source(mesh.topology, en, n.graph_node);
     n.cell = where.cell;
     n.uv = where.uv;
     n.location = where.location;
     n.fallback = where.fallback;
-    n.graph_node = id;
     n.position = mesh.geometry.position(n.cell, n.uv[0], n.uv[1]);
-    n.up = deg[i][0];
-    n.down = deg[i][1];
-  }
-  r.arcs = ct.arcs;
-  r.pairs = tree_pairs(ct);
-  return r;
+  });
 }
 
 } // namespace

@@ -5,14 +5,11 @@
 #include "poly/sample_fit.hpp"
 #include "util/error.hpp"
 #include "util/page_pool.hpp"
-
-#include <chrono>
+#include "util/stopwatch.hpp"
 
 namespace hoct {
 
 namespace {
-
-using clock_type = std::chrono::steady_clock;
 
 void throw_if_invalid(const Mesh &m, const MeshInput &input, const MeshBuildOptions &options) {
   if (options.throw_on_error && m.problems.has_errors())
@@ -31,12 +28,8 @@ Mesh build(const MeshInput &input, MeshInput *consumed, const MeshBuildOptions &
   m.field_name = input.field_name;
   m.num_points = static_cast<int64_t>(input.points.size());
   MeshBuildTimes &times = m.build_times;
-  auto step_start = clock_type::now();
-  auto step_done = [&step_start](double &seconds) {
-    const auto now = clock_type::now();
-    seconds = std::chrono::duration<double>(now - step_start).count();
-    step_start = now;
-  };
+  Stopwatch step;
+  auto step_done = [&step](double &seconds) { seconds = step.lap(); };
   const bool structural_ok = check_input(input, m.problems, options.threads);
   step_done(times.input_checks);
   if (structural_ok) {

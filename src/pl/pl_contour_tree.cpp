@@ -27,28 +27,16 @@ TreeResult pl_contour_tree(const PlMesh &m, bool augmented, const std::string &m
       sweep_contour_tree(m.values, {edges, {}, {}}, augmented, sweep_threads, &sweep);
   clock.lap();
 
-  TreeResult r;
-  r.method = method;
-  r.augmented = augmented;
-  const auto types = ct.types();
-  const auto deg = ct.degrees();
-  r.nodes.resize(ct.size());
-  for (int64_t i = 0; i < ct.size(); ++i) {
-    const int64_t v = ct.nodes[i];
-    TreeNode &n = r.nodes[i];
-    n.type = types[i];
-    n.value = ct.values[i];
+  TreeResult r = tree_result_of(ct, method, augmented, [&](TreeNode &n) {
+    const int64_t v = n.graph_node;
     n.position = m.points[v];
-    n.up = deg[i][0];
-    n.down = deg[i][1];
-    n.graph_node = v;
     if (v < static_cast<int64_t>(m.source_cell.size()) && m.source_cell[v] >= 0) {
       n.cell = m.source_cell[v];
       n.uv = m.source_uv[v];
       n.location = classify_location(n.uv[0], n.uv[1]);
     }
-  }
-  r.arcs = ct.arcs;
+  });
+  r.stats.time.pairs = clock.lap(); // the result, its persistence pairs above all
   if (with_graph) {
     const ScalarGraph g = m.graph();
     auto graph = std::make_shared<GeometricGraph>(m.points, m.values);
@@ -58,14 +46,13 @@ TreeResult pl_contour_tree(const PlMesh &m, bool augmented, const std::string &m
           graph->add_edge(v, u);
     graph->finish();
     r.graph = std::move(graph);
+    r.stats.time.output = clock.lap();
   }
-  r.pairs = tree_pairs(ct);
   r.stats.pl =
       PlCounts{static_cast<int64_t>(m.values.size()), static_cast<int64_t>(m.triangles.size())};
   r.stats.time.graph = graph_seconds;
   r.stats.time.sweeps = sweep.order + sweep.sweeps;
   r.stats.time.merge = sweep.merge;
-  r.stats.time.pairs = clock.lap();
   return r;
 }
 

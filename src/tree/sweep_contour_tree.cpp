@@ -2,21 +2,18 @@
 
 #include "util/page_pool.hpp"
 #include "util/parallel_for.hpp"
+#include "util/stopwatch.hpp"
 #include "util/uninitialized_vector.hpp"
 
 #include <algorithm>
 #include <array>
-#include <chrono>
 #include <initializer_list>
 #include <stdexcept>
 
 namespace hoct {
 namespace {
 
-using clock_type = std::chrono::steady_clock;
-double seconds(clock_type::time_point a, clock_type::time_point b) {
-  return std::chrono::duration<double>(b - a).count();
-}
+using clock_type = Stopwatch::clock;
 
 // Augmented merge tree in rank space (indices of type I: 32 bits when they fit, halving the
 // memory the sweeps touch at random): parent[r] is the rank of r's parent, -1 at a root;
@@ -310,9 +307,9 @@ ContourTree sweep_ranked(std::span<const double> values, const SweepEdges &edges
   for (std::size_t i = 0; i < out.nodes.size(); ++i)
     out.values[i] = values[out.nodes[i]];
   if (timings) {
-    timings->order = seconds(t0, t1);
-    timings->sweeps = seconds(t1, t2);
-    timings->merge = seconds(t2, clock_type::now());
+    timings->order = seconds_between(t0, t1);
+    timings->sweeps = seconds_between(t1, t2);
+    timings->merge = seconds_between(t2, clock_type::now());
   }
   return out;
 }

@@ -60,6 +60,35 @@ struct TreeResult {
   std::array<int64_t, 4> type_counts() const;
 };
 
+// Persistence pairs of a (reduced or augmented) contour tree, with node indices of the tree.
+std::vector<PersistencePair> tree_pairs(const ContourTree &tree);
+
+// The result for contour tree `ct` of a graph, computed by `method`: each node's type, value,
+// degrees and graph node (its id in `ct`), the arcs and the persistence pairs; `place(node)`
+// then says where each node lies (position, cell, uv, location, fallback).
+template <class Place>
+TreeResult tree_result_of(const ContourTree &ct, const std::string &method, bool augmented,
+                          Place &&place) {
+  TreeResult r;
+  r.method = method;
+  r.augmented = augmented;
+  const auto types = ct.types();
+  const auto deg = ct.degrees();
+  r.nodes.resize(static_cast<std::size_t>(ct.size()));
+  for (int64_t i = 0; i < ct.size(); ++i) {
+    TreeNode &n = r.nodes[i];
+    n.type = types[i];
+    n.value = ct.values[i];
+    n.graph_node = ct.nodes[i];
+    n.up = deg[i][0];
+    n.down = deg[i][1];
+    place(n);
+  }
+  r.arcs = ct.arcs;
+  r.pairs = tree_pairs(ct);
+  return r;
+}
+
 // The tree as a ContourTree (indices of `nodes` as node ids).
 ContourTree as_contour_tree(const TreeResult &tree);
 
@@ -79,9 +108,6 @@ void compute_arc_paths(TreeResult &tree, int threads = 1);
 
 // Fills tree.branches with the branch decomposition of the (reduced) tree.
 void decompose_branches(TreeResult &tree);
-
-// Persistence pairs of a (reduced or augmented) contour tree, with node indices of the tree.
-std::vector<PersistencePair> tree_pairs(const ContourTree &tree);
 
 // Parametric location class of (u, v) in the reference triangle (tolerance 1e-12).
 NodeLocation classify_location(double u, double v);
