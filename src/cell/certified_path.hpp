@@ -1,4 +1,4 @@
-// Certified monotone connections inside one cell (DESIGN.md section 5). From a node c at level
+// Certified monotone connections inside one cell (docs/ALGORITHM.md §3). From a node c at level
 // L = g(c), along a direction into one of its lower sectors: a first segment c -> s certified
 // to stay below L (Bernstein coefficients of the segment restriction, skipping the first `skip`
 // which are L up to rounding at a critical point), then a straight segment s -> m to a lower node

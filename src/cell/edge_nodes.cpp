@@ -86,8 +86,8 @@ EdgeNodes find_edge_nodes(const Topology &topo, const Field &field, const EdgeNo
   const int64_t blocks = std::max<int64_t>(1, std::min<int64_t>(ne, 256));
   const int threads = std::max(1, opt.threads);
   // Each worker's buffer on a cache line of its own: side by side, the vectors' end pointers,
-  // written at every push, would share a line between the threads (rare pushes: no difference
-  // was measurable, but nothing is lost).
+  // written at every push, would share a line between the threads (pushes are rare, but the
+  // padding costs nothing).
   struct alignas(64) WorkerNodes {
     UninitializedVector<EdgeNode> nodes;
   };
@@ -102,8 +102,8 @@ EdgeNodes find_edge_nodes(const Topology &topo, const Field &field, const EdgeNo
     UninitializedVector<EdgeNode> &nodes = worker_nodes[static_cast<std::size_t>(worker)].nodes;
     for (int64_t b = b0; b < b1; ++b) {
       const std::size_t begin = nodes.size();
-      // The block's bounds in locals: in the condition they were a 64-bit division per edge
-      // (the stores below may alias them), a quarter of this loop's time.
+      // The block's bounds in locals: in the condition they would be a 64-bit division per
+      // edge (the stores below may alias them).
       const int64_t first = ne * b / blocks, last = ne * (b + 1) / blocks;
       for (int64_t e = first; e < last; ++e) {
         const std::size_t before = nodes.size();

@@ -1,7 +1,7 @@
 // The local connections of one non-degenerate cell: for every lower sector of its nodes that
 // lies inside the cell (interior maxima and saddles, edge nodes whose interior descends while the
 // edge ascends), a certified path to a lower node; the same for upper sectors. Sectors along an
-// edge are covered by the edge chains and need no path (DESIGN.md sections 4-5).
+// edge are covered by the edge chains and need no path (docs/ALGORITHM.md §3).
 #pragma once
 
 #include "cell/cell_nodes.hpp"

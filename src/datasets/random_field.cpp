@@ -1,5 +1,5 @@
 // `random`: a smooth random field on a jittered planar grid of the unit square, any degree and
-// size (20,000 cubic cells by default; millions in seconds, memory linear in the size):
+// size (20,000 cubic cells by default; millions too, time and memory linear in the size):
 //   f(x, y) = sum over 16 modes of a_m cos(k_m . (x, y) + phi_m),
 // wave numbers |k_m| in [6, 30] in random directions, amplitudes a_m in [0.3, 1] / sqrt(|k_m|);
 // --frequency F multiplies the wave numbers by F (F^2 times the features on the same square);

@@ -155,8 +155,7 @@ CellPhase run_cell_phase(const Mesh &mesh, const EdgeNodes &en, const ExactTreeO
                    !(why & fallback_bit(FallbackReason::DegenerateEdge))) {
           // (A cell with a degenerate edge falls back whatever its interior holds, and the
           // refinement does not use interior critical points: its zeros are not searched. Next
-          // to a plateau such cells are nearly flat, and their searches took half of the tree
-          // of 10^4 cells clamped over 30% of the values.)
+          // to a plateau such cells are nearly flat, where the search is at its costliest.)
           scratch.poly.assign(field.degree(c), field.coefficients(c));
           const BernsteinTriangle &g = scratch.poly;
           cell = c;

@@ -20,7 +20,7 @@ DegenerateCells refine_degenerate_cells(const Mesh &mesh, const EdgeNodes &en, i
     for (int b = 0; b < kFallbackReasons; ++b)
       if (g.fallback[c] & (1u << b))
         ++out.reasons[b];
-    // A constant cell is one flat region (docs/ALGORITHM.md, flat regions): its boundary, the
+    // A constant cell is one flat region (docs/ALGORITHM.md §4): its boundary, the
     // chains of its three edges (its corners, and the lattice nodes its non-constant neighbours
     // put there), all of its value, already connects it; sub-vertices inside it would only add
     // nodes of that value.

@@ -12,10 +12,10 @@
 
 namespace hoct {
 
-// Bytes per item, fitted to the peak RSS of `hoct tree` on generated meshes and rounded up (gauss
-// 200k cells degree 1: 137 MB; gauss 50k cells degree 3: 55 MB; heater 1M cells degree 2:
-// 826 MB, estimated 1.08 GB): per node (position, value, Bernstein and geometry coefficients,
-// tree nodes), per cell (topology, per-cell tree work), per connectivity entry.
+// Bytes per item, fitted to the peak RSS of `hoct tree` on generated meshes (gauss of degrees 1
+// and 3, heater of degree 2) and rounded up, so that the estimate stays above the peak: per node
+// (position, value, Bernstein and geometry coefficients, tree nodes), per cell (topology,
+// per-cell tree work), per connectivity entry.
 namespace {
 constexpr uint64_t kBytesPerPoint = 160;
 constexpr uint64_t kBytesPerCellNode = 16;

@@ -17,8 +17,8 @@ using json = nlohmann::ordered_json;
 
 // The document, written as it is built: the header's fields and "stats" as nlohmann's
 // indented dump, and each element of the four arrays (a node, an arc, a pair, a branch) compact
-// on a line of its own, which reads and greps well. Against the whole document dumped with one
-// value per line: 4,661 nodes in 1.48 MB and 10 ms instead of 2.02 MB and 24-26 ms.
+// on a line of its own, which reads and greps well, and is smaller and quicker to write than the
+// whole document dumped with one value per line.
 class TreeJsonWriter {
 public:
   void field(const std::string &key, const json &value) {
@@ -79,7 +79,7 @@ std::string to_json_text(const TreeResult &t, bool timings) {
     w.field("forced_reasons", t.forced);
   }
   // One object per kind of element, its fields overwritten for each (building each element
-  // anew allocated its keys and arrays every time).
+  // anew would allocate its keys and arrays every time).
   std::map<std::string, int64_t> by_type, by_location;
   json node = {{"id", 0},   {"type", ""},       {"value", 0.0},   {"position", {0.0, 0.0, 0.0}},
                {"cell", 0}, {"uv", {0.0, 0.0}}, {"location", ""}, {"fallback", false}};

@@ -184,9 +184,9 @@ bool VtuFile::open_streamed() {
 }
 
 // v resized to n elements (zeroed), its new pages mapped first in parts on the reader's threads
-// (one call per part instead of a fault per page: the zeroing alone faulted the pages of the
-// largest arrays in one page at a time on one thread, a third of the time of reading a large
-// file). For arrays about to be filled from the file.
+// (one call per part instead of a fault per page: the zeroing alone would fault the pages of the
+// largest arrays in one page at a time on one thread, a large part of reading a large file).
+// For arrays about to be filled from the file.
 template <class V> void VtuFile::resize_mapped(V &v, std::size_t n) const {
   const std::size_t old = v.size();
   if (n <= old) {

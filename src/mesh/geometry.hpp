@@ -1,7 +1,7 @@
 // Each cell's geometry map phi: reference triangle -> R^3, a Bernstein polynomial map of the
 // cell's own (input) degree through its Lagrange nodes, flagged linear where its control points
 // are those of the flat triangle. Used to report positions and to build refinements; the
-// algorithms themselves work in the reference triangle (DESIGN.md section 2).
+// algorithms themselves work in the reference triangle (docs/ALGORITHM.md §1).
 #pragma once
 
 #include "mesh/mesh_input.hpp"

@@ -689,9 +689,9 @@ GradientZeros search_zeros(const BernsteinTriangle &g, const GradientZeroOptions
     }
     // Krawczyk on the box itself, around the point three Newton steps from the centre reach if
     // it stays in the box, else the centre. Not where the steps above succeeded: this adds
-    // nothing to the attempt around their limit (it was decisive on 2 of 275 such boxes of the
-    // heater, none of the other datasets), and the box is split. Where they failed, the same
-    // steps with a smaller reach fail too: the centre.
+    // next to nothing to the attempt around their limit (it is hardly ever decisive there), and
+    // the box is split. Where they failed, the same steps with a smaller reach fail too: the
+    // centre.
     if (wmax <= 0.25 && !stepped_ok) {
       // Certify on the box inflated by a quarter, so zeros on box edges are interior.
       const double rx = 1.25 * hx, ry = 1.25 * hy, r = std::max(rx, ry);

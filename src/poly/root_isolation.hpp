@@ -26,7 +26,7 @@ struct RootOptions {
   // Intervals narrower than this that still have >= 2 sign changes are reported as a cluster.
   double resolution = 1e-12;
   // Roots (simple or not) closer than this are one non-simple cluster: in floating point they
-  // cannot be told from a multiple root (DESIGN.md section 4: roots closer than ~1e-7).
+  // cannot be told from a multiple root (docs/ALGORITHM.md §2: roots closer than 1e-7).
   double cluster_distance = 1e-7;
   // Tangencies: a critical point s of p with |p(s)| <= near_zero * max|coefficient| is reported
   // as a non-simple root even where rounding left no sign change (a double root whose two

@@ -147,7 +147,7 @@ inline void split_row_fixed(const double *in, int stride, double *left, double *
   }
 }
 
-// Scalar (util/no_vectorize.hpp): 571 -> 72 ns per degree-4 split.
+// Scalar (util/no_vectorize.hpp): vectorised, its stack arrays stall on store forwarding.
 template <int M> HOCT_NO_VECTORIZE void split_quarters_fixed(const double *b, double *const q[4]) {
   constexpr int w = M + 1;
 #pragma GCC unroll 16

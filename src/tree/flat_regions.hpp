@@ -2,7 +2,7 @@
 // makes a tree of them with arcs of length zero, and leaf branches of persistence zero: artefacts
 // of the tie-breaking, not features. Contracting every arc whose ends have the same value (within
 // `tolerance`: values computed from a constant polynomial differ by rounding)
-// merges each flat region into one node (DESIGN.md section 7: a critical curve component is one
+// merges each flat region into one node (docs/ALGORITHM.md §4: a critical curve component is one
 // node) and leaves the tree valid; regular nodes left over are spliced out.
 #pragma once
 

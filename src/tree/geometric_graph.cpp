@@ -57,9 +57,9 @@ std::vector<Vec3> GeometricGraph::path(int64_t a, int64_t b, Search &scratch,
   const double lo = std::min(value_[a], value_[b]), hi = std::max(value_[a], value_[b]);
   std::vector<Vec3> p = search(a, b, lo, hi, max_visits, scratch);
   // No path within the arc's values (the graph is sparser than the surface): below the upper
-  // end's value, where the join tree connects the two ends of an arc (on a field with many
-  // features, a third of the arcs; searching any path instead visited 4x the nodes); then any
-  // path on the surface rather than a chord through it.
+  // end's value, where the join tree connects the two ends of an arc (common on a field with
+  // many features; a search for any path would visit far more nodes); then any path on the
+  // surface rather than a chord through it.
   if (p.size() == 2 && a != b)
     p = search(a, b, -INFINITY, hi, max_visits, scratch);
   if (p.size() == 2 && a != b)
@@ -71,7 +71,7 @@ std::vector<Vec3> GeometricGraph::search(int64_t a, int64_t b, double lo, double
                                          int64_t max_visits, Search &s) const {
   // Breadth-first from both ends at once, each step on the side with fewer nodes waiting, until
   // the two meet: in a region that surrounds the ends on all sides, each side then explores
-  // about half the radius (on a 10^6-cell field, half the nodes of a one-sided search). A
+  // about half the radius (on a surface, together about half the nodes of a one-sided search). A
   // node's stamp is the generation of the side that reached it (2g: from a, 2g + 1: from b),
   // `from` the edge it was reached by.
   if (s.stamp.size() != value_.size() || s.generation >= UINT32_MAX - 2) {

@@ -16,8 +16,8 @@
 namespace hoct {
 
 // Where a graph's nodes lie, and the interior points of its first edges(), computed when a path
-// asks for them: the arcs of a tree pass through a few percent of its graph (on 10^6 cubic
-// cells, its ~2M edge pieces took 0.1 s and 150 MB to place, all of them, beforehand).
+// asks for them: the arcs of a tree pass through a few percent of its graph, and placing all of
+// its edge pieces beforehand would spend time and memory on pieces no arc uses.
 class GraphGeometry {
 public:
   virtual ~GraphGeometry() = default;
@@ -61,8 +61,8 @@ public:
 
   // Scratch memory of path(): one per thread that searches.
   // On cache lines of its own: the queues' ends change at every step of a search, and the
-  // threads' scratches sit side by side (sharing lines, two threads took 0.45-0.46 s instead of
-  // 0.34-0.37 s for the arcs of a 10^6-cell field).
+  // threads' scratches sit side by side (sharing lines, the searching threads would slow each
+  // other down).
   struct alignas(64) Search {
     std::vector<uint32_t> stamp;
     std::vector<int64_t> from, queue, queue_b;

@@ -1,7 +1,7 @@
 // Large buffers whose pages are reused within a computation. On this kind of machine (a virtual
-// machine) first touching a fresh 4 KiB page costs ~2.4 us, as much as the work done in it, and
-// the C library returns every large block to the system when it is freed, so each phase of a
-// tree on millions of cells paid again for pages an earlier phase had just given back.
+// machine) first touching a fresh 4 KiB page costs as much as the work done in it, and the C
+// library returns every large block to the system when it is freed, so each phase of a tree on
+// millions of cells would pay again for pages an earlier phase had just given back.
 //
 // Blocks of kPooledBytes and more are anonymous mappings. While a PageReuseScope is open anywhere
 // in the process, freed blocks are kept: a later request takes the smallest kept block that fits

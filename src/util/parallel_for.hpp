@@ -33,8 +33,8 @@ inline int threads_for(int64_t n, int threads, int64_t grain) {
 // exception. Results written per chunk and combined in chunk order do not depend on the thread
 // count. Thread t takes the chunks of its own share (the t-th of `threads` runs of consecutive
 // chunks) in order, then helps with the other shares' remaining chunks: each thread works on
-// one contiguous part of the data in loop after loop (with chunks taken in turn, the edge and
-// cell phases on 10^4 cells ran 2.5-3.5% slower on two threads, paired runs), and a thread that
+// one contiguous part of the data in loop after loop (with chunks taken in turn, it would meet
+// other parts of the data in each loop than its caches hold from the last), and a thread that
 // starts late or meets costlier items is still helped.
 template <class Body>
 void parallel_chunks(int64_t n, int64_t chunks, int threads, const Body &body) {

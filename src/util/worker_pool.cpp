@@ -16,8 +16,8 @@ namespace {
 thread_local bool in_worker = false;
 
 // How long a thread waits actively (for the next loop, or for the other threads to finish this
-// one) before it sleeps: a sleeping worker takes ~40 us to wake here, as much as a loop over
-// 10^4 cells gains from it, and the tree runs several loops back to back.
+// one) before it sleeps: waking a sleeping worker costs about as much as a second thread gains
+// on a loop over 10^4 cells, and the tree runs several loops back to back.
 constexpr std::chrono::microseconds kSpin{200};
 
 void cpu_relax() {

@@ -1,7 +1,7 @@
 // The process's worker threads, started on first use and kept for the next parallel loop:
-// starting a thread costs tens of microseconds here, and a fresh thread's per-thread buffers
-// (root isolation, box search, path fields) start cold, which on meshes of 10^4 cells ate most
-// of what a second thread gained.
+// starting a thread is not cheap, and a fresh thread's per-thread buffers (root isolation, box
+// search, path fields) start cold, which on small meshes would eat most of what a second thread
+// gains.
 #pragma once
 
 #include <functional>
