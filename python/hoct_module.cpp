@@ -3,6 +3,9 @@
 #include "datasets/datasets.hpp"
 #include "io/read_mesh.hpp"
 #include "io/tree_json.hpp"
+#include "io/tree_svg_writer.hpp"
+#include "io/tree_vtp_writer.hpp"
+#include "mesh/duplicate_points.hpp"
 #include "mesh/mesh.hpp"
 #include "pipeline/compute_tree.hpp"
 #include "pipeline/domain_check.hpp"
@@ -282,6 +285,29 @@ PYBIND11_MODULE(_hoct, m) {
       .def(
           "to_json", [](const PyTree &t, bool timings) { return tree_to_json(t.tree, timings); },
           py::arg("timings") = true)
+      // The files `hoct tree` writes (--json, --vtp, --svg), atomically.
+      .def(
+          "write_json",
+          [](const PyTree &t, const std::string &path, bool timings) {
+            write_tree_json(path, t.tree, timings);
+          },
+          py::arg("path"), py::arg("timings") = true, py::call_guard<py::gil_scoped_release>())
+      .def(
+          "write_vtp",
+          [](PyTree &t, const std::string &path) {
+            if (t.tree.arc_paths.empty())
+              compute_arc_paths(t.tree, 0);
+            write_tree_vtp(path, t.tree);
+          },
+          py::arg("path"), py::call_guard<py::gil_scoped_release>())
+      .def(
+          "write_svg",
+          [](const PyTree &t, const std::string &path, const std::string &title) {
+            if (t.tree.branches.empty())
+              throw Error("write_svg draws the reduced tree (not an augmented one)");
+            write_tree_svg(path, t.tree, title);
+          },
+          py::arg("path"), py::arg("title") = "", py::call_guard<py::gil_scoped_release>())
       .def("join_tree", [](const PyTree &t) { return merge_tree_dict(t, true); })
       .def("split_tree", [](const PyTree &t) { return merge_tree_dict(t, false); });
 
@@ -289,10 +315,13 @@ PYBIND11_MODULE(_hoct, m) {
   m.def(
       "read",
       [](const std::string &path, const std::string &scalar, const std::string &max_memory,
-         int threads) {
+         int threads, double merge_tolerance) {
         ReadLimits limits = read_limits_for(max_memory);
         limits.threads = thread_count(threads);
-        return make_mesh(read_mesh(path, scalar, limits), threads);
+        MeshInput input = read_mesh(path, scalar, limits);
+        if (merge_tolerance >= 0) // as `hoct tree --merge-duplicates=TOL`
+          merge_duplicate_points(input, merge_tolerance, thread_count(threads));
+        return make_mesh(std::move(input), threads);
       },
       py::call_guard<py::gil_scoped_release>());
   m.def("from_arrays", &from_arrays);

@@ -15,7 +15,7 @@ __all__ = ["read", "from_arrays", "from_meshio", "generate", "contour_tree", "Me
            "HoctError"]
 
 
-def read(path, scalar=None, max_memory=None, threads=None):
+def read(path, scalar=None, max_memory=None, threads=None, merge_duplicates=None):
     """Read a .vtu or .msh file; `scalar` names the point-data array (default: the first).
 
     `threads`: threads that read large arrays and build the mesh (default: every hardware
@@ -24,7 +24,11 @@ def read(path, scalar=None, max_memory=None, threads=None):
     `max_memory` is the memory budget the readers check against the file's header counts
     before allocating, as for `hoct --max-memory`: bytes (int) or text such as "8G", "512M" or
     "50%" of the physical memory; default 80% of the physical memory. A file whose counts need
-    more is refused with HoctError ("needs ~X GiB, limit Y GiB") before anything is allocated."""
+    more is refused with HoctError ("needs ~X GiB, limit Y GiB") before anything is allocated.
+
+    `merge_duplicates`: merge points at the same position before building the mesh, as
+    `hoct tree --merge-duplicates[=TOL]`: True (within 1e-9 of the bounding-box diagonal) or a
+    tolerance TOL between 0 and 0.1."""
     if max_memory is None:
         budget = ""
     elif isinstance(max_memory, bool):
@@ -38,7 +42,16 @@ def read(path, scalar=None, max_memory=None, threads=None):
     if threads is not None and (isinstance(threads, bool) or not isinstance(threads, int)
                                 or threads < 1):
         raise HoctError("read: threads must be a positive integer, got %r" % (threads,))
-    return _hoct.read(str(path), scalar or "", budget, int(threads or 0))
+    if merge_duplicates is None or merge_duplicates is False:
+        tolerance = -1.0
+    elif merge_duplicates is True:
+        tolerance = 1e-9
+    elif isinstance(merge_duplicates, (int, float)) and 0 <= merge_duplicates <= 0.1:
+        tolerance = float(merge_duplicates)
+    else:
+        raise HoctError("read: merge_duplicates must be True or a tolerance between 0 and 0.1, "
+                        "got %r" % (merge_duplicates,))
+    return _hoct.read(str(path), scalar or "", budget, int(threads or 0), tolerance)
 
 
 _TRIANGLE_TYPES = {5: 1, 22: 2}  # VTK_TRIANGLE, VTK_QUADRATIC_TRIANGLE; 69 = any degree

@@ -92,3 +92,46 @@ def test_bad_requests_fail_the_same_way(data):
         assert r.returncode == 1 and words in r.stderr, r.stderr
         with pytest.raises(hoct.HoctError, match=words):
             hoct.contour_tree(hoct.read(path), **kwargs)
+
+
+@pytest.mark.parametrize("name", ["sphere", "heater", "two-triangle"])
+def test_written_files_are_the_same(data, name):
+    # Tree.write_json / write_vtp / write_svg write what `hoct tree --json --vtp --svg` writes.
+    d, paths = data
+    path = paths[name]
+    cli = {ext: os.path.join(d, f"{name}.cli.{ext}") for ext in ("json", "vtp", "svg")}
+    subprocess.run([HOCT, "tree", path, "-q", "--no-timings", "--simplify", "1%", "--json",
+                    cli["json"], "--vtp", cli["vtp"], "--svg", cli["svg"]], check=True)
+    tree = hoct.contour_tree(hoct.read(path), simplify="1%")
+    py = {ext: os.path.join(d, f"{name}.py.{ext}") for ext in ("json", "vtp", "svg")}
+    tree.write_json(py["json"], timings=False)
+    tree.write_vtp(py["vtp"])
+    title = f"{name}.vtu: exact contour tree, {len(tree.values)} nodes"
+    tree.write_svg(py["svg"], title=title)
+    for ext in ("json", "vtp", "svg"):
+        with open(cli[ext], "rb") as a, open(py[ext], "rb") as b:
+            assert a.read() == b.read(), ext
+
+
+def test_merge_duplicates_as_the_cli(data):
+    # Two triangles of a square, each with its own copy of the shared edge's points: refused as
+    # duplicate vertices, the same tree once merged.
+    import meshio
+    import numpy as np
+
+    d, _ = data
+    points = np.array([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 0, 0], [1, 1, 0], [0, 1, 0]], float)
+    cells = np.array([[0, 1, 2], [3, 4, 5]])
+    values = np.array([0.0, 1.0, 3.0, 0.0, 3.0, 2.0])
+    path = os.path.join(d, "crack.vtu")
+    meshio.write(path, meshio.Mesh(points, [("triangle", cells)], point_data={"f": values}))
+    r = subprocess.run([HOCT, "tree", path, "-q"], capture_output=True, text=True)
+    assert r.returncode == 1 and "duplicate vertices" in r.stderr
+    with pytest.raises(hoct.HoctError, match="duplicate vertices"):
+        hoct.contour_tree(hoct.read(path))
+    expected = cli_json(path, ["--merge-duplicates"])
+    got = hoct.contour_tree(hoct.read(path, merge_duplicates=True)).to_json(timings=False)
+    assert got + "\n" == expected
+    for bad in (-1, 0.5, "lots"):
+        with pytest.raises(hoct.HoctError, match="merge_duplicates"):
+            hoct.read(path, merge_duplicates=bad)
