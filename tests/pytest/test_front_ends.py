@@ -59,22 +59,29 @@ def test_cli_and_python_write_the_same_bytes(data, name, flags, kwargs):
     assert '"time_' not in got
 
 
-def test_forced_domains_are_the_same_too(data):
-    # Two separate triangles: refused by both without force, the same forced tree with it.
+def two_triangles(path, points, values):
+    """A .vtu of two linear triangles (points 0-2 and 3-5), written with meshio."""
+    import meshio
     import numpy as np
 
-    d, _ = data
-    points = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0], [3, 0, 0], [4, 0, 0], [3, 1, 0]], float)
-    cells = np.array([[0, 1, 2], [3, 4, 5]])
-    values = np.array([0.0, 1.0, 2.0, 3.0, 4.0, 5.0])
-    path = os.path.join(d, "two.vtu")
-    import meshio
+    meshio.write(path, meshio.Mesh(np.array(points, float), [("triangle", np.array([[0, 1, 2],
+                                   [3, 4, 5]]))], point_data={"f": np.array(values, float)}))
 
-    meshio.write(path, meshio.Mesh(points, [("triangle", cells)], point_data={"f": values}))
+
+def refused_by_both(path, words):
     r = subprocess.run([HOCT, "tree", path, "-q"], capture_output=True, text=True)
-    assert r.returncode == 1 and "2 separate components" in r.stderr
-    with pytest.raises(hoct.HoctError, match="2 separate components"):
+    assert r.returncode == 1 and words in r.stderr, r.stderr
+    with pytest.raises(hoct.HoctError, match=words):
         hoct.contour_tree(hoct.read(path))
+
+
+def test_forced_domains_are_the_same_too(data):
+    # Two separate triangles: refused by both without force, the same forced tree with it.
+    d, _ = data
+    path = os.path.join(d, "two.vtu")
+    two_triangles(path, [[0, 0, 0], [1, 0, 0], [0, 1, 0], [3, 0, 0], [4, 0, 0], [3, 1, 0]],
+                  [0, 1, 2, 3, 4, 5])
+    refused_by_both(path, "2 separate components")
     expected = cli_json(path, ["--force"])
     assert '"forced": true' in expected
     assert hoct.contour_tree(hoct.read(path), force=True).to_json(timings=False) + "\n" == expected
@@ -116,19 +123,11 @@ def test_written_files_are_the_same(data, name):
 def test_merge_duplicates_as_the_cli(data):
     # Two triangles of a square, each with its own copy of the shared edge's points: refused as
     # duplicate vertices, the same tree once merged.
-    import meshio
-    import numpy as np
-
     d, _ = data
-    points = np.array([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 0, 0], [1, 1, 0], [0, 1, 0]], float)
-    cells = np.array([[0, 1, 2], [3, 4, 5]])
-    values = np.array([0.0, 1.0, 3.0, 0.0, 3.0, 2.0])
     path = os.path.join(d, "crack.vtu")
-    meshio.write(path, meshio.Mesh(points, [("triangle", cells)], point_data={"f": values}))
-    r = subprocess.run([HOCT, "tree", path, "-q"], capture_output=True, text=True)
-    assert r.returncode == 1 and "duplicate vertices" in r.stderr
-    with pytest.raises(hoct.HoctError, match="duplicate vertices"):
-        hoct.contour_tree(hoct.read(path))
+    two_triangles(path, [[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 0, 0], [1, 1, 0], [0, 1, 0]],
+                  [0, 1, 3, 0, 3, 2])
+    refused_by_both(path, "duplicate vertices")
     expected = cli_json(path, ["--merge-duplicates"])
     got = hoct.contour_tree(hoct.read(path, merge_duplicates=True)).to_json(timings=False)
     assert got + "\n" == expected

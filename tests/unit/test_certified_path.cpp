@@ -6,6 +6,7 @@
 #include "cell/certified_path.hpp"
 #include "poly/bernstein_triangle.hpp"
 #include "poly/lattice.hpp"
+#include "test_bernstein_forms.hpp"
 
 #include <gtest/gtest.h>
 
@@ -21,28 +22,8 @@ namespace {
 using Fn = std::function<double(double, double)>;
 using Grad = std::function<Vec2(double, double)>;
 
-// Bernstein form of a polynomial of total degree <= d given as a function, through its values
-// at the equispaced lattice (the library's Lagrange-to-Bernstein conversion).
-BernsteinTriangle interpolate(int d, const Fn &f) {
-  std::vector<double> vals(static_cast<std::size_t>(lattice_size(d)));
-  for (int i = 0; i < lattice_size(d); ++i) {
-    const auto p = lattice_point(d, i);
-    vals[static_cast<std::size_t>(i)] =
-        f(p[0] / static_cast<double>(d), p[1] / static_cast<double>(d));
-  }
-  return bernstein_from_lattice_values(vals.data(), d);
-}
-
-// Exact Bernstein form of A(u) + C(v) from the univariate Bernstein coefficients a of A and c
-// of C (both of degree d): on the triangle the coefficient (i, j) is a[i] + c[j].
-BernsteinTriangle separable(const std::vector<double> &a, const std::vector<double> &c) {
-  const int d = static_cast<int>(a.size()) - 1;
-  std::vector<double> coef(static_cast<std::size_t>(lattice_size(d)));
-  for (int j = 0; j <= d; ++j)
-    for (int i = 0; i + j <= d; ++i)
-      coef[static_cast<std::size_t>(lattice_index(d, i, j))] = a[i] + c[j];
-  return BernsteinTriangle(d, coef);
-}
+using testing::interpolate;
+using testing::separable;
 
 // The directional derivative w . grad g as a polynomial of degree d - 1.
 BernsteinTriangle directional(const BernsteinTriangle &g, const Vec2 &w) {

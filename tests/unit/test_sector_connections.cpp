@@ -7,6 +7,7 @@
 #include "cell/sector_connections.hpp"
 #include "poly/bernstein_triangle.hpp"
 #include "poly/lattice.hpp"
+#include "test_bernstein_forms.hpp"
 
 #include <gtest/gtest.h>
 
@@ -24,25 +25,8 @@ namespace {
 using Fn = std::function<double(double, double)>;
 using Pairs = std::vector<std::pair<int64_t, int64_t>>;
 
-BernsteinTriangle interpolate(int d, const Fn &f) {
-  std::vector<double> vals(static_cast<std::size_t>(lattice_size(d)));
-  for (int i = 0; i < lattice_size(d); ++i) {
-    const auto p = lattice_point(d, i);
-    vals[static_cast<std::size_t>(i)] =
-        f(p[0] / static_cast<double>(d), p[1] / static_cast<double>(d));
-  }
-  return bernstein_from_lattice_values(vals.data(), d);
-}
-
-// Exact Bernstein form of A(u) + C(v) from univariate Bernstein coefficients of A and C.
-BernsteinTriangle separable(const std::vector<double> &a, const std::vector<double> &c) {
-  const int d = static_cast<int>(a.size()) - 1;
-  std::vector<double> coef(static_cast<std::size_t>(lattice_size(d)));
-  for (int j = 0; j <= d; ++j)
-    for (int i = 0; i + j <= d; ++i)
-      coef[static_cast<std::size_t>(lattice_index(d, i, j))] = a[i] + c[j];
-  return BernsteinTriangle(d, coef);
-}
+using testing::interpolate;
+using testing::separable;
 
 // One cell as connect_cell() assembles it: corners (refs 0..2), edge nodes (refs 100, 101, ...
 // in the order added; per edge in ascending parameter), interior critical points (refs -1, -2,
