@@ -1,5 +1,6 @@
 #include "analysis/tree_check.hpp"
 
+#include "cell/edge_nodes.hpp"
 #include "poly/reference_triangle.hpp"
 #include "tree/union_find.hpp"
 
@@ -91,6 +92,14 @@ public:
     if (opt_.check_types && !placement_failed_)
       for (int64_t i = 0; i < n_; ++i)
         neighbourhood(i);
+    recorded_persistence();
+    if (report_.failures.empty())
+      pairs();
+    if (opt_.check_completeness && tree_.stats.nodes_before_simplification)
+      report_.skipped.push_back(
+          {"completeness", {}, {}, "a simplified tree: its pruned extrema are not looked for"});
+    else if (opt_.check_completeness && !placement_failed_)
+      completeness();
     return std::move(report_);
   }
 
@@ -142,6 +151,10 @@ private:
         ++joined;
       }
     }
+    if (n_ == 0 && mesh_.complete && mesh_.topology.num_cells() > 0)
+      fail("tree", {}, {},
+           "the tree is empty, but the mesh has " + std::to_string(mesh_.topology.num_cells()) +
+               " cells (a field has a minimum)");
     const int64_t tree_components = n_ - joined;
     if (n_ > 0 && tree_components != components)
       fail("tree", {}, {},
@@ -233,6 +246,178 @@ private:
                fmt(nd.position[2]) + ") but cell " + std::to_string(nd.cell) + " (" + fmt(u) +
                ", " + fmt(v) + ") maps to (" + fmt(p[0]) + ", " + fmt(p[1]) + ", " + fmt(p[2]) +
                ")");
+  }
+
+  // Each pair's persistence as a file recorded it against its nodes' values.
+  void recorded_persistence() {
+    const auto &rec = tree_.recorded_persistence;
+    if (rec.empty())
+      return;
+    if (rec.size() != tree_.pairs.size()) {
+      fail("pairs", {}, {},
+           std::to_string(rec.size()) + " recorded persistences for " +
+               std::to_string(tree_.pairs.size()) + " pairs");
+      return;
+    }
+    for (std::size_t k = 0; k < rec.size(); ++k) {
+      const PersistencePair &p = tree_.pairs[k];
+      if (!(std::abs(rec[k] - p.persistence()) <= std::max(opt_.value_tolerance * scale_, kTiny)))
+        fail("pairs", {p.birth, p.death}, {},
+             "pair " + std::to_string(k) + " records persistence " + fmt(rec[k]) + ", but " +
+                 node_str(p.birth) + " and " + node_str(p.death) + " differ by " +
+                 fmt(p.persistence()));
+    }
+  }
+
+  // The recorded persistence pairs against the elder-rule pairs of the tree's own arcs.
+  void pairs() {
+    if (tree_.pairs.empty() && n_ <= 1)
+      return;
+    const std::vector<PersistencePair> want = tree_pairs(as_contour_tree(tree_));
+    auto key = [](const PersistencePair &p) {
+      return std::array<int64_t, 3>{std::min(p.birth, p.death), std::max(p.birth, p.death),
+                                    static_cast<int64_t>(p.kind)};
+    };
+    std::vector<std::array<int64_t, 3>> got_keys, want_keys;
+    for (const auto &p : tree_.pairs)
+      got_keys.push_back(key(p));
+    for (const auto &p : want)
+      want_keys.push_back(key(p));
+    std::sort(got_keys.begin(), got_keys.end());
+    std::sort(want_keys.begin(), want_keys.end());
+    if (got_keys == want_keys)
+      return;
+    std::string first;
+    for (const auto &k : want_keys)
+      if (!std::binary_search(got_keys.begin(), got_keys.end(), k)) {
+        first = "; missing, e.g. " + node_str(k[0]) + " with " + node_str(k[1]);
+        break;
+      }
+    if (first.empty())
+      for (const auto &k : got_keys)
+        if (!std::binary_search(want_keys.begin(), want_keys.end(), k)) {
+          first = "; not a pair of the arcs, e.g. " + node_str(k[0]) + " with " + node_str(k[1]);
+          break;
+        }
+    fail("pairs", {}, {},
+         std::to_string(tree_.pairs.size()) + " persistence pairs recorded, but the arcs give " +
+             std::to_string(want.size()) + first);
+  }
+
+  // Extrema the tree must have, decided from the edge polynomials alone. A vertex whose every
+  // edge ascends from it (a non-zero derivative) is a strict local minimum: in each cell around
+  // it the derivative along a direction of the corner's cone is a convex combination of those
+  // along its two edges. An edge critical point that is a strict minimum of its edge, where the
+  // field rises into every cell of the edge (a positive inward derivative), is one too. Maxima
+  // alike. Each must be a minimum (maximum) node of the tree at that point, unless the tree has
+  // a flat region of its value or fallback nodes in its cells (then it is reported as skipped).
+  void completeness() {
+    const Topology &t = mesh_.topology;
+    const Field &field = mesh_.field;
+    const double tol = 1e-9 * scale_;
+    const int64_t nv = t.num_vertices(), ne = t.num_edges();
+    // Per vertex: every edge so far ascends (bit 0) / descends (bit 1) away from it.
+    std::vector<uint8_t> all(static_cast<std::size_t>(nv), 3);
+    std::vector<uint8_t> has_edge(static_cast<std::size_t>(nv), 0);
+    for (int64_t e = 0; e < ne; ++e) {
+      const auto c = field.edge_coefficients(e);
+      const int d = static_cast<int>(c.size()) - 1;
+      if (d < 1) {
+        for (int64_t v : t.edge_vertices(e))
+          all[v] = 0;
+        continue;
+      }
+      const double from_lo = d * (c[1] - c[0]), from_hi = d * (c[d - 1] - c[d]);
+      for (int end = 0; end < 2; ++end) {
+        const int64_t v = t.edge_vertices(e)[end];
+        const double slope = end == 0 ? from_lo : from_hi;
+        has_edge[v] = 1;
+        if (!(slope > tol))
+          all[v] &= uint8_t(~1u);
+        if (!(slope < -tol))
+          all[v] &= uint8_t(~2u);
+      }
+    }
+    build_vertex_cells();
+    for (int64_t v = 0; v < nv; ++v) {
+      if (!has_edge[v] || all[v] == 0)
+        continue;
+      std::vector<int64_t> cells;
+      for (int64_t k = vertex_offset_[v]; k < vertex_offset_[v + 1]; ++k)
+        cells.push_back(vertex_cells_[k].first);
+      const int64_t c = vertex_cells_[vertex_offset_[v]].first;
+      const int corner = vertex_cells_[vertex_offset_[v]].second;
+      expect_extremum((all[v] & 1) ? NodeType::Minimum : NodeType::Maximum, c, kCorner[corner],
+                      field.vertex_value(v), cells, "vertex " + std::to_string(v));
+    }
+    EdgeNodeOptions eo;
+    const EdgeNodes en = find_edge_nodes(t, field, eo);
+    for (int64_t e = 0; e < ne; ++e) {
+      if (en.degeneracy[e] != kEdgeOk)
+        continue;
+      for (int64_t i = en.offset[e]; i < en.offset[e + 1]; ++i) {
+        const EdgeNode &node = en.nodes[i];
+        if (!node.simple || std::abs(node.second) <= tol)
+          continue;
+        const bool edge_min = node.second > 0;
+        bool extremum = true;
+        std::vector<int64_t> cells;
+        for (int j = 0; j < t.edge_cell_count(e) && extremum; ++j) {
+          const int64_t c = t.edge_cells_begin(e)[j];
+          cells.push_back(c);
+          const int k = t.local_edge(c, e);
+          const double sk = t.edge_reversed(c, k) ? 1 - node.t : node.t;
+          const Vec2 uv = point_on_edge(k, sk);
+          const Vec2 g = field.cell_polynomial(c).gradient(uv[0], uv[1]);
+          const Vec2 n = inward_normal(k);
+          const double s = g[0] * n[0] + g[1] * n[1];
+          extremum = edge_min ? s > tol : s < -tol;
+        }
+        if (!extremum)
+          continue;
+        const int64_t c = t.edge_cells_begin(e)[0];
+        const int k = t.local_edge(c, e);
+        const Vec2 uv = point_on_edge(k, t.edge_reversed(c, k) ? 1 - node.t : node.t);
+        expect_extremum(edge_min ? NodeType::Minimum : NodeType::Maximum, c, uv, node.value, cells,
+                        "the critical point of edge " + std::to_string(e) +
+                            " at t = " + fmt(node.t));
+      }
+    }
+  }
+
+  void expect_extremum(NodeType type, int64_t cell, const Vec2 &uv, double value,
+                       const std::vector<int64_t> &cells, const std::string &what) {
+    const Vec3 p = mesh_.geometry.position(cell, uv[0], uv[1]);
+    const double close = 1e-7 * std::max(mesh_.geometry.extent(), 1e-300);
+    const double vtol = std::max(opt_.value_tolerance * scale_, kTiny);
+    // Tree nodes of that value (they ascend by value).
+    auto lo = std::lower_bound(tree_.nodes.begin(), tree_.nodes.end(), value - vtol,
+                               [](const TreeNode &a, double x) { return a.value < x; });
+    bool flat = false;
+    for (auto it = lo; it != tree_.nodes.end() && it->value <= value + vtol; ++it) {
+      const double dist =
+          std::hypot(it->position[0] - p[0], it->position[1] - p[1], it->position[2] - p[2]);
+      if (dist <= close && it->type == type) {
+        ++report_.extrema_confirmed;
+        return;
+      }
+      flat |= it->merged > 1;
+    }
+    bool fallback = false;
+    for (const TreeNode &nd : tree_.nodes)
+      fallback |= nd.fallback && std::find(cells.begin(), cells.end(), nd.cell) != cells.end();
+    const std::string msg = what + " is a strict local " +
+                            (type == NodeType::Minimum ? "minimum" : "maximum") + " (value " +
+                            fmt(value) + ", from the edge polynomials) but the tree has no " +
+                            to_string(type) + " there";
+    if (flat || fallback)
+      report_.skipped.push_back({"completeness",
+                                 {},
+                                 {},
+                                 msg + (flat ? " (a flat region of its value may stand for it)"
+                                             : " (fallback nodes in its cells)")});
+    else
+      fail("completeness", {}, {}, msg);
   }
 
   // ---- rings of samples around a node ----

@@ -12,6 +12,11 @@
 //     cell around it (the fan of a vertex, both cells of an edge), gives the number of lower and
 //     upper sectors; a minimum has no lower one, a maximum no upper one, a saddle at least two of
 //     one kind, a regular node one of each, and no node has more arcs down (up) than sectors.
+//   - pairs: the recorded persistence pairs are the elder-rule pairs of the tree's arcs, and a
+//     persistence a file recorded is its nodes' difference;
+//   - completeness: every strict local extremum at a vertex or on an edge that the edge
+//     polynomials decide (every edge ascending from a vertex; an edge's critical point rising
+//     into every cell of the edge) is a minimum (maximum) node of the tree.
 // Nodes of degenerate (fallback) cells, nodes standing for a flat region (TreeNode::merged > 1)
 // and nodes whose neighbourhood is flat to rounding are reported as skipped, not as failures.
 // No I/O.
@@ -27,7 +32,8 @@
 namespace hoct {
 
 struct TreeFinding {
-  std::string check;          // "tree", "euler", "order", "value", "position", "degree", "type"
+  // "tree", "euler", "order", "value", "position", "degree", "type", "pairs", "completeness"
+  std::string check;
   std::vector<int64_t> nodes; // indices into TreeResult::nodes
   std::vector<int64_t> arcs;  // indices into TreeResult::arcs
   std::string message;
@@ -37,6 +43,7 @@ struct TreeCheckReport {
   std::vector<TreeFinding> failures;
   std::vector<TreeFinding> skipped; // checks that could not be decided (fallback, flat, ...)
   int64_t nodes_checked = 0;        // nodes whose type was confirmed by the samples
+  int64_t extrema_confirmed = 0;    // extrema decided from the edge polynomials, found in the tree
   bool ok() const { return failures.empty(); }
   // One line per failure (and a count of skipped nodes).
   std::string summary(std::size_t max_lines = 20) const;
@@ -51,6 +58,9 @@ struct TreeCheckOptions {
   bool check_types = true;
   // Samples per cell around a node (per full turn for interior nodes).
   int samples = 64;
+  // Look for extrema the tree must have (at vertices and on edges, decided from the edge
+  // polynomials) and missing ones.
+  bool check_completeness = true;
 };
 
 TreeCheckReport check_tree(const TreeResult &tree, const Mesh &mesh,

@@ -5,6 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <map>
@@ -247,6 +248,8 @@ TreeResult read_tree_json(const std::string &path) {
       pair.death = check_id(p.at("death").get<int64_t>(), "a pair");
       pair.birth_value = t.nodes[pair.birth].value;
       pair.death_value = t.nodes[pair.death].value;
+      if (p.contains("persistence"))
+        t.recorded_persistence.push_back(p.at("persistence").get<double>());
       t.pairs.push_back(pair);
     }
     if (j.contains("branches"))

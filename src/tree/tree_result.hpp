@@ -46,7 +46,10 @@ struct TreeResult {
   std::vector<TreeNode> nodes;              // ascending in the total order (value, id)
   std::vector<std::array<int64_t, 2>> arcs; // indices into nodes, lower node first
   std::vector<PersistencePair> pairs;       // birth/death are indices into nodes
-  std::vector<Branch> branches;             // branch decomposition (indices into nodes)
+  // The persistence of each pair as a file recorded it (read_tree_json), for the checker to
+  // compare with its nodes' values; empty for a computed tree.
+  std::vector<double> recorded_persistence;
+  std::vector<Branch> branches; // branch decomposition (indices into nodes)
   TreeStats stats;
   // Why the result was computed although the input is not a valid disk or sphere (hoct tree
   // --force); empty for a regular result.

@@ -52,6 +52,17 @@ with tempdir() as tmp:
 
     corrupt("moved-position", move, "FAIL [position]")
 
+    def min_max_only(c):
+        lo, hi = dict(c["nodes"][0], id=0), dict(c["nodes"][-1], id=1)
+        c["nodes"], c["arcs"], c["branches"] = [lo, hi], [[0, 1]], []
+        c["pairs"] = [{"birth": 0, "death": 1, "persistence": hi["value"] - lo["value"],
+                       "kind": "global"}]
+
+    # The global minimum and maximum alone: a valid tree, missing the field's other extrema.
+    corrupt("min-max-only", min_max_only, "FAIL [completeness]")
+    corrupt("wrong-persistence", lambda c: c["pairs"][0].update(persistence=123.0),
+            "records persistence 123")
+
     def move_uv(c):
         n = c["nodes"][maximum]
         n["uv"] = [n["uv"][0] * 0.9 + 0.1 / 3, n["uv"][1] * 0.9 + 0.1 / 3]

@@ -5,8 +5,15 @@
 #include "exact/exact_contour_tree.hpp"
 #include "mesh/mesh.hpp"
 #include "test_meshes.hpp"
+#include "util/error.hpp"
+
+#include "io/tree_json.hpp"
 
 #include <gtest/gtest.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
 
 namespace hoct {
 namespace {
@@ -44,6 +51,8 @@ TEST(TreeCheck, PassesOnEveryDataset) {
     for (const auto &n : t.nodes)
       exact_nodes += !n.fallback;
     EXPECT_GT(r.nodes_checked, exact_nodes / 2) << r.summary();
+    std::printf("%s: %lld extrema decided from the edge polynomials, all in the tree\n",
+                name.c_str(), static_cast<long long>(r.extrema_confirmed));
     // The augmented tree too (regular nodes: one arc up, one down, one sector each).
     ExactTreeOptions ao;
     ao.augmented = true;
@@ -149,6 +158,99 @@ TEST_F(Corrupted, MovedToRegularPoint) {
   const auto r = check_tree(t, mesh);
   EXPECT_FALSE(has_failure(r, "value")) << r.summary();
   EXPECT_TRUE(has_failure(r, "type")) << r.summary();
+}
+
+// The extrema at vertices and on edges that the edge polynomials decide: a tree without one of
+// them fails, and so do an empty tree and the min + max tree of a field with many extrema.
+class Incomplete : public ::testing::Test {
+protected:
+  void SetUp() override {
+    DatasetOptions o;
+    o.cells = 800;
+    mesh = build_mesh(generate_dataset("random", o));
+    tree = reduced_tree(mesh);
+    const TreeCheckReport r = check_tree(tree, mesh);
+    ASSERT_TRUE(r.ok()) << r.summary();
+    ASSERT_GT(r.extrema_confirmed, 2);
+  }
+  Mesh mesh;
+  TreeResult tree;
+};
+
+TEST_F(Incomplete, EmptyTree) {
+  TreeResult t = tree;
+  t.nodes.clear();
+  t.arcs.clear();
+  t.pairs.clear();
+  const auto r = check_tree(t, mesh);
+  EXPECT_TRUE(has_failure(r, "tree")) << r.summary();
+  EXPECT_TRUE(has_failure(r, "completeness")) << r.summary();
+}
+
+TEST_F(Incomplete, MinimumAndMaximumOnly) {
+  TreeResult t;
+  t.method = tree.method;
+  t.nodes = {tree.nodes.front(), tree.nodes.back()};
+  t.nodes[0].up = 1, t.nodes[0].down = 0, t.nodes[1].up = 0, t.nodes[1].down = 1;
+  t.arcs = {{0, 1}};
+  t.pairs = tree_pairs(as_contour_tree(t));
+  const auto r = check_tree(t, mesh);
+  EXPECT_FALSE(has_failure(r, "tree")) << r.summary();
+  EXPECT_TRUE(has_failure(r, "completeness")) << r.summary();
+}
+
+TEST_F(Incomplete, LeafRemoved) {
+  // A leaf minimum at a vertex or on an edge, and its arc, taken out of the tree.
+  TreeResult t = tree;
+  int64_t leaf = -1;
+  for (std::size_t i = 1; i < t.nodes.size() && leaf < 0; ++i)
+    if (t.nodes[i].type == NodeType::Minimum && t.nodes[i].location != NodeLocation::Interior &&
+        !t.nodes[i].fallback)
+      leaf = static_cast<int64_t>(i);
+  ASSERT_GE(leaf, 0);
+  t.nodes.erase(t.nodes.begin() + leaf);
+  std::vector<std::array<int64_t, 2>> arcs;
+  for (auto a : t.arcs) {
+    if (a[0] == leaf || a[1] == leaf)
+      continue;
+    for (auto &x : a)
+      x -= x > leaf;
+    arcs.push_back(a);
+  }
+  t.arcs = arcs;
+  for (auto &n : t.nodes)
+    n.up = n.down = 0;
+  t.pairs.clear();
+  const auto r = check_tree(t, mesh, {.check_types = false});
+  EXPECT_TRUE(has_failure(r, "completeness")) << r.summary();
+}
+
+TEST_F(Incomplete, PairsNotOfTheArcs) {
+  TreeResult t = tree;
+  ASSERT_GT(t.pairs.size(), 2u);
+  t.pairs.pop_back();
+  EXPECT_TRUE(has_failure(check_tree(t, mesh), "pairs"));
+  t = tree;
+  std::swap(t.pairs[0].death, t.pairs[1].death);
+  EXPECT_TRUE(has_failure(check_tree(t, mesh), "pairs"));
+}
+
+TEST_F(Incomplete, RecordedPersistenceMustBeTheNodes) {
+  // A tree read back from its JSON passes; with one pair's persistence changed in the file, the
+  // checker names the pair.
+  const auto dir = std::filesystem::temp_directory_path() / "hoct-tree-check-test";
+  std::filesystem::create_directories(dir);
+  const std::string path = (dir / "tree.json").string();
+  write_tree_json(path, tree);
+  const TreeResult back = read_tree_json(path);
+  ASSERT_EQ(back.recorded_persistence.size(), back.pairs.size());
+  EXPECT_TRUE(check_tree(back, mesh).ok()) << check_tree(back, mesh).summary();
+  TreeResult t = back;
+  t.recorded_persistence[1] = 2 * t.recorded_persistence[1] + 1;
+  const auto r = check_tree(t, mesh);
+  EXPECT_TRUE(has_failure(r, "pairs")) << r.summary();
+  EXPECT_NE(r.summary().find("pair 1 records persistence"), std::string::npos) << r.summary();
+  std::filesystem::remove_all(dir);
 }
 
 TEST(TreeCheck, SectorsOfAMonkeySaddle) {
