@@ -37,8 +37,8 @@ void require_valid_mesh(const Mesh &m, bool allow_forceable) {
   if (unforceable || !m.complete)
     throw Error(name_of(m) + ": the mesh is not valid:\n" + m.problems.summary() +
                 (allow_forceable && m.complete
-                     ? "(--force cannot go past these: the mesh must be a surface with valid "
-                       "data)"
+                     ? "(--force (Python: force=True; ParaView: Force) cannot go past these: the "
+                       "mesh must be a surface with valid data)"
                      : ""));
 }
 

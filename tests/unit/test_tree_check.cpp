@@ -199,15 +199,17 @@ TEST_F(Incomplete, MinimumAndMaximumOnly) {
   EXPECT_TRUE(has_failure(r, "completeness")) << r.summary();
 }
 
-TEST_F(Incomplete, LeafRemoved) {
-  // A leaf minimum at a vertex or on an edge, and its arc, taken out of the tree.
+// The tree without its first leaf (minimum or maximum, outside fallback cells) at `where`, and
+// the leaf's arc; -1 if it has none.
+TreeResult without_leaf(const TreeResult &tree, NodeLocation where) {
   TreeResult t = tree;
   int64_t leaf = -1;
-  for (std::size_t i = 1; i < t.nodes.size() && leaf < 0; ++i)
-    if (t.nodes[i].type == NodeType::Minimum && t.nodes[i].location != NodeLocation::Interior &&
-        !t.nodes[i].fallback)
+  for (std::size_t i = 0; i < t.nodes.size() && leaf < 0; ++i)
+    if ((t.nodes[i].type == NodeType::Minimum || t.nodes[i].type == NodeType::Maximum) &&
+        t.nodes[i].location == where && !t.nodes[i].fallback)
       leaf = static_cast<int64_t>(i);
-  ASSERT_GE(leaf, 0);
+  if (leaf < 0)
+    return {};
   t.nodes.erase(t.nodes.begin() + leaf);
   std::vector<std::array<int64_t, 2>> arcs;
   for (auto a : t.arcs) {
@@ -221,8 +223,28 @@ TEST_F(Incomplete, LeafRemoved) {
   for (auto &n : t.nodes)
     n.up = n.down = 0;
   t.pairs.clear();
+  return t;
+}
+
+TEST_F(Incomplete, EdgeLeafRemoved) {
+  const TreeResult t = without_leaf(tree, NodeLocation::Edge);
+  ASSERT_FALSE(t.nodes.empty());
   const auto r = check_tree(t, mesh, {.check_types = false});
   EXPECT_TRUE(has_failure(r, "completeness")) << r.summary();
+}
+
+TEST_F(Incomplete, VertexLeafRemoved) {
+  // gauss has extrema at vertices (the random field's are on edges and inside cells).
+  const Mesh m = build_mesh(generate_dataset("gauss", {}));
+  const TreeResult full = reduced_tree(m);
+  ASSERT_TRUE(check_tree(full, m).ok());
+  const TreeResult t = without_leaf(full, NodeLocation::Vertex);
+  ASSERT_FALSE(t.nodes.empty());
+  const auto r = check_tree(t, m, {.check_types = false});
+  bool vertex = false;
+  for (const auto &f : r.failures)
+    vertex |= f.check == "completeness" && f.message.rfind("vertex ", 0) == 0;
+  EXPECT_TRUE(vertex) << r.summary();
 }
 
 TEST_F(Incomplete, PairsNotOfTheArcs) {
