@@ -220,16 +220,20 @@ PYBIND11_MODULE(_hoct, m) {
                                std::vector<int64_t> b, e;
                                std::vector<double> p;
                                std::vector<std::string> k;
+                               std::vector<uint8_t> u;
                                for (const auto &x : t.tree.pairs) {
                                  b.push_back(x.birth);
                                  e.push_back(x.death);
                                  p.push_back(x.persistence());
                                  k.push_back(to_string(x.kind));
+                                 u.push_back(t.tree.uncertain(x));
                                }
                                d["birth"] = array_1d(b);
                                d["death"] = array_1d(e);
                                d["persistence"] = array_1d(p);
                                d["kind"] = k;
+                               // At or below the input's precision (Tree.precision).
+                               d["uncertain"] = array_1d(u).attr("astype")("bool");
                                return d;
                              })
       .def_property_readonly("branches",
@@ -252,6 +256,15 @@ PYBIND11_MODULE(_hoct, m) {
                                d["depth"] = array_1d(de);
                                return d;
                              })
+      .def_property_readonly(
+          "precision",
+          [](const PyTree &t) -> py::object {
+            if (!t.tree.stats.precision)
+              return py::none();
+            return py::float_(*t.tree.stats.precision);
+          },
+          "The smallest persistence the input's values resolve; pairs at or below it are "
+          "flagged in pairs['uncertain']")
       .def_property_readonly("stats",
                              [](const PyTree &t) {
                                py::dict d;
@@ -329,8 +342,10 @@ PYBIND11_MODULE(_hoct, m) {
   m.def(
       "generate",
       [](const std::string &name, int degree, long long cells, uint64_t seed, double frequency,
-         double plateau) {
+         double plateau, double scale, double offset) {
         DatasetOptions o;
+        o.scale = scale;
+        o.offset = offset;
         o.degree = degree;
         o.cells = cells;
         o.seed = seed;

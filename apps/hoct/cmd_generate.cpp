@@ -22,6 +22,7 @@ struct GenerateOptions {
   uint64_t seed = 1;
   double frequency = 1;
   double plateau = 0;
+  double scale = 1, offset = 0;
   bool list = false;
 };
 
@@ -68,6 +69,8 @@ void run_generate(const GenerateOptions &o) {
   options.seed = o.seed;
   options.frequency = o.frequency;
   options.plateau = o.plateau;
+  options.scale = o.scale;
+  options.offset = o.offset;
   const MeshInput mesh = generate_dataset(o.name, options);
   const double generated = clock.lap();
   write_vtu(o.output, mesh, encoding);
@@ -102,6 +105,11 @@ void register_generate(CLI::App &app) {
   sub->add_option("--plateau", o->plateau,
                   "random only: raise the node values below their P-th percentile to it, a "
                   "plateau of constant cells over about P% of the square (default 0)");
+  sub->add_option("--scale", o->scale,
+                  "Multiply every value by S (default 1; applied before --offset)");
+  sub->add_option("--offset", o->offset,
+                  "Add C to every value (default 0): the same field around C, as kelvin or "
+                  "pascal data are");
   sub->add_option("--encoding", o->encoding,
                   "VTU encoding: ascii, base64, zlib, appended (default), appended-base64")
       ->check(CLI::IsMember({"ascii", "base64", "zlib", "appended", "appended-base64"}));

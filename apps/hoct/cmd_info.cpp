@@ -60,6 +60,7 @@ int run_info(const InfoOptions &o) {
       j["components"] = m.topology.components();
       j["domain"] = domain_kind(m.topology);
       j["value_range"] = {m.field.min_value(), m.field.max_value()};
+      j["precision"] = m.field.precision();
       j["geometry"] = geometry;
       j["curved_cells"] = m.geometry.curved_cells();
       j["bounds"] = m.geometry.bounds();
@@ -102,6 +103,8 @@ int run_info(const InfoOptions &o) {
                 static_cast<long long>(m.topology.boundary_loops()),
                 static_cast<long long>(m.topology.components()), domain_kind(m.topology).c_str());
     std::printf("values:      [%.17g, %.17g]\n", m.field.min_value(), m.field.max_value());
+    std::printf("precision:   %.3g (the smallest persistence these values resolve)\n",
+                m.field.precision());
   } else {
     std::printf("points:      %lld\n", static_cast<long long>(m.num_points));
   }

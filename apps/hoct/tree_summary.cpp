@@ -40,6 +40,10 @@ void print_tree_summary(const std::string &file, const Mesh &mesh, const TreeRes
       std::printf(" %.6g", pers[i]);
     std::printf(")");
   }
+  if (tree.stats.precision)
+    std::printf("\n  precision of the data: %.3g (%lld pair(s) at or below it, flagged uncertain)",
+                *tree.stats.precision,
+                static_cast<long long>(tree.stats.pairs_below_precision.value_or(0)));
   std::printf("\n  stats:");
   int col = 0;
   for (const auto &[k, v] : tree.stats.entries()) {

@@ -81,12 +81,13 @@ def from_arrays(points, cells, values, degree=None, cell_types=None):
     return _hoct.from_arrays(points, cells, values)
 
 
-def generate(name, degree=0, cells=0, seed=1, frequency=1.0, plateau=0.0):
+def generate(name, degree=0, cells=0, seed=1, frequency=1.0, plateau=0.0, scale=1.0, offset=0.0):
     """A synthetic dataset (hoct.dataset_names()): the same as `hoct generate`
     (frequency: `random` only, its wave numbers multiplied; plateau: `random` only, the values
-    below their plateau-th percentile raised to it); its mesh built on every hardware thread."""
+    below their plateau-th percentile raised to it; every value v then becomes
+    scale * v + offset); its mesh built on every hardware thread."""
     return _hoct.generate(name, int(degree), int(cells), int(seed), float(frequency),
-                          float(plateau))
+                          float(plateau), float(scale), float(offset))
 
 
 dataset_names = _hoct.dataset_names

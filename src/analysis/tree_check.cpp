@@ -314,7 +314,8 @@ private:
   void completeness() {
     const Topology &t = mesh_.topology;
     const Field &field = mesh_.field;
-    const double tol = 1e-9 * scale_;
+    // Slopes of the relative values the field holds: relative to their range, not to |f|.
+    const double tol = 1e-9 * std::max(field.value_scale(), field.max_value() - field.min_value());
     const int64_t nv = t.num_vertices(), ne = t.num_edges();
     // Per vertex: every edge so far ascends (bit 0) / descends (bit 1) away from it.
     std::vector<uint8_t> all(static_cast<std::size_t>(nv), 3);
@@ -348,7 +349,8 @@ private:
       const int64_t c = vertex_cells_[vertex_offset_[v]].first;
       const int corner = vertex_cells_[vertex_offset_[v]].second;
       expect_extremum((all[v] & 1) ? NodeType::Minimum : NodeType::Maximum, c, kCorner[corner],
-                      field.vertex_value(v), cells, "vertex " + std::to_string(v));
+                      field.reference() + field.vertex_value(v), cells,
+                      "vertex " + std::to_string(v));
     }
     EdgeNodeOptions eo;
     const EdgeNodes en = find_edge_nodes(t, field, eo);
@@ -378,9 +380,9 @@ private:
         const int64_t c = t.edge_cells_begin(e)[0];
         const int k = t.local_edge(c, e);
         const Vec2 uv = point_on_edge(k, t.edge_reversed(c, k) ? 1 - node.t : node.t);
-        expect_extremum(edge_min ? NodeType::Minimum : NodeType::Maximum, c, uv, node.value, cells,
-                        "the critical point of edge " + std::to_string(e) +
-                            " at t = " + fmt(node.t));
+        expect_extremum(
+            edge_min ? NodeType::Minimum : NodeType::Maximum, c, uv, field.reference() + node.value,
+            cells, "the critical point of edge " + std::to_string(e) + " at t = " + fmt(node.t));
       }
     }
   }
@@ -655,7 +657,11 @@ private:
     for (const auto &s : ring.samples)
       for (double b : poly(s.cell).coefficients())
         eps = std::max(eps, std::abs(b));
-    eps = std::max(eps * 256 * std::numeric_limits<double>::epsilon(), kTiny);
+    // The cell polynomials hold f - reference (mesh/field.hpp); the node's absolute value was
+    // rounded to its own units in the last place when the reference was added back.
+    const double relative = nd.value - mesh_.field.reference();
+    eps = std::max((eps * 256 + 2 * std::abs(nd.value)) * std::numeric_limits<double>::epsilon(),
+                   kTiny);
     // The smallest radius at which every sample differs from the node's value by more than
     // rounding decides: small enough to see only this node, large enough to be above rounding.
     for (double r : {1e-5, 3e-5, 1e-4, 3e-4, 1e-3, 3e-3, 1e-2}) {
@@ -665,7 +671,7 @@ private:
       for (std::size_t j = 0; j < ring.samples.size() && !flat; ++j) {
         const auto &s = ring.samples[j];
         const double x = s.base[0] + r * s.dir[0], y = s.base[1] + r * s.dir[1];
-        const double d = poly(s.cell)(std::max(0.0, x), std::max(0.0, y)) - nd.value;
+        const double d = poly(s.cell)(std::max(0.0, x), std::max(0.0, y)) - relative;
         if (!(std::abs(d) > eps))
           flat = true;
         sign[j] = d > 0 ? 1 : -1;

@@ -3,6 +3,7 @@
 #include "datasets/dataset_options.hpp"
 #include "util/error.hpp"
 
+#include <cmath>
 #include <utility>
 
 namespace hoct {
@@ -62,7 +63,13 @@ MeshInput generate_dataset(const std::string &name, const DatasetOptions &option
         throw Error(name + ": --frequency applies to the random dataset only");
       if (options.plateau != 0 && name != "random")
         throw Error(name + ": --plateau applies to the random dataset only");
-      return e.generate(options);
+      if (!std::isfinite(options.scale) || options.scale == 0 || !std::isfinite(options.offset))
+        throw Error(name + ": --scale must be finite and not zero, --offset finite");
+      MeshInput mesh = e.generate(options);
+      if (options.scale != 1 || options.offset != 0)
+        for (double &v : mesh.values)
+          v = options.scale * v + options.offset;
+      return mesh;
     }
   std::string known;
   for (const auto &e : registry())

@@ -21,6 +21,10 @@ struct DatasetOptions {
   // plateau over about P% of the square, of constant cells where all of a cell's nodes are
   // raised, as in clamped FEM fields (a concentration cut at zero, a saturated phase field).
   double plateau = 0;
+  // Every dataset: its values v become scale * v + offset (rounded once, as a solver writing
+  // kelvin or pascal would): the same field shifted and scaled, for invariance tests.
+  double scale = 1;
+  double offset = 0;
 };
 
 // Names accepted by generate_dataset, in a stable order.

@@ -80,6 +80,7 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
 
   // 8. The result: the tree's nodes in the mesh, and the graph to draw its arcs.
   TreeResult r = tree_result(mesh, en, graph, ct, opt.augmented);
+  offset_values(r, mesh.field.reference());
   if (opt.arc_geometry)
     r.graph = exact_arc_graph(mesh, en, graph, opt, threads);
   time.output = clock.lap();

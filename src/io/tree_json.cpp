@@ -111,14 +111,18 @@ std::string to_json_text(const TreeResult &t, bool timings) {
     arc[1] = t.arcs[i][1];
     return arc;
   });
+  // A pair at or below the input's precision says so ("uncertain": true).
   json pair = {{"birth", 0}, {"death", 0}, {"persistence", 0.0}, {"kind", ""}};
+  json uncertain_pair = pair;
+  uncertain_pair["uncertain"] = true;
   w.array("pairs", t.pairs.size(), [&](std::size_t i) -> const json & {
     const PersistencePair &p = t.pairs[i];
-    pair["birth"] = p.birth;
-    pair["death"] = p.death;
-    pair["persistence"] = p.persistence();
-    pair["kind"] = to_string(p.kind);
-    return pair;
+    json &o = t.uncertain(p) ? uncertain_pair : pair;
+    o["birth"] = p.birth;
+    o["death"] = p.death;
+    o["persistence"] = p.persistence();
+    o["kind"] = to_string(p.kind);
+    return o;
   });
   json branch = {{"id", 0},     {"extremum", 0}, {"saddle", 0}, {"persistence", 0.0},
                  {"parent", 0}, {"depth", 0}};

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 namespace hoct {
@@ -13,18 +14,36 @@ namespace {
 
 // The values and point ids of cell c's nodes along local edge k, from corner k to corner k+1
 // (or reversed), into vals[0 .. d] and ids[0 .. d].
-void edge_node_values(const MeshInput &in, int64_t c, int k, bool reversed, double *vals,
-                      int64_t *ids) {
+void edge_node_values(const MeshInput &in, double reference, int64_t c, int k, bool reversed,
+                      double *vals, int64_t *ids) {
   const int d = in.cell_degree[c];
   const int64_t *nodes = &in.cell_nodes[in.cell_offsets[c]];
   for (int t = 0; t <= d; ++t) {
     const int64_t p = nodes[edge_lattice_index(d, k, reversed ? d - t : t)];
     ids[t] = p;
-    vals[t] = in.values[p];
+    vals[t] = in.values[p] - reference;
   }
 }
 
+// `amplification` units in the last place of the largest |value| (see Field::precision), plus
+// 1e-12 of the range.
+double data_precision(double lo, double hi, double amplification) {
+  const double magnitude = std::max(std::abs(lo), std::abs(hi));
+  return amplification * std::numeric_limits<double>::epsilon() * magnitude + 1e-12 * (hi - lo);
+}
+
 } // namespace
+
+double reference_value(double lo, double hi) {
+  if (!(lo <= hi))
+    return 0;
+  const double mid = lo + (hi - lo) / 2;
+  return std::abs(mid) >= 2 * (hi - lo) ? mid : 0.0;
+}
+
+double Field::value_scale() const {
+  return std::max({std::abs(min_value_ - reference_), std::abs(max_value_ - reference_), 1e-300});
+}
 
 BernsteinTriangle Field::cell_polynomial(int64_t c) const {
   auto s = coefficients(c);
@@ -36,7 +55,13 @@ BernsteinPoly Field::edge_polynomial(int64_t e) const {
                                            edge_coef_.begin() + edge_offset_[e + 1]));
 }
 
-double Field::value(int64_t c, double u, double v) const { return cell_polynomial(c)(u, v); }
+double Field::relative_value(int64_t c, double u, double v) const {
+  return cell_polynomial(c)(u, v);
+}
+
+double Field::value(int64_t c, double u, double v) const {
+  return reference_ + relative_value(c, u, v);
+}
 
 Field Field::build(const MeshInput &in, const Topology &topo, ProblemLog &problems, int threads) {
   Field f;
@@ -47,6 +72,15 @@ Field Field::build(const MeshInput &in, const Topology &topo, ProblemLog &proble
     f.min_value_ = *lo;
     f.max_value_ = *hi;
   }
+  f.reference_ = reference_value(f.min_value_, f.max_value_);
+  const double ref = f.reference_;
+  int max_input_degree = 1;
+  for (const uint8_t d : f.input_degree_)
+    max_input_degree = std::max(max_input_degree, static_cast<int>(d));
+  f.precision_ = data_precision(f.min_value_, f.max_value_,
+                                std::max(2.0, lagrange_to_bernstein_norm(max_input_degree)));
+  // Continuity is about the input's own values (a solver's rounding of |f|), so its tolerance
+  // is relative to their magnitude.
   const double scale = std::max({std::abs(f.min_value_), std::abs(f.max_value_), 1e-300});
   const double tol = kContinuityTolerance * scale;
 
@@ -90,7 +124,7 @@ Field Field::build(const MeshInput &in, const Topology &topo, ProblemLog &proble
       const int64_t c = owner[e];
       const int k = owner_local[e];
       const int d = f.edge_degree_[e];
-      edge_node_values(in, c, k, topo.edge_reversed(c, k), vals, ids);
+      edge_node_values(in, ref, c, k, topo.edge_reversed(c, k), vals, ids);
       double *p = f.edge_coef_.data() + f.edge_offset_[e];
       bernstein_from_equispaced(vals, d, p);
 
@@ -102,7 +136,7 @@ Field Field::build(const MeshInput &in, const Topology &topo, ProblemLog &proble
           continue;
         const int ko = topo.local_edge(o, e);
         const int od = in.cell_degree[o];
-        edge_node_values(in, o, ko, topo.edge_reversed(o, ko), other_vals, other_ids);
+        edge_node_values(in, ref, o, ko, topo.edge_reversed(o, ko), other_vals, other_ids);
         if (od == d && std::equal(other_ids, other_ids + d + 1, ids))
           continue; // the same nodes: continuous by construction
         double gap = 0.0;
@@ -131,7 +165,7 @@ Field Field::build(const MeshInput &in, const Topology &topo, ProblemLog &proble
   f.vertex_value_.resize(nv);
   parallel_for(nv, threads_for(nv, threads, 65536), [&](int64_t begin, int64_t end, int) {
     for (int64_t v = begin; v < end; ++v)
-      f.vertex_value_[v] = in.values[topo.vertex_point(v)];
+      f.vertex_value_[v] = in.values[topo.vertex_point(v)] - ref;
   });
   f.pin_edge_ends(topo, threads);
 
@@ -153,7 +187,7 @@ Field Field::build(const MeshInput &in, const Topology &topo, ProblemLog &proble
           vals = heap.data();
         }
         for (int i = 0; i < n; ++i)
-          vals[i] = in.values[in.cell_nodes[in.cell_offsets[c] + i]];
+          vals[i] = in.values[in.cell_nodes[in.cell_offsets[c] + i]] - ref;
         if (din == degree) {
           bernstein_from_lattice_values(vals, din, out);
         } else {
@@ -226,6 +260,8 @@ Field Field::build_from_polynomials(const Topology &topo,
   // Without node values, the range is the (certified) coefficient enclosure.
   f.min_value_ = nc ? lo : 0.0;
   f.max_value_ = nc ? hi : 0.0;
+  // The coefficients are the data: their rounding moves the field by as much.
+  f.precision_ = data_precision(f.min_value_, f.max_value_, 2.0);
   const double tol =
       kContinuityTolerance * std::max({std::abs(f.min_value_), std::abs(f.max_value_), 1e-300});
   f.edge_degree_.assign(ne, 0);

@@ -18,6 +18,19 @@
 
 namespace hoct {
 
+// Values relative to a reference. A field of range 3 around 1e7 (kelvin, pascal) keeps only ~9
+// of its doubles' digits for its variation; converted to Bernstein form as it is, every rounding
+// and tolerance would scale with 1e7 instead of 3. So the field subtracts a reference value from
+// every node value first (exactly: see reference_value) and stores f - reference(): the cell and
+// edge coefficients and the vertex values below are all relative to it, and so is everything the
+// exact and refined pipelines compute from them. value(), min_value() and max_value() are
+// absolute; the pipeline adds reference() back to the values it reports.
+// The reference for data in [lo, hi]: their midpoint when it lies at least two ranges from zero,
+// else 0. Then every x in [lo, hi] lies within [3c/4, 5c/4], so x - c is exact (Sterbenz) and
+// (x - c) + c gives x back bit for bit; below that, |x| < 2.5 (hi - lo) already and a shift
+// would gain at most a bit or two.
+double reference_value(double lo, double hi);
+
 class Field {
 public:
   // Relative tolerance (of the value scale) for continuity across edges whose two cells do not
@@ -54,14 +67,27 @@ public:
             static_cast<std::size_t>(edge_offset_[e + 1] - edge_offset_[e])};
   }
 
-  // The field at mesh vertex v: the one value every edge and cell uses there (the edge
-  // polynomials' end coefficients are set to it exactly).
+  // The field at mesh vertex v minus reference(): the one value every edge and cell uses there
+  // (the edge polynomials' end coefficients are set to it exactly).
   double vertex_value(int64_t v) const { return vertex_value_[v]; }
 
+  // The field at (u, v) of cell c: absolute, reference() + relative_value(c, u, v).
   double value(int64_t c, double u, double v) const;
-  // Smallest and largest node value of the input (the data range).
+  double relative_value(int64_t c, double u, double v) const;
+  // Smallest and largest node value of the input (the data range), absolute.
   double min_value() const { return min_value_; }
   double max_value() const { return max_value_; }
+  // The value subtracted from every node value (0 unless the data sit far from zero).
+  double reference() const { return reference_; }
+  // The smallest persistence the input's values resolve. Each node value is known to half a
+  // unit in its last place (at most eps |f|max / 2); that moves the Bernstein coefficients,
+  // hence the field, by at most lagrange_to_bernstein_norm(degree) times as much, and a
+  // persistence pair by twice that (the stability of persistence diagrams). Plus 1e-12 of the
+  // range, the rounding floor of the computation itself (flat-region contraction).
+  double precision() const { return precision_; }
+  // The largest |node value - reference()|: the magnitude of the values the computation sees,
+  // the scale of its relative tolerances (at least 1e-300).
+  double value_scale() const;
   int max_degree() const { return max_degree_; }
 
 private:
@@ -79,7 +105,7 @@ private:
   // Filled completely by parallel loops right after sizing (first touched by their threads).
   UninitializedVector<double> coef_, edge_coef_;
   std::vector<double> vertex_value_;
-  double min_value_ = 0, max_value_ = 0;
+  double min_value_ = 0, max_value_ = 0, reference_ = 0, precision_ = 0;
   int max_degree_ = 0;
 };
 

@@ -88,7 +88,9 @@ TreeOutcome compute_tree(const Mesh &mesh, const TreeRequest &rq, const MeshInpu
         tree.nodes.empty() ? 0 : tree.nodes.back().value - tree.nodes.front().value;
     out.simplified = simplify_tree(tree, rq.simplify->absolute(range));
     out.simplified->forced = out.warnings;
+    set_precision(*out.simplified, mesh.field.precision());
   }
+  set_precision(tree, mesh.field.precision());
   if (rq.arcs == ArcGeometry::AllPaths || (rq.arcs == ArcGeometry::Paths && !out.simplified))
     compute_arc_paths(tree, threads);
   if (out.simplified && (rq.arcs == ArcGeometry::AllPaths || rq.arcs == ArcGeometry::Paths))

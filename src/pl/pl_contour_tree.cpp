@@ -36,6 +36,7 @@ TreeResult pl_contour_tree(const PlMesh &m, bool augmented, const std::string &m
       n.location = classify_location(n.uv[0], n.uv[1]);
     }
   });
+  offset_values(r, m.reference);
   r.stats.time.pairs = clock.lap(); // the result, its persistence pairs above all
   if (with_graph) {
     const ScalarGraph g = m.graph();

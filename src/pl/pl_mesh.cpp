@@ -19,6 +19,9 @@ MeshInput to_mesh_input(const PlMesh &pl) {
   MeshInput m;
   m.points.assign(pl.points.begin(), pl.points.end());
   m.values.assign(pl.values.begin(), pl.values.end());
+  if (pl.reference != 0)
+    for (double &v : m.values)
+      v += pl.reference;
   m.cell_nodes.reserve(pl.triangles.size() * 3);
   for (const auto &t : pl.triangles)
     m.add_cell(1, t.data());

@@ -15,6 +15,9 @@ namespace hoct {
 struct PlMesh {
   std::vector<Vec3> points;
   std::vector<double> values;
+  // values[i] + reference is the field's value at point i: refine() keeps the exact field's
+  // values relative to its reference (mesh/field.hpp); the trees and writers add it back.
+  double reference = 0;
   std::vector<std::array<int64_t, 3>> triangles;
   // Where each vertex comes from in the higher-order mesh (for reports): the cell and the
   // parametric position in it; -1 if unknown.

@@ -23,6 +23,7 @@ PlMesh refine(const Mesh &mesh, const RefinementOptions &opt) {
     throw Error("refine: edge_points must have one list per edge");
 
   PlMesh pl;
+  pl.reference = field.reference();
   auto add = [&](int64_t cell, double u, double v, double value) {
     pl.points.push_back(geom.position(cell, u, v));
     pl.values.push_back(value);

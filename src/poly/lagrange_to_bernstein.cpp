@@ -75,6 +75,19 @@ const std::vector<double> &lagrange_to_bernstein_triangle(int degree) {
   return cache[degree];
 }
 
+double lagrange_to_bernstein_norm(int degree) {
+  const std::vector<double> &m = lagrange_to_bernstein_triangle(degree);
+  const std::size_t n = static_cast<std::size_t>(lattice_size(degree));
+  double norm = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    double row = 0;
+    for (std::size_t j = 0; j < n; ++j)
+      row += std::abs(m[i * n + j]);
+    norm = std::max(norm, row);
+  }
+  return norm;
+}
+
 const std::vector<double> &lagrange_to_bernstein_1d(int degree) {
   check_degree(degree);
   // Built once per degree (std::call_once: no lock on later calls from many threads).

@@ -4,6 +4,7 @@
 #include "util/parallel_for.hpp"
 
 #include <cmath>
+#include <limits>
 
 namespace hoct {
 
@@ -83,12 +84,35 @@ TreeResult derived_result(const TreeResult &t, const ContourTree &tree,
 
 } // namespace
 
+void offset_values(TreeResult &t, double reference) {
+  if (reference == 0)
+    return;
+  for (auto &n : t.nodes)
+    n.value += reference;
+  for (auto &p : t.pairs) {
+    p.birth_value += reference;
+    p.death_value += reference;
+  }
+}
+
+void set_precision(TreeResult &t, double precision) {
+  t.stats.precision = precision;
+  int64_t below = 0;
+  for (const auto &p : t.pairs)
+    below += t.uncertain(p);
+  t.stats.pairs_below_precision = below;
+}
+
 TreeResult contract_flat(const TreeResult &t) {
-  // Flat up to the rounding of polynomial evaluation: 1e-12 of the value scale.
-  double scale = 0;
+  // Flat up to the rounding of polynomial evaluation, relative to the range (values are
+  // computed relative to a reference near them), plus two units in the last place of the
+  // absolute values they were shifted back to.
+  double magnitude = 0;
   for (const auto &n : t.nodes)
-    scale = std::max(scale, std::abs(n.value));
-  const FlatContraction f = contract_flat_arcs(as_contour_tree(t), 1e-12 * scale);
+    magnitude = std::max(magnitude, std::abs(n.value));
+  const double range = t.nodes.empty() ? 0 : t.nodes.back().value - t.nodes.front().value;
+  const double tolerance = 1e-12 * range + 2 * std::numeric_limits<double>::epsilon() * magnitude;
+  const FlatContraction f = contract_flat_arcs(as_contour_tree(t), tolerance);
   TreeResult r = derived_result(t, f.tree, f.kept);
   for (std::size_t i = 0; i < r.nodes.size(); ++i)
     r.nodes[i].merged = f.size[i];

@@ -59,6 +59,12 @@ struct TreeResult {
   std::shared_ptr<const GeometricGraph> graph;
   std::vector<std::vector<Vec3>> arc_paths;
 
+  // A pair at or below the input's precision (stats.precision): its existence and persistence
+  // are not resolved by the data.
+  bool uncertain(const PersistencePair &p) const {
+    return stats.precision && p.persistence() <= *stats.precision;
+  }
+
   // Counts of nodes by type: minimum, maximum, saddle, regular.
   std::array<int64_t, 4> type_counts() const;
 };
@@ -92,6 +98,14 @@ TreeResult tree_result_of(const ContourTree &ct, const std::string &method, bool
   return r;
 }
 
+// Adds `reference` to the values of the nodes and pairs: a tree computed from values relative
+// to a reference (mesh/field.hpp) reports absolute ones. The order stays (rounding is
+// monotone); persistence is then as precise as the absolute values.
+void offset_values(TreeResult &tree, double reference);
+
+// Records the input's precision in the statistics and counts the pairs at or below it.
+void set_precision(TreeResult &tree, double precision);
+
 // The tree as a ContourTree (indices of `nodes` as node ids).
 ContourTree as_contour_tree(const TreeResult &tree);
 
@@ -100,7 +114,8 @@ ContourTree as_contour_tree(const TreeResult &tree);
 // "simplification_threshold" in the statistics.
 TreeResult simplify_tree(const TreeResult &tree, double threshold);
 
-// Contracts the zero-length arcs (within 1e-12 of the value scale) of flat regions
+// Contracts the zero-length arcs (within 1e-12 of the value range, plus the rounding of
+// values of the nodes' magnitude) of flat regions
 // (tree/flat_regions.hpp), recomputes pairs and
 // branches, and records "flat_nodes_merged" in the statistics.
 TreeResult contract_flat(const TreeResult &tree);

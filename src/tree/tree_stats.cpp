@@ -97,6 +97,8 @@ const std::vector<Entry> &table() {
     e.push_back(
         plain_entry("nodes_before_simplification", &TreeStats::nodes_before_simplification));
     e.push_back(plain_entry("simplification_threshold", &TreeStats::simplification_threshold));
+    e.push_back(plain_entry("precision", &TreeStats::precision));
+    e.push_back(plain_entry("pairs_below_precision", &TreeStats::pairs_below_precision));
     // The phases in the order they run.
     e.push_back(time_entry("time_read_s", &TreeTimings::read));
     e.push_back(time_entry("time_check_s", &TreeTimings::check));

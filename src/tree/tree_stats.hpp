@@ -61,6 +61,10 @@ struct TreeStats {
   std::optional<int64_t> flat_nodes_merged;
   std::optional<int64_t> nodes_before_simplification;
   std::optional<double> simplification_threshold;
+  // The smallest persistence the input's values resolve (mesh/field.hpp, Field::precision), and
+  // the pairs at or below it: uncertain, kept and flagged.
+  std::optional<double> precision;
+  std::optional<int64_t> pairs_below_precision;
   TreeTimings time;
   // Entries this version does not know (read from another version's JSON), kept as they are.
   std::vector<std::pair<std::string, double>> other;

@@ -73,6 +73,21 @@ def test_tree_api(tmp):
     assert pl.method == "refine k=4"
 
 
+def test_an_offset_field_has_the_same_tree_and_says_how_precise_it_is():
+    # The heater in kelvin-like units: range ~5.7 around 1e7.
+    base = hoct.contour_tree(hoct.generate("heater", cells=1500))
+    hot = hoct.contour_tree(hoct.generate("heater", cells=1500, offset=1e7))
+    assert base.precision < 1e-10 < hot.precision < 1e-6
+    # Above the precision, the same tree (pairs below it may be lost to the rounding).
+    b, h = base.simplify(3 * hot.precision), hot.simplify(3 * hot.precision)
+    assert h.types == b.types and h.arcs.tolist() == b.arcs.tolist()
+    assert np.allclose(h.values - 1e7, b.values, rtol=0, atol=hot.precision)
+    flagged = hot.pairs["uncertain"]
+    assert flagged.dtype == bool and len(flagged) == len(hot.pairs["persistence"])
+    assert list(flagged) == [p <= hot.precision for p in hot.pairs["persistence"]]
+    assert hot.stats["precision"] == hot.precision
+
+
 def test_numpy_and_meshio_input(tmp):
     pts = np.array([[0, 0], [1, 0], [1, 1], [0, 1], [.5, 0], [1, .5], [.5, .5], [.5, 1], [0, .5]], float)
     cells = np.array([[0, 1, 2, 4, 5, 6], [0, 2, 3, 6, 7, 8]])
