@@ -1,8 +1,11 @@
 #include "exact/degenerate_cells.hpp"
 
+#include "cell/strict_extrema.hpp"
 #include "exact/cell_phase.hpp"
 #include "pl/cell_refinement.hpp"
+#include "poly/interpolation_error.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 
@@ -14,6 +17,9 @@ DegenerateCells refine_degenerate_cells(const Mesh &mesh, const EdgeNodes &en, i
   const Field &field = mesh.field;
   DegenerateCells out;
   std::map<std::pair<int64_t, int>, int64_t> lattice_node; // (edge, step from lo) -> id
+  // (node, error) per refined cell's node; sorted and reduced to the largest per node below.
+  std::vector<std::pair<int64_t, double>> node_error;
+  auto bound = [&](int64_t id, double error) { node_error.emplace_back(id, error); };
   std::array<std::vector<double>, 3> extra;
   std::vector<int64_t> ids;
   for (const int64_t c : g.fallback_cells) {
@@ -27,9 +33,12 @@ DegenerateCells refine_degenerate_cells(const Mesh &mesh, const EdgeNodes &en, i
     if (g.fallback[c] & fallback_bit(FallbackReason::ConstantCell)) {
       for (int k = 0; k < 3; ++k) {
         g.mark_fallback(topo.cell_vertices(c)[k]);
+        bound(topo.cell_vertices(c)[k], 0);
         const int64_t e = topo.cell_edge(c, k);
-        for (int64_t i = 0; i < en.count(e); ++i)
+        for (int64_t i = 0; i < en.count(e); ++i) {
           g.mark_fallback(g.edge_base + en.offset[e] + i);
+          bound(g.edge_base + en.offset[e] + i, 0);
+        }
       }
       continue;
     }
@@ -90,6 +99,16 @@ DegenerateCells refine_degenerate_cells(const Mesh &mesh, const EdgeNodes &en, i
         g.tail_source[id - g.tail_base].fallback = true;
       else
         g.mark_fallback(id);
+    // The stand-in's certified distance from the polynomial on this cell.
+    double error = 0;
+    InterpolationError interpolation(poly);
+    for (const auto &t : cr.triangles) {
+      const CellSubVertex &a = cr.vertices[t[0]], &b = cr.vertices[t[1]], &d = cr.vertices[t[2]];
+      error = std::max(error, interpolation.on({a.u, a.v}, {b.u, b.v}, {d.u, d.v}));
+    }
+    out.max_error = std::max(out.max_error, error);
+    for (int64_t id : ids)
+      bound(id, error);
     for (const auto &t : cr.triangles)
       for (int j = 0; j < 3; ++j) {
         g.common_edges.push_back({ids[t[j]], ids[t[(j + 1) % 3]]});
@@ -98,6 +117,37 @@ DegenerateCells refine_degenerate_cells(const Mesh &mesh, const EdgeNodes &en, i
       }
   }
 
+  // Certain extrema (strict, from the edge polynomials) are never merged away: they get no
+  // slack.
+  std::sort(node_error.begin(), node_error.end(), [](const auto &a, const auto &b) {
+    return a.first < b.first || (a.first == b.first && a.second > b.second);
+  });
+  node_error.erase(std::unique(node_error.begin(), node_error.end(),
+                               [](const auto &a, const auto &b) { return a.first == b.first; }),
+                   node_error.end());
+  if (out.max_error > 0) {
+    std::vector<uint8_t> wanted(static_cast<std::size_t>(topo.num_vertices()), 0);
+    for (const auto &[id, error] : node_error)
+      if (id < g.edge_base)
+        wanted[id] = 1;
+    const std::vector<uint8_t> strict_vertex = strict_vertex_extrema(topo, field, wanted);
+    auto certain_extremum = [&](const std::pair<int64_t, double> &entry) {
+      const int64_t id = entry.first;
+      bool certain = false;
+      if (id < g.edge_base) {
+        certain = strict_vertex[id] != 0;
+      } else if (id < g.tail_base) {
+        const int64_t i = id - g.edge_base;
+        const int64_t e =
+            std::upper_bound(en.offset.begin(), en.offset.end(), i) - en.offset.begin() - 1;
+        certain = strict_edge_extremum(topo, field, en, e, i);
+      }
+      return certain;
+    };
+    node_error.erase(std::remove_if(node_error.begin(), node_error.end(), certain_extremum),
+                     node_error.end());
+  }
+  out.node_error = std::move(node_error);
   out.lattice_on_edge.reserve(lattice_node.size());
   for (const auto &[key, id] : lattice_node)
     out.lattice_on_edge.emplace_back(key.first, static_cast<double>(key.second) / K, id);

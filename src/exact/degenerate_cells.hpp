@@ -12,12 +12,19 @@
 #include <array>
 #include <cstdint>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 namespace hoct {
 
 struct DegenerateCells {
   std::array<int64_t, kFallbackReasons> reasons{}; // cells with each reason
+  // How far the PL stand-in may be from the field: for every node of a refined cell, the
+  // largest certified bound (poly/interpolation_error.hpp) over the refined cells it lies in
+  // (0 for a constant cell's), sorted by node id, except the certain extrema
+  // (cell/strict_extrema.hpp); and the largest of all.
+  std::vector<std::pair<int64_t, double>> node_error;
+  double max_error = 0;
   // The lattice nodes the refinements put on mesh edges: (edge, parameter from its lower vertex,
   // node id), sorted.
   std::vector<std::tuple<int64_t, double, int64_t>> lattice_on_edge;

@@ -11,6 +11,8 @@
 #include "util/parallel_for.hpp"
 #include "util/stopwatch.hpp"
 
+#include "tree/stand_in_contraction.hpp"
+
 #include <algorithm>
 
 namespace hoct {
@@ -27,6 +29,26 @@ TreeResult tree_result(const Mesh &mesh, const EdgeNodes &en, const ExactGraph &
     n.fallback = where.fallback;
     n.position = mesh.geometry.position(n.cell, n.uv[0], n.uv[1]);
   });
+}
+
+// The arcs of the fallback cells' PL stand-in no longer than twice its certified distance from
+// the field there, contracted (tree/stand_in_contraction.hpp); returns how many. Augmented trees
+// keep them (their regular nodes would be spliced out).
+int64_t contract_stand_in(const DegenerateCells &degenerate, bool augmented, ContourTree &ct) {
+  if (augmented || degenerate.max_error <= 0)
+    return 0;
+  const auto &errors = degenerate.node_error;
+  std::vector<double> slack(static_cast<std::size_t>(ct.size()), -1.0);
+  for (int64_t i = 0; i < ct.size(); ++i) {
+    auto it = std::lower_bound(errors.begin(), errors.end(),
+                               std::pair<int64_t, double>{ct.nodes[i], -1.0});
+    if (it != errors.end() && it->first == ct.nodes[i])
+      slack[i] = it->second;
+  }
+  StandInContraction c = contract_stand_in_arcs(ct, slack);
+  if (c.contracted > 0)
+    ct = std::move(c.tree);
+  return c.contracted;
 }
 
 } // namespace
@@ -69,7 +91,8 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
 
   // 6. The join and split sweeps, 7. their merge.
   SweepTimings sweep_time;
-  const ContourTree ct = sweep_exact_graph(mesh, en, graph, opt, sweep_time);
+  ContourTree ct = sweep_exact_graph(mesh, en, graph, opt, sweep_time);
+  const int64_t contracted = contract_stand_in(degenerate, opt.augmented, ct);
   time.sweeps = sweep_time.order + sweep_time.sweeps;
   time.merge = sweep_time.merge;
   if (opt.progress) {
@@ -96,6 +119,8 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
   n.descent_steps = totals.counters.steps;
   n.fallback_cells = static_cast<int64_t>(graph.fallback_cells.size());
   n.fallback_by_reason = degenerate.reasons;
+  n.fallback_error = degenerate.max_error;
+  n.fallback_arcs_contracted = contracted;
   n.unresolved_interior_zeros = totals.unresolved_zeros;
   // The cell phase's two passes: their shares of its wall time are their shares of the threads'
   // time in them (on one thread, their own times).

@@ -25,7 +25,7 @@ template <class T> std::optional<double> opt(const std::optional<T> &v) {
   return v ? std::optional<double>(static_cast<double>(*v)) : std::nullopt;
 }
 
-Entry exact_entry(const char *name, int64_t ExactCounts::*field) {
+template <class T> Entry exact_entry(const char *name, T ExactCounts::*field) {
   return {name,
           [field](const TreeStats &s) {
             return s.exact ? std::optional<double>(static_cast<double>((*s.exact).*field))
@@ -34,7 +34,7 @@ Entry exact_entry(const char *name, int64_t ExactCounts::*field) {
           [field](TreeStats &s, double v) {
             if (!s.exact)
               s.exact.emplace();
-            (*s.exact).*field = static_cast<int64_t>(v);
+            (*s.exact).*field = static_cast<T>(v);
           }};
 }
 
@@ -89,6 +89,8 @@ const std::vector<Entry> &table() {
         exact_entry("fallback_cells", &ExactCounts::fallback_cells)};
     for (int r = 0; r < kFallbackReasons; ++r)
       e.push_back(reason_entry(static_cast<FallbackReason>(r)));
+    e.push_back(exact_entry("fallback_error", &ExactCounts::fallback_error));
+    e.push_back(exact_entry("fallback_arcs_contracted", &ExactCounts::fallback_arcs_contracted));
     e.push_back(exact_entry("unresolved_interior_zeros", &ExactCounts::unresolved_interior_zeros));
     e.push_back(pl_entry("pl_vertices", &PlCounts::vertices));
     e.push_back(pl_entry("pl_triangles", &PlCounts::triangles));

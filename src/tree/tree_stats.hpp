@@ -35,6 +35,10 @@ struct ExactCounts {
   int64_t descent_steps = 0;
   int64_t fallback_cells = 0;
   std::array<int64_t, kFallbackReasons> fallback_by_reason{}; // cells with each reason
+  // The largest certified distance of the fallback cells' PL stand-in from the field, and the
+  // arcs of the stand-in within twice it, contracted (tree/stand_in_contraction.hpp).
+  double fallback_error = 0;
+  int64_t fallback_arcs_contracted = 0;
   int64_t unresolved_interior_zeros = 0;
 
   int64_t fallbacks(FallbackReason r) const { return fallback_by_reason[static_cast<int>(r)]; }

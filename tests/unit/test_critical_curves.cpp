@@ -1,0 +1,105 @@
+// Critical curves (ridges, valleys) and degenerate critical points: fields whose exact trees are
+// known by hand, on cells the exact pipeline cannot certify (the gradient vanishes on a curve, or
+// a critical point is singular). Their fallback cells' PL stand-in breaks a ridge into pieces and
+// a degenerate point into a pair; every such pair is within twice the stand-in's certified
+// distance from the field and is cancelled: the tree is the exact one, and the statistics say
+// how many pairs were cancelled and the bound.
+#include "exact/exact_contour_tree.hpp"
+#include "mesh/mesh.hpp"
+#include "pipeline/compute_tree.hpp"
+#include "test_meshes.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+#include <random>
+#include <string>
+#include <vector>
+
+namespace hoct {
+namespace {
+
+using Field2 = std::function<double(double, double)>;
+
+MeshInput on_grid(int n, int degree, const Field2 &f, uint64_t seed = 3) {
+  std::mt19937_64 rng(seed);
+  std::vector<Vec3> v;
+  std::vector<std::array<int64_t, 3>> t;
+  testing::square_grid(n, rng, v, t);
+  return testing::lagrange_mesh(
+      v, t, [degree](int64_t) { return degree; }, nullptr,
+      [&f](const Vec3 &p) { return f(p[0], p[1]); }, rng);
+}
+
+MeshInput one_triangle(int degree, const Field2 &f) {
+  std::mt19937_64 rng(1);
+  const std::vector<Vec3> v = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  const std::vector<std::array<int64_t, 3>> t = {{0, 1, 2}};
+  return testing::lagrange_mesh(
+      v, t, [degree](int64_t) { return degree; }, nullptr,
+      [&f](const Vec3 &p) { return f(p[0], p[1]); }, rng, false);
+}
+
+TreeResult tree_of(const MeshInput &in) {
+  const Mesh mesh = build_mesh(in);
+  return compute_tree(mesh, TreeRequest{}, &in).tree;
+}
+
+// Node types ascending by value, as "min", "max", "saddle" words.
+std::string types(const TreeResult &t) {
+  std::string s;
+  for (const auto &n : t.nodes)
+    s += std::string(s.empty() ? "" : " ") + to_string(n.type);
+  return s;
+}
+
+TEST(CriticalCurves, ARidgeFromACornerToAnEdgeMidpointIsOneMaximum) {
+  // -(x - y)^2 on one quadratic triangle: the maximum 0 is the segment (0,0)-(0.5,0.5); the two
+  // other corners are minima (-1); below 0 the two sides are apart.
+  const TreeResult t =
+      tree_of(one_triangle(2, [](double x, double y) { return -(x - y) * (x - y); }));
+  EXPECT_EQ(types(t), "minimum minimum maximum");
+  ASSERT_EQ(t.nodes.size(), 3u);
+  EXPECT_NEAR(t.nodes[2].value, 0, 1e-12);
+  EXPECT_EQ(t.nodes[2].down, 2);
+  EXPECT_NEAR(t.nodes[0].value, -1, 1e-12);
+  ASSERT_TRUE(t.stats.exact);
+  EXPECT_GT(t.stats.exact->fallback_cells, 0);
+  EXPECT_GT(t.stats.exact->fallback_arcs_contracted, 0);
+  EXPECT_GT(t.stats.exact->fallback_error, 0);
+}
+
+TEST(CriticalCurves, AStraightRidgeAcrossCellsIsOneMaximum) {
+  // -(x + y/2 - 0.8)^2 on 32 quadratic cells: the ridge from (0.8, 0) to (0.3, 1) is the
+  // maximum; each side is convex, with its minimum at the farthest corner: (0,0) at -0.64 and
+  // (1,1) at -0.49.
+  const TreeResult t = tree_of(on_grid(4, 2, [](double x, double y) {
+    const double s = x + y / 2 - 0.8;
+    return -s * s;
+  }));
+  EXPECT_EQ(types(t), "minimum minimum maximum");
+  ASSERT_EQ(t.nodes.size(), 3u);
+  EXPECT_NEAR(t.nodes[0].value, -0.64, 1e-12);
+  EXPECT_NEAR(t.nodes[1].value, -0.49, 1e-12);
+  EXPECT_NEAR(t.nodes[2].value, 0, 1e-12);
+}
+
+TEST(CriticalCurves, ADegenerateCriticalPointIsNoNode) {
+  // (x - 0.5)^3 + (y - b)^2: its only critical point (0.5, b) is neither an extremum nor a
+  // saddle. The tree: the minimum (0, b) on the left side, the boundary saddle (1, b) on the
+  // right side, the maxima at the right corners.
+  const double b = 0.3;
+  const TreeResult t = tree_of(on_grid(6, 3, [b](double x, double y) {
+    return (x - 0.5) * (x - 0.5) * (x - 0.5) + (y - b) * (y - b);
+  }));
+  EXPECT_EQ(types(t), "minimum saddle maximum maximum");
+  ASSERT_EQ(t.nodes.size(), 4u);
+  EXPECT_NEAR(t.nodes[0].value, -0.125, 1e-12);
+  EXPECT_NEAR(t.nodes[1].value, 0.125, 1e-12);
+  EXPECT_NEAR(t.nodes[2].value, 0.125 + b * b, 1e-12);
+  EXPECT_NEAR(t.nodes[3].value, 0.125 + (1 - b) * (1 - b), 1e-12);
+}
+
+} // namespace
+} // namespace hoct
