@@ -101,5 +101,42 @@ TEST(CriticalCurves, ADegenerateCriticalPointIsNoNode) {
   EXPECT_NEAR(t.nodes[3].value, 0.125 + (1 - b) * (1 - b), 1e-12);
 }
 
+// Independent truth: the PL trees of ever finer refinements of the same field converge to the
+// exact tree (bottleneck distance of the diagrams shrinking towards 0).
+TEST(CriticalCurves, RefinementsConvergeToTheExactTree) {
+  const std::vector<MeshInput> fields = {
+      one_triangle(2, [](double x, double y) { return -(x - y) * (x - y); }),
+      on_grid(4, 2,
+              [](double x, double y) {
+                const double s = x + y / 2 - 0.8;
+                return -s * s;
+              }),
+      on_grid(6, 3, [](double x, double y) {
+        return (x - 0.5) * (x - 0.5) * (x - 0.5) + (y - 0.3) * (y - 0.3);
+      })};
+  for (std::size_t f = 0; f < fields.size(); ++f) {
+    SCOPED_TRACE("field " + std::to_string(f));
+    const Mesh mesh = build_mesh(fields[f]);
+    const TreeResult exact = compute_tree(mesh, TreeRequest{}, &fields[f]).tree;
+    auto diagram = [](const TreeResult &t) {
+      std::vector<std::array<double, 2>> d;
+      for (const auto &p : t.pairs)
+        d.push_back({p.birth_value, p.death_value});
+      return d;
+    };
+    double last = INFINITY;
+    for (int k : {4, 16, 64}) {
+      TreeRequest rq;
+      rq.method = TreeMethod::Refine;
+      rq.refine = k;
+      const double d =
+          bottleneck_distance(diagram(exact), diagram(compute_tree(mesh, rq, &fields[f]).tree));
+      EXPECT_LE(d, last * 1.0001 + 1e-12) << "k=" << k;
+      last = d;
+    }
+    EXPECT_LT(last, 1e-3);
+  }
+}
+
 } // namespace
 } // namespace hoct
