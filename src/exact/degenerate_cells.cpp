@@ -17,9 +17,14 @@ DegenerateCells refine_degenerate_cells(const Mesh &mesh, const EdgeNodes &en, i
   const Field &field = mesh.field;
   DegenerateCells out;
   std::map<std::pair<int64_t, int>, int64_t> lattice_node; // (edge, step from lo) -> id
-  // (node, error) per refined cell's node; sorted and reduced to the largest per node below.
-  std::vector<std::pair<int64_t, double>> node_error;
-  auto bound = [&](int64_t id, double error) { node_error.emplace_back(id, error); };
+  // The largest error per node id so far (-1: none).
+  std::vector<double> node_bound;
+  auto bound = [&](int64_t id, double error) {
+    if (static_cast<std::size_t>(id) >= node_bound.size())
+      node_bound.resize(
+          std::max<std::size_t>(static_cast<std::size_t>(id) + 1, node_bound.size() * 3 / 2), -1.0);
+    node_bound[id] = std::max(node_bound[id], error);
+  };
   std::array<std::vector<double>, 3> extra;
   std::vector<int64_t> ids;
   for (const int64_t c : g.fallback_cells) {
@@ -101,7 +106,7 @@ DegenerateCells refine_degenerate_cells(const Mesh &mesh, const EdgeNodes &en, i
         g.mark_fallback(id);
     // The stand-in's certified distance from the polynomial on this cell.
     double error = 0;
-    InterpolationError interpolation(poly);
+    const InterpolationError interpolation(poly);
     for (const auto &t : cr.triangles) {
       const CellSubVertex &a = cr.vertices[t[0]], &b = cr.vertices[t[1]], &d = cr.vertices[t[2]];
       error = std::max(error, interpolation.on({a.u, a.v}, {b.u, b.v}, {d.u, d.v}));
@@ -119,12 +124,10 @@ DegenerateCells refine_degenerate_cells(const Mesh &mesh, const EdgeNodes &en, i
 
   // Certain extrema (strict, from the edge polynomials) are never merged away: they get no
   // slack.
-  std::sort(node_error.begin(), node_error.end(), [](const auto &a, const auto &b) {
-    return a.first < b.first || (a.first == b.first && a.second > b.second);
-  });
-  node_error.erase(std::unique(node_error.begin(), node_error.end(),
-                               [](const auto &a, const auto &b) { return a.first == b.first; }),
-                   node_error.end());
+  std::vector<std::pair<int64_t, double>> node_error;
+  for (std::size_t id = 0; id < node_bound.size(); ++id)
+    if (node_bound[id] >= 0)
+      node_error.emplace_back(static_cast<int64_t>(id), node_bound[id]);
   if (out.max_error > 0) {
     std::vector<uint8_t> wanted(static_cast<std::size_t>(topo.num_vertices()), 0);
     for (const auto &[id, error] : node_error)

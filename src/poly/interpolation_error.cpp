@@ -1,70 +1,61 @@
 #include "poly/interpolation_error.hpp"
 
-#include "poly/lagrange_to_bernstein.hpp"
-#include "poly/lattice.hpp"
-
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <limits>
-#include <mutex>
 
 namespace hoct {
-namespace {
 
-double conversion_norm(int degree) {
-  static std::array<std::once_flag, kMaxDegree + 1> once;
-  static std::array<double, kMaxDegree + 1> norm{};
-  std::call_once(once[degree], [&] { norm[degree] = lagrange_to_bernstein_norm(degree); });
-  return norm[degree];
+double enclosing_radius_squared(const Vec2 &a, const Vec2 &b, const Vec2 &c) {
+  auto d2 = [](const Vec2 &p, const Vec2 &q) {
+    return (p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]);
+  };
+  const double ab = d2(a, b), bc = d2(b, c), ca = d2(c, a);
+  const double longest = std::max({ab, bc, ca});
+  // Right or obtuse: the longest side is a diameter of the smallest disk.
+  if (2 * longest >= ab + bc + ca)
+    return longest / 4;
+  // Acute: the circumcircle, R^2 = |ab|^2 |bc|^2 |ca|^2 / (16 area^2).
+  const double cross = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+  const double area2 = cross * cross / 4;
+  return area2 > 0 ? ab * bc * ca / (16 * area2) : longest / 4;
 }
 
-} // namespace
-
-InterpolationError::InterpolationError(const BernsteinTriangle &p) : p_(p) {
+InterpolationError::InterpolationError(const BernsteinTriangle &p) {
   const int d = p.degree();
-  if (d <= 1)
-    return;
-  conversion_ = &lagrange_to_bernstein_triangle(d);
   double coefficients = 0;
   for (double x : p.coefficients())
     coefficients = std::max(coefficients, std::abs(x));
-  // The samples (de Casteljau: a few units in the last place of the coefficients' magnitude
-  // each), amplified by the conversion.
-  rounding_ = 4 * d * conversion_norm(d) * coefficients;
-  samples_.resize(static_cast<std::size_t>(lattice_size(d)));
-  linear_.resize(samples_.size());
+  // The stand-in's corner values are p evaluated by de Casteljau: a few units in the last place
+  // of the coefficients' magnitude each.
+  rounding_ = 4 * (d + 1) * std::numeric_limits<double>::epsilon() * coefficients;
+  if (d < 2)
+    return;
+  // Largest coefficient magnitudes of p_uu, p_uv, p_vv (degree d - 2).
+  double uu = 0, uv = 0, vv = 0;
+  for (int b = 0; b <= d - 2; ++b)
+    for (int a = 0; a + b <= d - 2; ++a) {
+      uu = std::max(uu, std::abs(p.coefficient(a + 2, b) - 2 * p.coefficient(a + 1, b) +
+                                 p.coefficient(a, b)));
+      uv = std::max(uv, std::abs(p.coefficient(a + 1, b + 1) - p.coefficient(a + 1, b) -
+                                 p.coefficient(a, b + 1) + p.coefficient(a, b)));
+      vv = std::max(vv, std::abs(p.coefficient(a, b + 2) - 2 * p.coefficient(a, b + 1) +
+                                 p.coefficient(a, b)));
+    }
+  const double k = static_cast<double>(d) * (d - 1);
+  uu *= k;
+  uv *= k;
+  vv *= k;
+  // The spectral norm of [[uu, uv], [uv, vv]] entrywise bounded: Gershgorin and Frobenius, the
+  // smaller; a little more for the rounding of these differences.
+  const double norm =
+      std::min(std::max(uu + uv, uv + vv), std::sqrt(uu * uu + 2 * uv * uv + vv * vv));
+  hessian_ = norm * (1 + 16 * std::numeric_limits<double>::epsilon()) +
+             16 * k * std::numeric_limits<double>::epsilon() * coefficients;
 }
 
-double InterpolationError::on(const Vec2 &a, const Vec2 &b, const Vec2 &c) {
-  const int d = p_.degree();
-  if (d <= 1)
-    return 0; // p is its own interpolant
-  const int n = lattice_size(d);
-  // p at the sub-triangle's degree-d lattice: node i at barycentrics (1 - s - t, s, t) of
-  // (a, b, c), as the conversion tables order them; the corners are nodes too.
-  double magnitude = 0;
-  for (int i = 0; i < n; ++i) {
-    const auto q = lattice_point(d, i);
-    const double s = static_cast<double>(q[0]) / d, t = static_cast<double>(q[1]) / d;
-    const double r = 1 - s - t;
-    samples_[i] = p_(r * a[0] + s * b[0] + t * c[0], r * a[1] + s * b[1] + t * c[1]);
-    magnitude = std::max(magnitude, std::abs(samples_[i]));
-  }
-  const double pa = samples_[corner_index(d, 0)], pb = samples_[corner_index(d, 1)],
-               pc = samples_[corner_index(d, 2)];
-  const std::vector<double> &m = *conversion_;
-  double error = 0;
-  for (int i = 0; i < n; ++i) {
-    const auto q = lattice_point(d, i);
-    const double s = static_cast<double>(q[0]) / d, t = static_cast<double>(q[1]) / d;
-    double coefficient = 0;
-    for (int j = 0; j < n; ++j)
-      coefficient += m[static_cast<std::size_t>(i) * n + j] * samples_[j];
-    error = std::max(error, std::abs(coefficient - ((1 - s - t) * pa + s * pb + t * pc)));
-  }
-  // Plus the rounding of the samples and of the sums.
-  return error + (rounding_ + 4 * n * magnitude) * std::numeric_limits<double>::epsilon();
+double InterpolationError::on(const Vec2 &a, const Vec2 &b, const Vec2 &c) const {
+  return hessian_ * enclosing_radius_squared(a, b, c) / 2 + rounding_;
 }
 
 } // namespace hoct
