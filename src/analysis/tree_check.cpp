@@ -246,6 +246,43 @@ private:
                fmt(nd.position[2]) + ") but cell " + std::to_string(nd.cell) + " (" + fmt(u) +
                ", " + fmt(v) + ") maps to (" + fmt(p[0]) + ", " + fmt(p[1]) + ", " + fmt(p[2]) +
                ")");
+    critical(i);
+  }
+
+  // A node inside a cell must be a critical point of its polynomial (the gradient vanishes), a
+  // node on an edge a critical point of the edge (the derivative along it vanishes): to 1e-6 of
+  // the cell's gradient scale, far above the certified placement (1e-12) and far below the
+  // gradient at a regular point. Vertices may be anything; fallback nodes are the PL rule's and
+  // flat regions' nodes stand for many, so those are skipped; regular nodes are not critical.
+  void critical(int64_t i) {
+    const TreeNode &nd = tree_.nodes[i];
+    if (nd.fallback || nd.merged > 1 || nd.type == NodeType::Regular)
+      return;
+    const double u = nd.uv[0], v = nd.uv[1];
+    const NodeLocation where = classify_location(u, v);
+    if (where == NodeLocation::Vertex)
+      return;
+    const BernsteinTriangle p = mesh_.field.cell_polynomial(nd.cell);
+    double scale = 0;
+    for (const auto &dp : {p.du(), p.dv()})
+      for (double c : dp.coefficients())
+        scale = std::max(scale, std::abs(c));
+    if (!(scale > 0))
+      return; // a constant cell: every point is critical
+    const Vec2 g = p.gradient(u, v);
+    double residual = std::hypot(g[0], g[1]);
+    std::string what = "|gradient|";
+    if (where == NodeLocation::Edge) {
+      const int k = std::abs(v) <= 1e-12 ? 0 : std::abs(u) <= 1e-12 ? 2 : 1;
+      const Vec2 t = edge_tangent(k);
+      residual = std::abs(g[0] * t[0] + g[1] * t[1]);
+      what = "|derivative along edge " + std::to_string(k) + "|";
+    }
+    if (!(residual <= 1e-6 * scale))
+      fail("critical", {i}, {},
+           node_str(i) + " is not a critical point: " + what + " = " + fmt(residual) + " at cell " +
+               std::to_string(nd.cell) + " (" + fmt(u) + ", " + fmt(v) + "), against " +
+               fmt(scale) + " for the cell's gradient");
   }
 
   // Each pair's persistence as a file recorded it against its nodes' values.

@@ -158,6 +158,32 @@ TEST_F(Corrupted, MovedToRegularPoint) {
   const auto r = check_tree(t, mesh);
   EXPECT_FALSE(has_failure(r, "value")) << r.summary();
   EXPECT_TRUE(has_failure(r, "type")) << r.summary();
+  EXPECT_TRUE(has_failure(r, "critical")) << r.summary();
+  // Without the samples, the gradient there still tells.
+  TreeCheckOptions no_samples;
+  no_samples.check_types = false;
+  const auto g = check_tree(t, mesh, no_samples);
+  EXPECT_TRUE(has_failure(g, "critical")) << g.summary();
+}
+
+// An edge node moved along its edge (value and position updated): not critical on the edge.
+TEST_F(Corrupted, EdgeNodeMovedAlongItsEdge) {
+  TreeResult t = tree;
+  int64_t i = -1;
+  for (std::size_t k = 0; k < t.nodes.size() && i < 0; ++k)
+    if (t.nodes[k].location == NodeLocation::Edge && !t.nodes[k].fallback &&
+        std::abs(t.nodes[k].uv[1]) < 1e-12 && t.nodes[k].uv[0] > 0.1 && t.nodes[k].uv[0] < 0.9)
+      i = static_cast<int64_t>(k);
+  ASSERT_GE(i, 0) << "no node on a cell's edge 0";
+  TreeNode &n = t.nodes[i];
+  n.uv[0] += n.uv[0] < 0.5 ? 0.05 : -0.05;
+  n.value = mesh.field.value(n.cell, n.uv[0], n.uv[1]);
+  n.position = mesh.geometry.position(n.cell, n.uv[0], n.uv[1]);
+  TreeCheckOptions no_samples;
+  no_samples.check_types = false;
+  no_samples.check_completeness = false;
+  const auto r = check_tree(t, mesh, no_samples);
+  EXPECT_TRUE(has_failure(r, "critical")) << r.summary();
 }
 
 // The extrema at vertices and on edges that the edge polynomials decide: a tree without one of
