@@ -101,6 +101,87 @@ TEST(CriticalCurves, ADegenerateCriticalPointIsNoNode) {
   EXPECT_NEAR(t.nodes[3].value, 0.125 + (1 - b) * (1 - b), 1e-12);
 }
 
+// The same grid with its vertices on the lattice (no jitter): lines x = i / n are mesh edges.
+MeshInput on_regular_grid(int n, int degree, const Field2 &f) {
+  std::mt19937_64 rng(3);
+  std::vector<Vec3> v;
+  std::vector<std::array<int64_t, 3>> t;
+  testing::square_grid(n, rng, v, t);
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; j <= n; ++j)
+      v[static_cast<std::size_t>(i * (n + 1) + j)] = {static_cast<double>(j) / n,
+                                                      static_cast<double>(i) / n, 0};
+  return testing::lagrange_mesh(
+      v, t, [degree](int64_t) { return degree; }, nullptr,
+      [&f](const Vec3 &p) { return f(p[0], p[1]); }, rng);
+}
+
+// "type(down,up)" per node, ascending.
+std::string shape(const TreeResult &t) {
+  std::string s;
+  for (const auto &n : t.nodes)
+    s += std::string(s.empty() ? "" : " ") + to_string(n.type) + "(" + std::to_string(n.down) +
+         "," + std::to_string(n.up) + ")";
+  return s;
+}
+
+TEST(CriticalCurves, AClosedRidgeIsOneNodeOverTheInsideAndTheOutside) {
+  // -(r^2 - 0.09)^2 around (0.5, 0.5), P4 on 128 cells: the circle r = 0.3 is the maximum (0);
+  // inside, the centre (-0.0081); outside, the four corners (-0.1681) joined at the four edge
+  // midpoints (-0.0256, one flat node).
+  const TreeResult t = tree_of(on_grid(8, 4, [](double x, double y) {
+    const double s = (x - 0.5) * (x - 0.5) + (y - 0.5) * (y - 0.5) - 0.09;
+    return -s * s;
+  }));
+  EXPECT_EQ(shape(t), "minimum(0,1) minimum(0,1) minimum(0,1) minimum(0,1) saddle(4,1) "
+                      "minimum(0,1) maximum(2,0)");
+  ASSERT_EQ(t.nodes.size(), 7u);
+  EXPECT_NEAR(t.nodes[4].value, -0.0256, 1e-12);
+  EXPECT_NEAR(t.nodes[5].value, -0.0081, 1e-12);
+  EXPECT_NEAR(t.nodes[6].value, 0, 1e-12);
+}
+
+TEST(CriticalCurves, ACurvedRidgeIsOneMaximum) {
+  // s = y - 0.4 - 0.8 (x - 0.5)^2, f = -s^2 (P4): the parabola s = 0 is the maximum; below it
+  // the corners (0,0), (1,0) (-0.36) join at (0.5, 0) (-0.16); above it (0.5, 1) (-0.36).
+  const TreeResult t = tree_of(on_grid(8, 4, [](double x, double y) {
+    const double s = y - 0.4 - 0.8 * (x - 0.5) * (x - 0.5);
+    return -s * s;
+  }));
+  EXPECT_EQ(shape(t), "minimum(0,1) minimum(0,1) minimum(0,1) saddle(2,1) maximum(2,0)");
+  ASSERT_EQ(t.nodes.size(), 5u);
+  EXPECT_NEAR(t.nodes[3].value, -0.16, 1e-12);
+  EXPECT_NEAR(t.nodes[4].value, 0, 1e-12);
+}
+
+TEST(CriticalCurves, AValleyAlongMeshEdges) {
+  // (x - 0.5)^2 with x = 0.5 a line of mesh edges: the valley is the minimum, the sides x = 0 and
+  // x = 1 the maxima. Tilted by 0.1 y: a boundary minimum (0.5, 0), a boundary saddle (0.5, 1),
+  // the top corners.
+  const TreeResult flat =
+      tree_of(on_regular_grid(4, 2, [](double x, double) { return (x - 0.5) * (x - 0.5); }));
+  EXPECT_EQ(shape(flat), "minimum(0,2) maximum(1,0) maximum(1,0)");
+  const TreeResult tilted = tree_of(
+      on_regular_grid(4, 2, [](double x, double y) { return (x - 0.5) * (x - 0.5) + 0.1 * y; }));
+  EXPECT_EQ(shape(tilted), "minimum(0,1) saddle(1,2) maximum(1,0) maximum(1,0)");
+  ASSERT_EQ(tilted.nodes.size(), 4u);
+  EXPECT_NEAR(tilted.nodes[1].value, 0.1, 1e-12);
+}
+
+TEST(CriticalCurves, ACurveOfSaddlesIsOneSaddle) {
+  // (x - 0.5)^2 (y - 0.45), P3: the line x = 0.5 is critical at 0, a valley above y = 0.45 and a
+  // ridge below: one node with the two negative sides below it and the two positive sides above.
+  const TreeResult t =
+      tree_of(on_grid(6, 3, [](double x, double y) { return (x - 0.5) * (x - 0.5) * (y - 0.45); }));
+  EXPECT_EQ(shape(t), "minimum(0,1) minimum(0,1) saddle(2,2) maximum(1,0) maximum(1,0)");
+  ASSERT_EQ(t.nodes.size(), 5u);
+  ASSERT_TRUE(t.stats.exact);
+  // The merged node stands at one of the stand-in's nodes: its value within the slack of 0.
+  EXPECT_LE(std::abs(t.nodes[2].value), 2 * t.stats.exact->fallback_error);
+  EXPECT_NEAR(t.nodes[0].value, -0.1125, 1e-12);
+  EXPECT_NEAR(t.nodes[4].value, 0.1375, 1e-12);
+}
+
 // Independent truth: the PL trees of ever finer refinements of the same field converge to the
 // exact tree (bottleneck distance of the diagrams shrinking towards 0).
 TEST(CriticalCurves, RefinementsConvergeToTheExactTree) {
