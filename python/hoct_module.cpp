@@ -232,7 +232,8 @@ PYBIND11_MODULE(_hoct, m) {
                                d["death"] = array_1d(e);
                                d["persistence"] = array_1d(p);
                                d["kind"] = k;
-                               // At or below the input's precision (Tree.precision).
+                               // At or below the input's precision (Tree.precision), or
+                               // within twice a fallback stand-in's slack.
                                d["uncertain"] = array_1d(u).attr("astype")("bool");
                                return d;
                              })
@@ -264,7 +265,8 @@ PYBIND11_MODULE(_hoct, m) {
             return py::float_(*t.tree.stats.precision);
           },
           "The smallest persistence the input's values resolve; pairs at or below it are "
-          "flagged in pairs['uncertain']")
+          "flagged in pairs['uncertain'] (so are pairs within twice a fallback cell's slack, "
+          "stats['fallback_error'])")
       .def_property_readonly("stats",
                              [](const PyTree &t) {
                                py::dict d;

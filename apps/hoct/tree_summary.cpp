@@ -44,6 +44,12 @@ void print_tree_summary(const std::string &file, const Mesh &mesh, const TreeRes
     std::printf("\n  precision of the data: %.3g (%lld pair(s) at or below it, flagged uncertain)",
                 *tree.stats.precision,
                 static_cast<long long>(tree.stats.pairs_below_precision.value_or(0)));
+  if (tree.stats.exact && tree.stats.exact->fallback_error > 0)
+    std::printf("\n  fallback stand-in: within %.3g of the field (%lld arc(s) contracted, %lld "
+                "pair(s) within twice that, flagged uncertain)",
+                tree.stats.exact->fallback_error,
+                static_cast<long long>(tree.stats.exact->fallback_arcs_contracted),
+                static_cast<long long>(tree.stats.pairs_within_fallback_slack.value_or(0)));
   std::printf("\n  stats:");
   int col = 0;
   for (const auto &[k, v] : tree.stats.entries()) {

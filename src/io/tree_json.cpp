@@ -111,7 +111,8 @@ std::string to_json_text(const TreeResult &t, bool timings) {
     arc[1] = t.arcs[i][1];
     return arc;
   });
-  // A pair at or below the input's precision says so ("uncertain": true).
+  // A pair at or below the input's precision, or within the fallback stand-in's slack, says so
+  // ("uncertain": true).
   json pair = {{"birth", 0}, {"death", 0}, {"persistence", 0.0}, {"kind", ""}};
   json uncertain_pair = pair;
   uncertain_pair["uncertain"] = true;

@@ -61,8 +61,23 @@ struct TreeResult {
 
   // A pair at or below the input's precision (stats.precision): its existence and persistence
   // are not resolved by the data.
-  bool uncertain(const PersistencePair &p) const {
+  bool below_precision(const PersistencePair &p) const {
     return stats.precision && p.persistence() <= *stats.precision;
+  }
+  // A pair with a node of a fallback cell's PL stand-in and a persistence within twice the
+  // stand-in's certified slack (ExactCounts::fallback_error): not resolved by the stand-in.
+  bool within_fallback_slack(const PersistencePair &p) const {
+    if (!stats.exact || !(stats.exact->fallback_error > 0) ||
+        !(p.persistence() <= 2 * stats.exact->fallback_error))
+      return false;
+    auto fallback = [&](int64_t i) {
+      return i >= 0 && i < static_cast<int64_t>(nodes.size()) && nodes[i].fallback;
+    };
+    return fallback(p.birth) || fallback(p.death);
+  }
+  // Either: the pair is flagged "uncertain" in the outputs.
+  bool uncertain(const PersistencePair &p) const {
+    return below_precision(p) || within_fallback_slack(p);
   }
 
   // Counts of nodes by type: minimum, maximum, saddle, regular.
@@ -103,7 +118,8 @@ TreeResult tree_result_of(const ContourTree &ct, const std::string &method, bool
 // monotone); persistence is then as precise as the absolute values.
 void offset_values(TreeResult &tree, double reference);
 
-// Records the input's precision in the statistics and counts the pairs at or below it.
+// Records the input's precision in the statistics and counts the pairs at or below it, and
+// those within the fallback stand-in's slack.
 void set_precision(TreeResult &tree, double precision);
 
 // The tree as a ContourTree (indices of `nodes` as node ids).

@@ -101,6 +101,8 @@ const std::vector<Entry> &table() {
     e.push_back(plain_entry("simplification_threshold", &TreeStats::simplification_threshold));
     e.push_back(plain_entry("precision", &TreeStats::precision));
     e.push_back(plain_entry("pairs_below_precision", &TreeStats::pairs_below_precision));
+    e.push_back(
+        plain_entry("pairs_within_fallback_slack", &TreeStats::pairs_within_fallback_slack));
     // The phases in the order they run.
     e.push_back(time_entry("time_read_s", &TreeTimings::read));
     e.push_back(time_entry("time_check_s", &TreeTimings::check));

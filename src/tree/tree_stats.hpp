@@ -69,6 +69,8 @@ struct TreeStats {
   // the pairs at or below it: uncertain, kept and flagged.
   std::optional<double> precision;
   std::optional<int64_t> pairs_below_precision;
+  // Pairs with a fallback node within twice the stand-in's slack (TreeResult::uncertain).
+  std::optional<int64_t> pairs_within_fallback_slack;
   TreeTimings time;
   // Entries this version does not know (read from another version's JSON), kept as they are.
   std::vector<std::pair<std::string, double>> other;

@@ -4,7 +4,9 @@
 // a degenerate point into a pair; every such pair is within twice the stand-in's certified
 // distance from the field and is cancelled: the tree is the exact one, and the statistics say
 // how many pairs were cancelled and the bound.
+#include "datasets/datasets.hpp"
 #include "exact/exact_contour_tree.hpp"
+#include "io/tree_json.hpp"
 #include "mesh/mesh.hpp"
 #include "pipeline/compute_tree.hpp"
 #include "test_meshes.hpp"
@@ -180,6 +182,33 @@ TEST(CriticalCurves, ACurveOfSaddlesIsOneSaddle) {
   EXPECT_LE(std::abs(t.nodes[2].value), 2 * t.stats.exact->fallback_error);
   EXPECT_NEAR(t.nodes[0].value, -0.1125, 1e-12);
   EXPECT_NEAR(t.nodes[4].value, 0.1375, 1e-12);
+}
+
+// Pairs the stand-in does not resolve are named: a fallback node and a persistence within twice
+// the slack, counted in the statistics and flagged "uncertain" in the JSON.
+TEST(CriticalCurves, PairsWithinTheSlackAreFlagged) {
+  const MeshInput in = generate_dataset("conductor", {});
+  const TreeResult t = tree_of(in);
+  ASSERT_TRUE(t.stats.exact && t.stats.pairs_within_fallback_slack);
+  const double slack = t.stats.exact->fallback_error;
+  ASSERT_GT(slack, 0);
+  int64_t expected = 0, flagged = 0;
+  for (const auto &p : t.pairs) {
+    const bool near =
+        (t.nodes[p.birth].fallback || t.nodes[p.death].fallback) && p.persistence() <= 2 * slack;
+    expected += near;
+    flagged += t.uncertain(p);
+    if (near)
+      EXPECT_TRUE(t.uncertain(p));
+  }
+  EXPECT_GT(expected, 0);
+  EXPECT_EQ(*t.stats.pairs_within_fallback_slack, expected);
+  const std::string json = tree_to_json(t, false);
+  int64_t in_json = 0;
+  for (std::size_t at = json.find("\"uncertain\""); at != std::string::npos;
+       at = json.find("\"uncertain\"", at + 1))
+    ++in_json;
+  EXPECT_EQ(in_json, flagged);
 }
 
 // Independent truth: the PL trees of ever finer refinements of the same field converge to the
