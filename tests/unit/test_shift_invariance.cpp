@@ -15,6 +15,7 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace hoct {
@@ -113,6 +114,43 @@ INSTANTIATE_TEST_SUITE_P(Datasets, ShiftInvariance,
                            std::replace(s.begin(), s.end(), '-', '_');
                            return s;
                          });
+
+// The conductor's exact ridge cells are degenerate only while their values are exact: shifted,
+// the rounding makes some of them ordinary cells (fewer fallbacks), and the pairs there differ
+// by up to the fallback stand-in's slack. What stays: every pair one tree is certain of (not
+// flagged uncertain) is in the other, within the precision plus twice the slack.
+TEST(ShiftInvariance, TheConductorKeepsItsCertainPairs) {
+  const TreeResult base = exact_tree(dataset("conductor", {1, 0}));
+  const double range = base.nodes.back().value - base.nodes.front().value;
+  for (double k : {1e3, 1e5, 1e7}) {
+    SCOPED_TRACE("offset " + std::to_string(k) + " x range");
+    const Variant v{1, k * range};
+    const TreeResult t = exact_tree(dataset("conductor", v));
+    ASSERT_TRUE(t.stats.exact && base.stats.exact && t.stats.precision);
+    const double tol =
+        *t.stats.precision + *base.stats.precision +
+        2 * std::max(t.stats.exact->fallback_error, base.stats.exact->fallback_error);
+    auto has_partner = [&](const std::array<double, 2> &p, const TreeResult &other,
+                           const Variant &ov) {
+      for (const auto &q : diagram(other, ov))
+        if (std::abs(q[0] - p[0]) <= tol && std::abs(q[1] - p[1]) <= tol)
+          return true;
+      return false;
+    };
+    int64_t certain = 0;
+    for (const auto &[tree, var, other, ovar] :
+         {std::tuple{&base, Variant{1, 0}, &t, v}, std::tuple{&t, v, &base, Variant{1, 0}}})
+      for (const auto &p : tree->pairs)
+        if (!tree->uncertain(p)) {
+          ++certain;
+          const std::array<double, 2> d = {(p.birth_value - var.offset) / var.scale,
+                                           (p.death_value - var.offset) / var.scale};
+          EXPECT_TRUE(has_partner(d, *other, ovar))
+              << "pair (" << d[0] << ", " << d[1] << "), persistence " << p.persistence();
+        }
+    EXPECT_GT(certain, 20);
+  }
+}
 
 // The reference keeps vertex values exact: (x - c) + c == x for every node value x.
 TEST(Reference, ShiftsOnlyFarFromZeroAndExactly) {
