@@ -3,6 +3,7 @@
 #include "commands.hpp"
 #include "io/read_mesh.hpp"
 #include "io/vtu_writer.hpp"
+#include "output_paths.hpp"
 #include "util/error.hpp"
 
 #include <cstdio>
@@ -22,6 +23,8 @@ void register_convert(CLI::App &app) {
   sub->add_option("-o,--output", o->output, "Output file (.vtu)")->required();
   sub->add_option("--scalar", o->scalar, "Point-data array / node-data view (default: the first)");
   sub->callback([o] {
+    require_extension("-o", o->output, ".vtu", "VTK XML unstructured grid");
+    require_distinct_outputs({{"the input", o->input}}, {{"-o", o->output}});
     const MeshInput mesh = read_mesh(o->input, o->scalar);
     write_vtu(o->output, mesh);
     std::printf("%s: %zu cells, %zu points, field '%s' -> %s\n", o->input.c_str(), mesh.num_cells(),

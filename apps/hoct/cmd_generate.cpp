@@ -3,6 +3,7 @@
 #include "commands.hpp"
 #include "datasets/datasets.hpp"
 #include "io/vtu_writer.hpp"
+#include "output_paths.hpp"
 #include "util/error.hpp"
 #include "util/stopwatch.hpp"
 
@@ -56,6 +57,7 @@ void run_generate(const GenerateOptions &o) {
   }
   if (o.output.empty())
     throw Error("generate: give an output file with -o FILE.vtu");
+  require_extension("-o", o.output, ".vtu", "VTK XML unstructured grid");
   if (!(o.cells >= 0) || o.cells > 1e12 || o.cells != std::floor(o.cells))
     throw Error("generate: --cells must be a positive whole number");
   if (o.degree < 0)

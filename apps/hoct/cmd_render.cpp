@@ -3,6 +3,7 @@
 #include "exact/exact_contour_tree.hpp"
 #include "io/tree_json.hpp"
 #include "load_mesh.hpp"
+#include "output_paths.hpp"
 #include "render/field_renderer.hpp"
 #include "util/error.hpp"
 
@@ -23,6 +24,8 @@ struct RenderCmdOptions {
 void run_render(const RenderCmdOptions &o) {
   if (o.output.empty())
     throw Error("render: give an output picture with -o FIELD.png (or .svg)");
+  require_distinct_outputs({{"the input", o.file}, {"the --tree input", o.tree}},
+                           {{"-o", o.output}});
   const LoadedMesh lm = load_mesh(o.file, o.scalar, /*strict=*/true);
   RenderOptions ro;
   if (std::sscanf(o.size.c_str(), "%dx%d", &ro.width, &ro.height) != 2)

@@ -2,6 +2,7 @@
 #include "analysis/case_study.hpp"
 #include "commands.hpp"
 #include "load_mesh.hpp"
+#include "output_paths.hpp"
 #include "study_writers.hpp"
 #include "util/error.hpp"
 
@@ -20,6 +21,8 @@ struct StudyCmdOptions {
 };
 
 void run_study(const StudyCmdOptions &o) {
+  require_distinct_outputs({{"the input", o.file}},
+                           {{"--csv", o.csv}, {"--json", o.json}, {"--svg", o.svg}});
   const LoadedMesh lm = load_mesh(o.file, o.scalar, /*strict=*/true);
   StudyOptions so;
   so.levels = o.levels;

@@ -4,6 +4,7 @@
 #include "io/tree_svg_writer.hpp"
 #include "io/tree_vtp_writer.hpp"
 #include "load_mesh.hpp"
+#include "output_paths.hpp"
 #include "pipeline/compute_tree.hpp"
 #include "tree_summary.hpp"
 #include "util/error.hpp"
@@ -45,6 +46,8 @@ TreeRequest request_of(const TreeOptions &o) {
 
 void run_tree(const TreeOptions &o) {
   Stopwatch total;
+  require_distinct_outputs({{"the input", o.file}},
+                           {{"--json", o.json}, {"--vtp", o.vtp}, {"--svg", o.svg}});
   TreeRequest rq = request_of(o);
   // Only --linear reads the input's nodes again: elsewhere the mesh holds all the tree needs.
   const LoadedMesh lm = load_mesh(o.file, o.scalar, /*strict=*/false, o.merge.tolerance(),

@@ -4,9 +4,37 @@
 #include "util/error.hpp"
 #include "util/page_pool.hpp"
 
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <exception>
 #include <iostream>
+
+namespace {
+
+// Everything a command printed reached its destination: the final flush and close of the
+// standard output are checked (a full disk, /dev/full, a file system that fails on close), so
+// that a lost report is an error, not exit status 0.
+int finish_standard_output() {
+  std::cout.flush();
+  errno = 0;
+  const bool flush_failed = std::fflush(stdout) != 0;
+  int err =
+      errno; // the reason, when the last buffer's write failed (earlier ones are only flagged)
+  bool failed = flush_failed || std::ferror(stdout) || !std::cout.good();
+  if (!failed) {
+    errno = 0;
+    failed = std::fclose(stdout) != 0;
+    err = errno;
+  }
+  if (!failed)
+    return 0;
+  std::fprintf(stderr, "hoct: error: writing the standard output failed%s%s\n", err ? ": " : "",
+               err ? std::strerror(err) : "");
+  return 1;
+}
+
+} // namespace
 
 int main(int argc, char **argv) {
   // An interrupted run (Ctrl-C, kill) removes its temporary files: no partial output is left.
@@ -42,5 +70,5 @@ int main(int argc, char **argv) {
     std::cerr << "hoct: internal error: " << e.what() << "\n";
     return 2;
   }
-  return 0;
+  return finish_standard_output();
 }

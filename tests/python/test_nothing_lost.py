@@ -125,4 +125,46 @@ with tempdir() as tmp:
         run("tree", p(name + ".vtu"), "-q", "--no-timings", "--augmented", "--threads", 7, "--json", a7)
         R.check(open(a1, "rb").read() == open(a7, "rb").read(), f"{name}: augmented JSON identical")
 
+    # Standard output that cannot be written (issue 27, item 4): every command that prints
+    # reports it and exits 1, instead of losing its output with exit status 0.
+    if os.path.exists("/dev/full"):
+        g = p("c.vtu")
+        commands = [("info", g, "--json"), ("info", g), ("tree", g), ("generate", "gauss", "-o", p("g2.vtu")),
+                    ("eval", g, "--points", "-"), ("check", p("c1.json"), g)]
+        for args in commands:
+            with open("/dev/full", "w") as full:
+                r = subprocess.run([HOCT, *args], input="0 0.2 0.2\n" * 2000, stdout=full,
+                                   stderr=subprocess.PIPE, text=True)
+            R.check(r.returncode == 1 and "writing the standard output failed" in r.stderr,
+                    f"{' '.join(args[:1])} > /dev/full: exit {r.returncode}, stderr {r.stderr!r}")
+        # Where the output can be written, the same commands exit 0.
+        r = subprocess.run([HOCT, "info", g, "--json"], stdout=subprocess.DEVNULL)
+        R.check(r.returncode == 0, "info --json > /dev/null exits 0")
+
+    # An output that is the input, or another output (issue 27, items 2 and 7): refused before
+    # anything is computed, by file identity (a symbolic link, a hard link, another spelling).
+    src = p("c.vtu")
+    before = open(src, "rb").read()
+    os.symlink(src, p("c-link.vtu"))
+    os.link(src, p("c-hard.vtu"))
+    for args, phrase in [
+            (("tree", src, "--json", src), "is the input"),
+            (("tree", src, "--vtp", p("c-link.vtu")), "is the input"),
+            (("tree", src, "--svg", p("c-hard.vtu")), "is the input"),
+            (("tree", src, "--json", p("same.json"), "--vtp", os.path.join(tmp, ".", "same.json")),
+             "are the same file"),
+            (("convert", src, "-o", src), "is the input"),
+            (("render", src, "-o", p("c-hard.vtu")), "is the input"),
+            (("study", src, "--csv", p("s.out"), "--json", p("s.out")), "are the same file"),
+            (("convert", src, "-o", p("conv.msh")), "name it *.vtu"),
+            (("convert", src, "-o", p("conv.vtp")), "name it *.vtu"),
+            (("generate", "gauss", "-o", p("g.msh")), "name it *.vtu")]:
+        r = run(*args, check=False)
+        R.check(r.returncode == 1 and phrase in r.stderr,
+                f"{' '.join(a if not a.startswith(tmp) else os.path.basename(a) for a in args)}: "
+                f"exit {r.returncode}, stderr {r.stderr!r}")
+    R.check(open(src, "rb").read() == before, "the input survives every refused command")
+    R.check(not any(os.path.exists(p(n)) for n in ("same.json", "s.out", "conv.msh", "conv.vtp", "g.msh")),
+            "a refused command writes no output")
+
 R.finish()
