@@ -60,6 +60,51 @@ extern "C" void remove_temporaries_and_exit(int sig) {
   ::_exit(128 + sig);
 }
 
+// Temporary names: ".NAME.tmp-PID-N" beside the target, or ".hoct.tmp-PID-N" where that would
+// pass the file system's name limit (a 250-byte output name must still work).
+constexpr const char *kShortPrefix = ".hoct";
+constexpr std::size_t kNameMax = 255;
+
+std::string temporary_prefix(const std::string &filename) {
+  std::string prefix(1, '.');
+  prefix.append(filename);
+  prefix.append(".tmp-");
+  // Room for the pid and the random number (at most 7 + 1 + 6 characters).
+  if (prefix.size() + 14 > kNameMax) {
+    prefix.assign(kShortPrefix);
+    prefix.append(".tmp-");
+  }
+  return prefix;
+}
+
+// Removes the temporary files of earlier writes of the same output (or short-named ones) whose
+// process no longer exists: left by SIGKILL, a crash or a power cut. A live process's files,
+// and anything not named like ours, stay.
+void remove_stale_temporaries(const std::filesystem::path &dir, const std::string &prefix) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  fs::directory_iterator it(dir.empty() ? fs::path(".") : dir, ec), end;
+  for (; !ec && it != end; it.increment(ec)) {
+    const std::string name = it->path().filename().string();
+    if (name.compare(0, prefix.size(), prefix) != 0)
+      continue;
+    // PID-N after the prefix, digits only.
+    const std::string rest = name.substr(prefix.size());
+    const std::size_t dash = rest.find('-');
+    if (dash == 0 || dash == std::string::npos || dash + 1 == rest.size() ||
+        rest.find_first_not_of("0123456789-") != std::string::npos ||
+        rest.find('-', dash + 1) != std::string::npos || dash > 9)
+      continue;
+    const long pid = std::stol(rest.substr(0, dash));
+    if (pid <= 0 || pid == ::getpid())
+      continue;
+    if (::kill(static_cast<pid_t>(pid), 0) == 0 || errno != ESRCH)
+      continue; // alive (or not ours to judge)
+    std::error_code ignored;
+    fs::remove(it->path(), ignored);
+  }
+}
+
 } // namespace
 
 void install_interrupt_cleanup() {
@@ -69,7 +114,8 @@ void install_interrupt_cleanup() {
   sigaddset(&sa.sa_mask, SIGINT);
   sigaddset(&sa.sa_mask, SIGTERM);
   sigaddset(&sa.sa_mask, SIGHUP);
-  for (int sig : {SIGINT, SIGTERM, SIGHUP})
+  sigaddset(&sa.sa_mask, SIGQUIT);
+  for (int sig : {SIGINT, SIGTERM, SIGHUP, SIGQUIT})
     sigaction(sig, &sa, nullptr);
 }
 
@@ -80,10 +126,9 @@ void write_file_atomic(const std::string &path, const std::function<void(std::os
   if (target.filename().empty())
     throw Error(path + ": not a file name");
   std::random_device rd;
-  // Built with append: GCC 12 warns falsely (-Wrestrict) on "." + std::string.
-  std::string name(1, '.');
-  name.append(target.filename().string());
-  name.append(".tmp-");
+  const std::string prefix = temporary_prefix(target.filename().string());
+  remove_stale_temporaries(target.parent_path(), prefix);
+  std::string name = prefix;
   name.append(std::to_string(::getpid()));
   name.push_back('-');
   name.append(std::to_string(rd() % 1000000));

@@ -52,6 +52,20 @@ with tempdir() as tmp:
     R.check(leftovers(tmp) == [], f"SIGINT: temporary files left: {leftovers(tmp)}")
     R.check(intact("out.json") and intact("out.vtp"), "SIGINT: existing outputs intact")
 
+    # SIGQUIT (issue 27, item 5) as SIGINT: exit 131, nothing left behind.
+    proc = subprocess.Popen([HOCT, "tree", p("bigger.vtu"), "--threads", "1", "--json",
+                             p("out.json"), "--vtp", p("out.vtp")],
+                            stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+    for line in proc.stderr:
+        if "edge critical points" in line:
+            break
+    proc.send_signal(signal.SIGQUIT)
+    proc.stderr.read()
+    rc = proc.wait(60)
+    R.check(rc == 131, f"SIGQUIT while computing: exit {rc} (expected 131)")
+    R.check(leftovers(tmp) == [], f"SIGQUIT: temporary files left: {leftovers(tmp)}")
+    R.check(intact("out.json") and intact("out.vtp"), "SIGQUIT: existing outputs intact")
+
     # SIGTERM while writing: wait until the JSON's temporary file exists, then kill.
     def sigterm_while_writing(start_run, what):
         """Starts runs until one is caught with its temporary file present, sends SIGTERM, checks
@@ -140,6 +154,30 @@ with tempdir() as tmp:
         # Where the output can be written, the same commands exit 0.
         r = subprocess.run([HOCT, "info", g, "--json"], stdout=subprocess.DEVNULL)
         R.check(r.returncode == 0, "info --json > /dev/null exits 0")
+
+    # Long output names (issue 27, item 6): 251 bytes, where NAME.tmp-PID-N would pass the
+    # 255-byte limit; the short temporary name is used and removed.
+    long_name = p("x" * 246 + ".json")
+    r = run("tree", p("c.vtu"), "-q", "--json", long_name, check=False)
+    R.check(r.returncode == 0 and os.path.exists(long_name), f"a 251-byte output name: {r.stderr!r}")
+    R.check(leftovers(tmp) == [], f"long name: temporary files left: {leftovers(tmp)}")
+    os.remove(long_name)
+
+    # Stale temporary files (issue 27, item 5: SIGKILL cannot be caught): the next write of the
+    # same output removes those of processes that no longer exist, and only those.
+    dead = subprocess.Popen(["true"])
+    dead.wait()
+    stale = p(f".st.json.tmp-{dead.pid}-5")
+    alive = p(f".st.json.tmp-{os.getpid()}-5")
+    other = p(".st.json.tmp-notours")
+    for f in (stale, alive, other):
+        open(f, "w").write("partial")
+    run("tree", p("c.vtu"), "-q", "--json", p("st.json"))
+    R.check(not os.path.exists(stale), "the stale temporary file of a dead process is removed")
+    R.check(os.path.exists(alive) and os.path.exists(other),
+            "a live process's temporary file and a foreign name stay")
+    for f in (alive, other):
+        os.remove(f)
 
     # An output that is the input, or another output (issue 27, items 2 and 7): refused before
     # anything is computed, by file identity (a symbolic link, a hard link, another spelling).
