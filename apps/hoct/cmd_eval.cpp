@@ -4,11 +4,15 @@
 #include "util/error.hpp"
 
 #include <charconv>
+#include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <memory>
-#include <sstream>
+#include <string>
+#include <system_error>
+#include <vector>
 
 namespace hoct::cli {
 namespace {
@@ -17,13 +21,71 @@ struct EvalOptions {
   std::string file, scalar, points = "-";
 };
 
+// Lines longer than this are refused (a point line is a few dozen bytes; /dev/zero has none).
+constexpr std::size_t kMaxLine = 4096;
+
+// The line for an error message: at most 60 bytes of it, printable characters only.
+std::string quote_prefix(const std::string &line) {
+  std::string q;
+  for (char ch : line.substr(0, 60))
+    q.push_back(static_cast<unsigned char>(ch) >= 32 && ch != 127 ? ch : '?');
+  return "'" + q + (line.size() > 60 ? "...'" : "'");
+}
+
+// The next line of `in` into `line` (without the newline); false at the end. Throws past
+// kMaxLine bytes without reading further.
+bool read_line(std::istream &in, std::string &line, const std::string &where, long long lineno) {
+  line.clear();
+  char ch;
+  bool any = false;
+  while (in.get(ch)) {
+    any = true;
+    if (ch == '\n')
+      return true;
+    if (line.size() == kMaxLine)
+      throw Error(where + ":" + std::to_string(lineno) + ": line longer than " +
+                  std::to_string(kMaxLine) + " bytes (it starts " + quote_prefix(line) +
+                  "): not a file of 'cell u v' lines");
+    line.push_back(ch);
+  }
+  return any;
+}
+
+// Splits `line` at blanks; true if it has exactly three fields: an integer cell id and two
+// finite numbers.
+bool parse_point(const std::string &line, long long &c, double &u, double &v) {
+  std::vector<std::string> fields;
+  std::size_t i = 0;
+  while (i < line.size()) {
+    while (i < line.size() && (line[i] == ' ' || line[i] == '\t' || line[i] == '\r'))
+      ++i;
+    std::size_t j = i;
+    while (j < line.size() && line[j] != ' ' && line[j] != '\t' && line[j] != '\r')
+      ++j;
+    if (j > i)
+      fields.push_back(line.substr(i, j - i));
+    i = j;
+  }
+  if (fields.size() != 3)
+    return false;
+  auto whole = [](const std::string &f, auto &x) {
+    const auto r = std::from_chars(f.data(), f.data() + f.size(), x);
+    return r.ec == std::errc() && r.ptr == f.data() + f.size();
+  };
+  return whole(fields[0], c) && whole(fields[1], u) && whole(fields[2], v) && std::isfinite(u) &&
+         std::isfinite(v);
+}
+
 void run_eval(const EvalOptions &o) {
   const LoadedMesh lm = load_mesh(o.file, o.scalar, /*strict=*/true);
   const Mesh &m = lm.mesh;
   std::ifstream file;
   std::istream *in = &std::cin;
   if (o.points != "-") {
-    file.open(o.points);
+    std::error_code ec;
+    if (std::filesystem::is_directory(o.points, ec))
+      throw Error(o.points + ": is a directory, not a file of 'cell u v' lines");
+    file.open(o.points, std::ios::binary);
     if (!file)
       throw Error(o.points + ": cannot open");
     in = &file;
@@ -31,24 +93,30 @@ void run_eval(const EvalOptions &o) {
   const std::string where = o.points == "-" ? "<stdin>" : o.points;
   std::string line;
   long long lineno = 0;
-  while (std::getline(*in, line)) {
+  constexpr double kSlack = 1e-12; // on the reference triangle's sides
+  while (read_line(*in, line, where, lineno + 1)) {
     ++lineno;
-    std::istringstream ls(line);
-    long long c;
-    double u, v;
     if (line.find_first_not_of(" \t\r") == std::string::npos || line[0] == '#')
       continue;
-    if (!(ls >> c >> u >> v))
-      throw Error(where + ":" + std::to_string(lineno) + ": expected 'cell u v', got '" + line +
-                  "'");
+    const std::string at = where + ":" + std::to_string(lineno) + ": ";
+    long long c;
+    double u, v;
+    if (!parse_point(line, c, u, v))
+      throw Error(at + "expected 'cell u v' (an integer cell id and two numbers), got " +
+                  quote_prefix(line));
     if (c < 0 || c >= m.topology.num_cells())
-      throw Error(where + ":" + std::to_string(lineno) + ": cell " + std::to_string(c) +
-                  " out of range (the mesh has " + std::to_string(m.topology.num_cells()) +
-                  " cells)");
+      throw Error(at + "cell " + std::to_string(c) + " out of range (the mesh has " +
+                  std::to_string(m.topology.num_cells()) + " cells)");
+    if (u < -kSlack || v < -kSlack || u + v > 1 + kSlack)
+      throw Error(at + "(u, v) = (" + std::to_string(u) + ", " + std::to_string(v) +
+                  ") is outside the reference triangle (0,0), (1,0), (0,1): the field is not "
+                  "defined there");
     const Vec3 p = m.geometry.position(c, u, v);
     std::printf("%lld %.17g %.17g %.17g %.17g %.17g %.17g\n", c, u, v, p[0], p[1], p[2],
                 m.field.value(c, u, v));
   }
+  if (in->bad())
+    throw Error(where + ": read error");
 }
 
 } // namespace

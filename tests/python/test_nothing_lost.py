@@ -179,6 +179,29 @@ with tempdir() as tmp:
     for f in (alive, other):
         os.remove(f)
 
+    # hoct eval's point lines (issue 27, item 8): bounded, strict, inside the reference triangle.
+    with open(p("huge-line.txt"), "w") as f:
+        f.write("7" * 10_000_000)
+    for args, stdin, phrase in [
+            (("--points", "/dev/zero"), None, "line longer than 4096 bytes"),
+            (("--points", tmp), None, "is a directory"),
+            (("--points", p("huge-line.txt")), None, "line longer than 4096 bytes"),
+            ((), "0.5 0.2 0.2\n", "an integer cell id"),
+            ((), "0 nan 0.2\n", "expected 'cell u v'"),
+            ((), "0 0.2 0.2 7\n", "expected 'cell u v'"),
+            ((), "0 0.8 0.4\n", "outside the reference triangle"),
+            ((), "0 -0.1 0.5\n", "outside the reference triangle")]:
+        if args and args[1] == "/dev/zero" and not os.path.exists("/dev/zero"):
+            continue
+        r = subprocess.run([HOCT, "eval", p("c.vtu"), *args], input=stdin or "", capture_output=True,
+                           text=True, timeout=60)
+        R.check(r.returncode == 1 and phrase in r.stderr and len(r.stderr) < 600,
+                f"eval {args or repr(stdin)}: exit {r.returncode}, stderr {r.stderr[:200]!r}")
+    r = subprocess.run([HOCT, "eval", p("c.vtu")], input="0 0.2 0.2\n3 1 0\n# note\n\n7 0 0\n",
+                       capture_output=True, text=True)
+    R.check(r.returncode == 0 and len(r.stdout.split("\n")) == 4, f"eval of good points: {r.stderr!r}")
+    os.remove(p("huge-line.txt"))
+
     # An output that is the input, or another output (issue 27, items 2 and 7): refused before
     # anything is computed, by file identity (a symbolic link, a hard link, another spelling).
     src = p("c.vtu")
