@@ -46,11 +46,28 @@ void FileBytes::release() {
   size_ = 0;
 }
 
+std::string special_file(const std::string &path) {
+  // Named before anything opens it: opening a FIFO would wait for a writer; a device has no size
+  // and would read as empty, or as endless zeros.
+  struct stat kind {};
+  if (::stat(path.c_str(), &kind) != 0 || S_ISREG(kind.st_mode) || S_ISDIR(kind.st_mode))
+    return "";
+  return S_ISFIFO(kind.st_mode)   ? "is a FIFO (a named pipe), not a file: write the mesh to a "
+                                    "regular file first"
+         : S_ISCHR(kind.st_mode)  ? "is a character device, not a mesh file"
+         : S_ISBLK(kind.st_mode)  ? "is a block device, not a mesh file"
+         : S_ISSOCK(kind.st_mode) ? "is a socket, not a mesh file"
+                                  : "is not a regular file";
+}
+
 bool FileBytes::read(const std::string &path, std::string &error) {
   release();
   auto reason = [](const char *what) {
     return std::string(what) + " (" + std::strerror(errno) + ")";
   };
+  error = special_file(path);
+  if (!error.empty())
+    return false;
   const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
   if (fd < 0) {
     error = reason("cannot open");

@@ -11,6 +11,10 @@
 
 namespace hoct {
 
+// What `path` is if it exists and is neither a regular file nor a directory ("is a FIFO (a named
+// pipe) ...", "is a character device, not a mesh file", ...), else empty. Never opens it.
+std::string special_file(const std::string &path);
+
 class FileBytes {
 public:
   FileBytes() = default;
@@ -22,7 +26,8 @@ public:
   ~FileBytes();
 
   // Reads the file at `path`. On failure returns false and sets `error` to what went wrong
-  // ("is a directory", "cannot open (reason)", "cannot read (reason)"), for the caller's message.
+  // ("is a directory", "is a FIFO ...", "is a character device ...", "cannot open (reason)",
+  // "cannot read (reason)"), for the caller's message. Only regular files are read.
   bool read(const std::string &path, std::string &error);
 
   char *data() { return data_; }

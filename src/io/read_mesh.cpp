@@ -1,5 +1,6 @@
 #include "io/read_mesh.hpp"
 
+#include "io/file_bytes.hpp"
 #include "io/msh_reader.hpp"
 #include "io/vtu_reader.hpp"
 #include "util/error.hpp"
@@ -10,6 +11,8 @@
 namespace hoct {
 
 MeshInput read_mesh(const std::string &path, const std::string &scalar, const ReadLimits &limits) {
+  if (const std::string what = special_file(path); !what.empty())
+    throw InputError(path + ": " + what);
   std::string ext = std::filesystem::path(path).extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(),
                  [](unsigned char c) { return std::tolower(c); });

@@ -202,6 +202,19 @@ with tempdir() as tmp:
     R.check(r.returncode == 0 and len(r.stdout.split("\n")) == 4, f"eval of good points: {r.stderr!r}")
     os.remove(p("huge-line.txt"))
 
+    # Devices and FIFOs as input (issue 27, item 10): named, never opened (a FIFO would wait).
+    os.mkfifo(p("pipe.vtu"))
+    for path, phrase in [(p("pipe.vtu"), "is a FIFO"), ("/dev/null", "is a character device"),
+                         ("/dev/zero", "is a character device")]:
+        if not os.path.exists(path):
+            continue
+        try:
+            r = subprocess.run([HOCT, "info", path], capture_output=True, text=True, timeout=30)
+            R.check(r.returncode == 1 and phrase in r.stderr, f"info {path}: {r.returncode} {r.stderr!r}")
+        except subprocess.TimeoutExpired:
+            R.check(False, f"info {path} hangs")
+    os.remove(p("pipe.vtu"))
+
     # An output that is the input, or another output (issue 27, items 2 and 7): refused before
     # anything is computed, by file identity (a symbolic link, a hard link, another spelling).
     src = p("c.vtu")
