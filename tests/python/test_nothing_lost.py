@@ -39,32 +39,23 @@ with tempdir() as tmp:
     for name in ("out.json", "out.vtp"):
         with open(p(name), "w") as f:
             f.write(old)
-    proc = subprocess.Popen([HOCT, "tree", p("bigger.vtu"), "--threads", "1", "--json",
-                             p("out.json"), "--vtp", p("out.vtp")],
-                            stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
-    for line in proc.stderr:
-        if "edge critical points" in line:
-            break
-    proc.send_signal(signal.SIGINT)
-    proc.stderr.read()
-    rc = proc.wait(60)
-    R.check(rc == 130, f"SIGINT while computing: exit {rc} (expected 130)")
-    R.check(leftovers(tmp) == [], f"SIGINT: temporary files left: {leftovers(tmp)}")
-    R.check(intact("out.json") and intact("out.vtp"), "SIGINT: existing outputs intact")
+    def interrupt_while_computing(sig, expected, name):
+        proc = subprocess.Popen([HOCT, "tree", p("bigger.vtu"), "--threads", "1", "--json",
+                                 p("out.json"), "--vtp", p("out.vtp")],
+                                stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+        for line in proc.stderr:
+            if "edge critical points" in line:
+                break
+        proc.send_signal(sig)
+        proc.stderr.read()
+        rc = proc.wait(60)
+        R.check(rc == expected, f"{name} while computing: exit {rc} (expected {expected})")
+        R.check(leftovers(tmp) == [], f"{name}: temporary files left: {leftovers(tmp)}")
+        R.check(intact("out.json") and intact("out.vtp"), f"{name}: existing outputs intact")
 
+    interrupt_while_computing(signal.SIGINT, 130, "SIGINT")
     # SIGQUIT (issue 27, item 5) as SIGINT: exit 131, nothing left behind.
-    proc = subprocess.Popen([HOCT, "tree", p("bigger.vtu"), "--threads", "1", "--json",
-                             p("out.json"), "--vtp", p("out.vtp")],
-                            stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
-    for line in proc.stderr:
-        if "edge critical points" in line:
-            break
-    proc.send_signal(signal.SIGQUIT)
-    proc.stderr.read()
-    rc = proc.wait(60)
-    R.check(rc == 131, f"SIGQUIT while computing: exit {rc} (expected 131)")
-    R.check(leftovers(tmp) == [], f"SIGQUIT: temporary files left: {leftovers(tmp)}")
-    R.check(intact("out.json") and intact("out.vtp"), "SIGQUIT: existing outputs intact")
+    interrupt_while_computing(signal.SIGQUIT, 131, "SIGQUIT")
 
     # SIGTERM while writing: wait until the JSON's temporary file exists, then kill.
     def sigterm_while_writing(start_run, what):
