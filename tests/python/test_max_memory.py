@@ -26,4 +26,12 @@ with tempdir() as d:
         res.check(r.returncode == 0 and os.path.exists(out), f"tree {ok}: {r.stderr!r}")
         if os.path.exists(out):
             os.remove(out)
+    # The refinement's own memory (issue 27, item 9), estimated before it is built: --refine 1024
+    # on this 90 KB file would take ~100 GB.
+    r = run("tree", mesh, "--refine", "1024", "--max-memory", "1G", "--json", out, check=False)
+    res.check(r.returncode == 1 and "--refine 1024" in r.stderr and "sub-triangles need ~" in r.stderr
+              and "limit 1 GiB" in r.stderr, f"--refine 1024: {r.returncode} {r.stderr!r}")
+    res.check(not os.path.exists(out), "the refused refinement wrote its output")
+    r = run("tree", mesh, "--refine", "4", "--max-memory", "1G", "--json", out, check=False)
+    res.check(r.returncode == 0 and os.path.exists(out), f"--refine 4 within 1G: {r.stderr!r}")
 res.finish()
