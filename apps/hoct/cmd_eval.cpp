@@ -35,45 +35,48 @@ std::string quote_prefix(const std::string &line) {
 // The next line of `in` into `line` (without the newline); false at the end. Throws past
 // kMaxLine bytes without reading further.
 bool read_line(std::istream &in, std::string &line, const std::string &where, long long lineno) {
-  line.clear();
-  char ch;
-  bool any = false;
-  while (in.get(ch)) {
-    any = true;
-    if (ch == '\n')
-      return true;
-    if (line.size() == kMaxLine)
-      throw Error(where + ":" + std::to_string(lineno) + ": line longer than " +
-                  std::to_string(kMaxLine) + " bytes (it starts " + quote_prefix(line) +
-                  "): not a file of 'cell u v' lines");
-    line.push_back(ch);
+  // istream::getline stores at most size - 1 bytes and sets failbit when the line goes on.
+  thread_local std::vector<char> buffer(kMaxLine + 1);
+  in.getline(buffer.data(), static_cast<std::streamsize>(buffer.size()));
+  const std::streamsize got = in.gcount(); // with the newline, if one was extracted
+  if (in.fail() && !in.eof() && got == static_cast<std::streamsize>(kMaxLine)) {
+    line.assign(buffer.data(), kMaxLine);
+    throw Error(where + ":" + std::to_string(lineno) + ": line longer than " +
+                std::to_string(kMaxLine) + " bytes (it starts " + quote_prefix(line) +
+                "): not a file of 'cell u v' lines");
   }
-  return any;
+  if (got == 0)
+    return false; // the end
+  const std::size_t length = static_cast<std::size_t>(got) - (in.eof() ? 0 : 1);
+  line.assign(buffer.data(), length);
+  if (in.eof())
+    in.clear(std::ios::eofbit); // a last line without a newline: the next call ends
+  return true;
 }
 
-// Splits `line` at blanks; true if it has exactly three fields: an integer cell id and two
-// finite numbers.
+// The fields of `line` separated by blanks, parsed in place: true if there are exactly three,
+// an integer cell id and two finite numbers.
 bool parse_point(const std::string &line, long long &c, double &u, double &v) {
-  std::vector<std::string> fields;
-  std::size_t i = 0;
-  while (i < line.size()) {
-    while (i < line.size() && (line[i] == ' ' || line[i] == '\t' || line[i] == '\r'))
-      ++i;
-    std::size_t j = i;
-    while (j < line.size() && line[j] != ' ' && line[j] != '\t' && line[j] != '\r')
-      ++j;
-    if (j > i)
-      fields.push_back(line.substr(i, j - i));
-    i = j;
-  }
-  if (fields.size() != 3)
-    return false;
-  auto whole = [](const std::string &f, auto &x) {
-    const auto r = std::from_chars(f.data(), f.data() + f.size(), x);
-    return r.ec == std::errc() && r.ptr == f.data() + f.size();
+  const char *p = line.data(), *end = p + line.size();
+  auto blank = [](char ch) { return ch == ' ' || ch == '\t' || ch == '\r'; };
+  auto field = [&](auto &x) {
+    while (p < end && blank(*p))
+      ++p;
+    const char *stop = p;
+    while (stop < end && !blank(*stop))
+      ++stop;
+    if (stop == p)
+      return false;
+    const auto r = std::from_chars(p, stop, x);
+    const bool whole = r.ec == std::errc() && r.ptr == stop;
+    p = stop;
+    return whole;
   };
-  return whole(fields[0], c) && whole(fields[1], u) && whole(fields[2], v) && std::isfinite(u) &&
-         std::isfinite(v);
+  if (!field(c) || !field(u) || !field(v) || !std::isfinite(u) || !std::isfinite(v))
+    return false;
+  while (p < end && blank(*p))
+    ++p;
+  return p == end;
 }
 
 void run_eval(const EvalOptions &o) {

@@ -352,7 +352,7 @@ private:
     const Topology &t = mesh_.topology;
     const Field &field = mesh_.field;
     // Slopes of the relative values the field holds: relative to their range, not to |f|.
-    const double tol = 1e-9 * std::max(field.value_scale(), field.max_value() - field.min_value());
+    const double tol = 1e-9 * field.value_scale();
     const int64_t nv = t.num_vertices(), ne = t.num_edges();
     // Per vertex: every edge so far ascends (bit 0) / descends (bit 1) away from it.
     std::vector<uint8_t> all(static_cast<std::size_t>(nv), 3);

@@ -78,7 +78,7 @@ EdgeNodes find_edge_nodes(const Topology &topo, const Field &field, const EdgeNo
   out.offset.resize(ne + 1);
   out.degeneracy.resize(ne);
   // The magnitude of the (relative) values the edge polynomials hold, and at least the range.
-  const double value_scale = std::max(field.value_scale(), field.max_value() - field.min_value());
+  const double value_scale = field.value_scale();
   // Fixed blocks of edges; each worker appends its blocks' nodes to a buffer of its own (counts
   // first in offset[e + 1], and where each block's nodes start); then every block's offsets and
   // nodes are placed by prefix sums over the blocks, in parallel: the result does not depend on

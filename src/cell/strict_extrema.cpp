@@ -9,7 +9,7 @@ namespace hoct {
 namespace {
 
 double slope_tolerance(const Field &field) {
-  return 1e-9 * std::max(field.value_scale(), field.max_value() - field.min_value());
+  return 1e-9 * field.value_scale();
 }
 
 } // namespace

@@ -42,7 +42,8 @@ double reference_value(double lo, double hi) {
 }
 
 double Field::value_scale() const {
-  return std::max({std::abs(min_value_ - reference_), std::abs(max_value_ - reference_), 1e-300});
+  return std::max({std::abs(min_value_ - reference_), std::abs(max_value_ - reference_),
+                   max_value_ - min_value_, 1e-300});
 }
 
 BernsteinTriangle Field::cell_polynomial(int64_t c) const {
@@ -55,12 +56,8 @@ BernsteinPoly Field::edge_polynomial(int64_t e) const {
                                            edge_coef_.begin() + edge_offset_[e + 1]));
 }
 
-double Field::relative_value(int64_t c, double u, double v) const {
-  return cell_polynomial(c)(u, v);
-}
-
 double Field::value(int64_t c, double u, double v) const {
-  return reference_ + relative_value(c, u, v);
+  return reference_ + cell_polynomial(c)(u, v);
 }
 
 Field Field::build(const MeshInput &in, const Topology &topo, ProblemLog &problems, int threads) {

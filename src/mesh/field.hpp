@@ -25,6 +25,7 @@ namespace hoct {
 // edge coefficients and the vertex values below are all relative to it, and so is everything the
 // exact and refined pipelines compute from them. value(), min_value() and max_value() are
 // absolute; the pipeline adds reference() back to the values it reports.
+//
 // The reference for data in [lo, hi]: their midpoint when it lies at least two ranges from zero,
 // else 0. Then every x in [lo, hi] lies within [3c/4, 5c/4], so x - c is exact (Sterbenz) and
 // (x - c) + c gives x back bit for bit; below that, |x| < 2.5 (hi - lo) already and a shift
@@ -71,9 +72,8 @@ public:
   // (the edge polynomials' end coefficients are set to it exactly).
   double vertex_value(int64_t v) const { return vertex_value_[v]; }
 
-  // The field at (u, v) of cell c: absolute, reference() + relative_value(c, u, v).
+  // The field at (u, v) of cell c: absolute, reference() + the cell polynomial there.
   double value(int64_t c, double u, double v) const;
-  double relative_value(int64_t c, double u, double v) const;
   // Smallest and largest node value of the input (the data range), absolute.
   double min_value() const { return min_value_; }
   double max_value() const { return max_value_; }
@@ -85,8 +85,8 @@ public:
   // persistence pair by twice that (the stability of persistence diagrams). Plus 1e-12 of the
   // range, the rounding floor of the computation itself (flat-region contraction).
   double precision() const { return precision_; }
-  // The largest |node value - reference()|: the magnitude of the values the computation sees,
-  // the scale of its relative tolerances (at least 1e-300).
+  // The largest |node value - reference()|, and at least the range (and 1e-300): the magnitude
+  // of the values the computation sees, the scale of its relative tolerances.
   double value_scale() const;
   int max_degree() const { return max_degree_; }
 
