@@ -80,15 +80,20 @@ private:
   void read_at(uint64_t at, std::size_t n, void *dst) const;
   template <class V> void resize_mapped(V &v, std::size_t n) const;
   uint64_t appended_offset(const pugi::xml_node &a, std::size_t appended_size) const;
-  Payload payload_from_file(uint64_t at, uint64_t avail, const pugi::xml_node &a) const;
+  Payload payload_from_file(uint64_t at, uint64_t avail, const pugi::xml_node &a,
+                            uint64_t expected_bytes) const;
   uint64_t raw_array_bytes(uint64_t at, uint64_t avail, const pugi::xml_node &a) const;
   std::size_t value_count(const pugi::xml_node &a, const TypeInfo &ti, uint64_t bytes,
                           std::size_t expected) const;
   const TypeInfo &type_of(const pugi::xml_node &a) const;
   std::string describe(const pugi::xml_node &a) const;
-  Payload binary_payload(const pugi::xml_node &a) const;
-  Payload decode_blocks(const uint8_t *p, std::size_t avail, const pugi::xml_node &a) const;
-  Payload decode_owned(std::vector<uint8_t> buffer, const pugi::xml_node &a) const;
+  // The bytes of binary array a, which must hold `expected_bytes` (the header counts times the
+  // type's size): a compressed array's declared size is checked against it before inflating.
+  Payload binary_payload(const pugi::xml_node &a, uint64_t expected_bytes) const;
+  Payload decode_blocks(const uint8_t *p, std::size_t avail, const pugi::xml_node &a,
+                        uint64_t expected_bytes) const;
+  Payload decode_owned(std::vector<uint8_t> buffer, const pugi::xml_node &a,
+                       uint64_t expected_bytes) const;
   template <class S, class T>
   void convert_binary(const Payload &raw, const pugi::xml_node &a, PooledVector<T> &out) const;
   // Copies a binary array stored as `type` in the machine's byte order straight into dst (room
@@ -327,7 +332,8 @@ uint64_t read_uint(const uint8_t *p, int size, bool big) {
 }
 
 // Decodes a (possibly compressed) binary array starting at p: the header, then the data.
-Payload VtuFile::decode_blocks(const uint8_t *p, std::size_t avail, const pugi::xml_node &a) const {
+Payload VtuFile::decode_blocks(const uint8_t *p, std::size_t avail, const pugi::xml_node &a,
+                               uint64_t expected_bytes) const {
   const int hs = header_size_;
   auto need = [&](std::size_t n, const char *what) {
     if (n > avail)
@@ -372,6 +378,18 @@ Payload VtuFile::decode_blocks(const uint8_t *p, std::size_t avail, const pugi::
            " bytes the header claims");
     out_size += want;
   }
+  // A zlib bomb (blocks that inflate to gigabytes) is refused here, before anything inflates:
+  // the declared size must be the array's expected size (the header counts times the type's
+  // size), which the memory budget has already been checked against (check_memory, whose
+  // estimate includes every array's bytes), so what inflates stays within the budget.
+  if (out_size != expected_bytes) {
+    const TypeInfo &ti = type_of(a);
+    fail(describe(a) + " has " +
+         (out_size % ti.size ? std::to_string(out_size) + " bytes"
+                             : std::to_string(out_size / ti.size) + " values") +
+         " (as its compression header declares, before inflating), expected " +
+         std::to_string(expected_bytes / ti.size) + " " + ti.name + " values");
+  }
   Payload r;
   std::vector<uint8_t> &out = r.owned;
   out.resize(out_size);
@@ -393,8 +411,9 @@ Payload VtuFile::decode_blocks(const uint8_t *p, std::size_t avail, const pugi::
 
 // decode_blocks on a buffer of our own (decoded base64), which the result then keeps when it
 // points into it.
-Payload VtuFile::decode_owned(std::vector<uint8_t> buffer, const pugi::xml_node &a) const {
-  Payload r = decode_blocks(buffer.data(), buffer.size(), a);
+Payload VtuFile::decode_owned(std::vector<uint8_t> buffer, const pugi::xml_node &a,
+                              uint64_t expected_bytes) const {
+  Payload r = decode_blocks(buffer.data(), buffer.size(), a, expected_bytes);
   if (r.owned.empty()) {
     const std::size_t at = r.size == 0 ? 0 : static_cast<std::size_t>(r.data - buffer.data());
     r.owned = std::move(buffer);
@@ -447,7 +466,8 @@ std::size_t VtuFile::value_count(const pugi::xml_node &a, const TypeInfo &ti, ui
 // A streamed file's raw appended array at file offset `at`, with `avail` bytes of payload from
 // there: its headers are read and checked first (as decode_blocks checks them), so that no
 // claimed size makes us read or allocate beyond the payload; then the array's bytes.
-Payload VtuFile::payload_from_file(uint64_t at, uint64_t avail, const pugi::xml_node &a) const {
+Payload VtuFile::payload_from_file(uint64_t at, uint64_t avail, const pugi::xml_node &a,
+                                   uint64_t expected_bytes) const {
   const int hs = header_size_;
   auto truncated = [&](const char *what, uint64_t n) {
     fail(describe(a) + ": truncated binary data (" + what + " needs " + std::to_string(n) +
@@ -486,10 +506,10 @@ Payload VtuFile::payload_from_file(uint64_t at, uint64_t avail, const pugi::xml_
   const std::size_t header_bytes = all.size();
   all.resize(header_bytes + static_cast<std::size_t>(total));
   read_at(at + header_bytes, static_cast<std::size_t>(total), all.data() + header_bytes);
-  return decode_owned(std::move(all), a);
+  return decode_owned(std::move(all), a, expected_bytes);
 }
 
-Payload VtuFile::binary_payload(const pugi::xml_node &a) const {
+Payload VtuFile::binary_payload(const pugi::xml_node &a, uint64_t expected_bytes) const {
   const std::string format = a.attribute("format").as_string();
   if (format == "binary") {
     std::vector<uint8_t> raw;
@@ -498,18 +518,20 @@ Payload VtuFile::binary_payload(const pugi::xml_node &a) const {
     } catch (const std::invalid_argument &e) {
       fail(describe(a) + ": bad base64 data (" + e.what() + ")");
     }
-    return decode_owned(std::move(raw), a);
+    return decode_owned(std::move(raw), a, expected_bytes);
   }
   // appended
   if (streamed_) {
     const uint64_t offset = appended_offset(a, appended_length_);
-    return payload_from_file(appended_begin_ + offset, appended_length_ - offset, a);
+    return payload_from_file(appended_begin_ + offset, appended_length_ - offset, a,
+                             expected_bytes);
   }
   if (appended_.data() == nullptr)
     fail(describe(a) + " is appended but the file has no <AppendedData> section");
   const std::string_view rest = appended_.substr(appended_offset(a, appended_.size()));
   if (!appended_base64_)
-    return decode_blocks(reinterpret_cast<const uint8_t *>(rest.data()), rest.size(), a);
+    return decode_blocks(reinterpret_cast<const uint8_t *>(rest.data()), rest.size(), a,
+                         expected_bytes);
   // Appended base64: decode just this array's streams. The header is its own stream (VTK) or
   // shares one with the data; the padding of the first group tells which.
   try {
@@ -530,7 +552,7 @@ Payload VtuFile::binary_payload(const pugi::xml_node &a) const {
       const bool separate = rest.substr(0, hchars).find('=') != std::string_view::npos;
       const std::size_t chars = separate ? hchars + base64_length(n) : base64_length(hs + n);
       std::vector<uint8_t> all = decode(chars);
-      return decode_owned(std::move(all), a);
+      return decode_owned(std::move(all), a, expected_bytes);
     }
     const std::vector<uint8_t> h3 = decode(base64_length(3 * hs));
     if (h3.size() < 3 * static_cast<std::size_t>(hs))
@@ -549,7 +571,7 @@ Payload VtuFile::binary_payload(const pugi::xml_node &a) const {
     if (total > rest.size())
       fail(describe(a) + ": compressed sizes exceed the appended data");
     std::vector<uint8_t> all = decode(hchars + base64_length(total));
-    return decode_owned(std::move(all), a);
+    return decode_owned(std::move(all), a, expected_bytes);
   } catch (const std::invalid_argument &e) {
     fail(describe(a) + ": bad base64 data (" + e.what() + ")");
   }
@@ -607,7 +629,7 @@ bool VtuFile::read_native(const pugi::xml_node &a, Scalar type, void *dst,
     read_at(at + header_size_, static_cast<std::size_t>(n), dst);
     return true;
   }
-  const Payload raw = binary_payload(a);
+  const Payload raw = binary_payload(a, uint64_t{expected} * ti.size);
   value_count(a, ti, raw.size, expected);
   if (raw.size > 0)
     std::memcpy(dst, raw.data, raw.size);
@@ -666,7 +688,7 @@ PooledVector<T> VtuFile::read_array(const pugi::xml_node &a, std::size_t expecte
       if (read_native(a, native, out.data(), expected))
         return out;
     }
-    const Payload raw = binary_payload(a);
+    const Payload raw = binary_payload(a, uint64_t{expected} * ti.size);
     value_count(a, ti, raw.size, expected);
     switch (ti.type) {
     case Scalar::F32:

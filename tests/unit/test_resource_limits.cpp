@@ -12,6 +12,7 @@
 #include "util/error.hpp"
 
 #include <gtest/gtest.h>
+#include <zlib.h>
 
 #include <cstring>
 #include <filesystem>
@@ -91,6 +92,54 @@ TEST(ResourceLimits, VtuZlibBlockThatCannotExpandThatFar) {
   // The last block larger than the block size.
   s.replace(at, 44, b64({1, 16, 32, csize}));
   EXPECT_NE(error_of(s).find("implausible compression header"), std::string::npos) << error_of(s);
+}
+
+// A zlib bomb: one triangle whose Points blocks (4096 copies of 1 MiB of zeros, ~1 KB each
+// compressed) declare 4 GiB for the 9 values its header counts. Refused from the compression
+// header before anything inflates, read whole and streamed from the file. Before: 4 GiB
+// allocated and inflated, then "has 536870912 values, expected 9".
+std::string zlib_bomb_vtu() {
+  std::vector<uint8_t> zero(std::size_t{1} << 20, 0);
+  std::vector<uint8_t> packed(compressBound(static_cast<uLong>(zero.size())));
+  uLongf packed_size = static_cast<uLongf>(packed.size());
+  EXPECT_EQ(compress2(packed.data(), &packed_size, zero.data(), static_cast<uLong>(zero.size()), 9),
+            Z_OK);
+  constexpr uint64_t kBlocks = 4096;
+  std::vector<uint64_t> header = {kBlocks, zero.size(), zero.size()};
+  header.resize(3 + kBlocks, packed_size);
+  std::string payload(reinterpret_cast<const char *>(header.data()), header.size() * 8);
+  for (uint64_t b = 0; b < kBlocks; ++b)
+    payload.append(reinterpret_cast<const char *>(packed.data()), packed_size);
+  return "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" "
+         "byte_order=\"LittleEndian\" header_type=\"UInt64\" "
+         "compressor=\"vtkZLibDataCompressor\">\n<UnstructuredGrid><Piece NumberOfPoints=\"3\" "
+         "NumberOfCells=\"1\"><Points><DataArray type=\"Float64\" NumberOfComponents=\"3\" "
+         "format=\"appended\" offset=\"0\"/></Points></Piece></UnstructuredGrid>\n"
+         "<AppendedData encoding=\"raw\">_" +
+         payload + "\n</AppendedData>\n</VTKFile>\n";
+}
+
+TEST(ResourceLimits, VtuZlibBombRefusedBeforeInflating) {
+  const std::string s = zlib_bomb_vtu();
+  ASSERT_LT(s.size(), std::size_t{5} << 20);
+  const std::string expected = "DataArray in <Points> has 536870912 values (as its compression "
+                               "header declares, before inflating), expected 9 Float64 values";
+  EXPECT_NE(error_of(s).find(expected), std::string::npos) << error_of(s);
+  // Streamed from the file (as files above ReadLimits::stream_appended_above are).
+  const auto path =
+      std::filesystem::temp_directory_path() / ("hoct_bomb_" + std::to_string(::getpid()) + ".vtu");
+  {
+    std::ofstream out(path, std::ios::binary);
+    out << s;
+  }
+  std::string streamed = "(no error)";
+  try {
+    read_vtu(path.string(), "", {.stream_appended_above = 0});
+  } catch (const InputError &e) {
+    streamed = e.what();
+  }
+  std::filesystem::remove(path);
+  EXPECT_NE(streamed.find(expected), std::string::npos) << streamed;
 }
 
 // Appended base64 whose first group is padded ("AA=="): the decoded header is shorter than the
