@@ -12,6 +12,9 @@ namespace fs = std::filesystem;
 
 bool same_file(const std::string &a, const std::string &b) {
   std::error_code ea, eb;
+  // Two outputs to /dev/null (or any character device) do not overwrite each other.
+  if (fs::is_character_file(a, ea) && fs::is_character_file(b, eb))
+    return false;
   const bool a_exists = fs::exists(a, ea), b_exists = fs::exists(b, eb);
   if (a_exists && b_exists) {
     std::error_code e;

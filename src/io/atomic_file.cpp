@@ -11,6 +11,9 @@
 #include <filesystem>
 #include <fstream>
 #include <random>
+
+#include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 namespace hoct {
@@ -105,6 +108,24 @@ void remove_stale_temporaries(const std::filesystem::path &dir, const std::strin
   }
 }
 
+// The file an output path names: symbolic links followed to their final target (which may not
+// exist yet: a dangling link is written through to the file it names), so that the link stays a
+// link and its target gets the new content.
+std::filesystem::path final_target(const std::string &path) {
+  namespace fs = std::filesystem;
+  fs::path at(path);
+  for (int hops = 0; hops < 40; ++hops) {
+    std::error_code ec;
+    if (!fs::is_symlink(fs::symlink_status(at, ec)) || ec)
+      return at;
+    const fs::path next = fs::read_symlink(at, ec);
+    if (ec)
+      throw Error(path + ": cannot read the symbolic link: " + ec.message());
+    at = next.is_absolute() ? next : at.parent_path() / next;
+  }
+  throw Error(path + ": too many levels of symbolic links");
+}
+
 } // namespace
 
 void install_interrupt_cleanup() {
@@ -122,9 +143,28 @@ void install_interrupt_cleanup() {
 void write_file_atomic(const std::string &path, const std::function<void(std::ostream &)> &write,
                        bool binary) {
   namespace fs = std::filesystem;
-  const fs::path target(path);
+  const fs::path target = final_target(path);
   if (target.filename().empty())
     throw Error(path + ": not a file name");
+  const auto mode = binary ? std::ios::binary | std::ios::out : std::ios::out;
+  struct stat old {};
+  const bool exists = ::stat(target.c_str(), &old) == 0;
+  if (exists && S_ISDIR(old.st_mode))
+    throw Error(path + ": is a directory");
+  if (exists && !S_ISREG(old.st_mode)) {
+    // A device or a FIFO (/dev/null, /dev/full, a named pipe): written through, never replaced.
+    std::ofstream out(target, mode);
+    if (!out)
+      throw Error(path + ": cannot open for writing: " + std::strerror(errno));
+    write(out);
+    out.flush();
+    if (!out)
+      throw Error(path + ": write failed: " + std::strerror(errno));
+    out.close();
+    if (!out)
+      throw Error(path + ": closing failed: " + std::strerror(errno));
+    return;
+  }
   std::random_device rd;
   const std::string prefix = temporary_prefix(target.filename().string());
   remove_stale_temporaries(target.parent_path(), prefix);
@@ -136,14 +176,31 @@ void write_file_atomic(const std::string &path, const std::function<void(std::os
   // Registered before the file exists, released after it is renamed or removed.
   const TempRegistration registration(tmp);
   try {
+    // Created exclusively; private while it is written when it replaces a file (which may be
+    // private), else with the usual mode (0666 less the umask).
+    const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC,
+                          exists ? S_IRUSR | S_IWUSR : 0666);
+    if (fd < 0)
+      throw Error(path + ": cannot open for writing: " + std::strerror(errno));
+    ::close(fd);
     {
-      std::ofstream out(tmp, binary ? std::ios::binary | std::ios::trunc : std::ios::trunc);
+      std::ofstream out(tmp, mode | std::ios::trunc);
       if (!out)
         throw Error(path + ": cannot open for writing: " + std::strerror(errno));
       write(out);
       out.flush();
       if (!out)
         throw Error(path + ": write failed (disk full or I/O error)");
+    }
+    if (exists) {
+      // The replaced file's permissions and owner (the owner where this process may set it:
+      // root, or the owner itself; else the group alone if it may, else this process's).
+      if (::chown(tmp.c_str(), old.st_uid, old.st_gid) != 0 &&
+          ::chown(tmp.c_str(), static_cast<uid_t>(-1), old.st_gid) != 0) {
+        // Not ours to give away: the new file is this process's, as any rewrite would be.
+      }
+      if (::chmod(tmp.c_str(), old.st_mode & 07777) != 0)
+        throw Error(path + ": cannot keep the file's permissions: " + std::strerror(errno));
     }
     std::error_code ec;
     fs::rename(tmp, target, ec);

@@ -13,7 +13,10 @@ namespace hoct {
 // it to `path`. Temporary files of earlier writes of that output whose process no longer exists
 // (SIGKILL, a crash) are removed first. On any failure (exception from write, I/O error) the
 // temporary file is removed, the target is left untouched, and hoct::Error is thrown naming the
-// file.
+// file. A symbolic link is followed to its final target (the link stays, the target is
+// replaced); an existing file's permissions (and owner, where this process may set it) are
+// kept; a device or a FIFO is written through, never replaced (its write errors reported: /dev/full
+// gives "No space left on device"); a directory is refused.
 void write_file_atomic(const std::string &path, const std::function<void(std::ostream &)> &write,
                        bool binary = true);
 

@@ -232,4 +232,73 @@ with tempdir() as tmp:
     R.check(not any(os.path.exists(p(n)) for n in ("same.json", "s.out", "conv.msh", "conv.vtp", "g.msh")),
             "a refused command writes no output")
 
+    # Outputs that are not regular files (issue 27, item 1). Devices are written through, never
+    # replaced: our own device nodes (mknod as root; /dev/null and /dev/full are not put at risk
+    # of replacement by the code under test), else the system's where this user cannot replace
+    # them.
+    import stat
+
+    def device(name, minor):
+        path = p(name)
+        try:
+            os.mknod(path, 0o666 | stat.S_IFCHR, os.makedev(1, minor))
+            return path
+        except (PermissionError, OSError):
+            system = "/dev/" + name
+            return system if os.path.exists(system) and not os.access("/dev", os.W_OK) else None
+
+    null, full = device("null", 3), device("full", 7)
+    if null:
+        r = run("tree", src, "-q", "--json", null, "--vtp", null, check=False)
+        R.check(r.returncode == 0 and stat.S_ISCHR(os.stat(null).st_mode),
+                f"--json/--vtp to a null device: exit {r.returncode}, {r.stderr!r}, "
+                f"still a device: {stat.S_ISCHR(os.stat(null).st_mode)}")
+    if full:
+        r = run("tree", src, "-q", "--json", full, check=False)
+        R.check(r.returncode == 1 and "No space left on device" in r.stderr
+                and stat.S_ISCHR(os.stat(full).st_mode),
+                f"--json to a full device: exit {r.returncode}, {r.stderr!r}")
+    R.check(null is not None or full is not None or os.geteuid() != 0, "no device to test with")
+    # A FIFO: written through to its reader.
+    os.mkfifo(p("out.fifo"))
+    reader = subprocess.Popen(["cat", p("out.fifo")], stdout=subprocess.PIPE,
+                              stderr=subprocess.DEVNULL)
+    r = run("tree", src, "-q", "--json", p("out.fifo"), check=False)
+    try:
+        got = reader.communicate(timeout=60)[0]
+    except subprocess.TimeoutExpired:  # the FIFO was replaced: its reader waits for ever
+        reader.kill()
+        got = reader.communicate()[0]
+    R.check(r.returncode == 0 and got.startswith(b"{") and stat.S_ISFIFO(os.stat(p("out.fifo")).st_mode),
+            f"--json to a FIFO: exit {r.returncode}, {r.stderr!r}, read {len(got)} bytes")
+    # A symbolic link: its target gets the new content, the link stays a link.
+    with open(p("target.json"), "w") as f:
+        f.write(old)
+    os.symlink("target.json", p("link.json"))
+    run("tree", src, "-q", "--json", p("link.json"))
+    R.check(os.path.islink(p("link.json")) and open(p("target.json")).read().startswith("{"),
+            "--json to a symbolic link: the link stays and its target is written")
+    # A dangling link: the file it names is created.
+    os.symlink("made.json", p("dangling.json"))
+    run("tree", src, "-q", "--json", p("dangling.json"))
+    R.check(os.path.islink(p("dangling.json")) and os.path.isfile(p("made.json")),
+            "--json to a dangling symbolic link creates its target")
+    # An existing file's permissions (and owner) are kept; a new one gets the umask's.
+    with open(p("private.json"), "w") as f:
+        f.write(old)
+    os.chmod(p("private.json"), 0o600)
+    if os.geteuid() == 0:
+        os.chown(p("private.json"), 12345, 54321)
+    run("tree", src, "-q", "--json", p("private.json"))
+    st = os.stat(p("private.json"))
+    R.check(stat.S_IMODE(st.st_mode) == 0o600, f"mode 600 kept: {oct(stat.S_IMODE(st.st_mode))}")
+    if os.geteuid() == 0:
+        R.check((st.st_uid, st.st_gid) == (12345, 54321), f"owner kept: {st.st_uid}:{st.st_gid}")
+    R.check(leftovers(tmp) == [], f"outputs that are not regular files: left {leftovers(tmp)}")
+    # A directory as the output: refused, untouched.
+    os.mkdir(p("adir"))
+    r = run("tree", src, "-q", "--json", p("adir"), check=False)
+    R.check(r.returncode == 1 and "is a directory" in r.stderr and os.path.isdir(p("adir")),
+            f"--json to a directory: exit {r.returncode}, {r.stderr!r}")
+
 R.finish()
