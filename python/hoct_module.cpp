@@ -1,5 +1,6 @@
 // Python bindings (pybind11): a thin layer over the library, exposing meshes and trees as
 // numpy arrays. The Python package `hoct` (python/hoct/__init__.py) adds the conveniences.
+#include "argument_checks.hpp"
 #include "datasets/datasets.hpp"
 #include "io/read_mesh.hpp"
 #include "io/tree_json.hpp"
@@ -23,6 +24,7 @@
 
 namespace py = pybind11;
 using namespace hoct;
+using py_checks::no_nul;
 
 namespace {
 
@@ -53,8 +55,10 @@ PyMesh make_mesh(MeshInput in, int threads = 0) {
   return m;
 }
 
+// Cells convert only safely (no forcecast): a float or uint64 array is refused, not truncated
+// or wrapped (hoct.from_arrays converts the arrays a .vtu file could hold, with messages).
 PyMesh from_arrays(py::array_t<double, py::array::c_style | py::array::forcecast> points,
-                   py::array_t<int64_t, py::array::c_style | py::array::forcecast> cells,
+                   py::array_t<int64_t, py::array::c_style> cells,
                    py::array_t<double, py::array::c_style | py::array::forcecast> values) {
   if (points.ndim() != 2 || (points.shape(1) != 2 && points.shape(1) != 3))
     throw Error("from_arrays: points must have shape (n, 2) or (n, 3)");
@@ -133,7 +137,20 @@ py::dict merge_tree_dict(const PyTree &t, bool join) {
 
 PYBIND11_MODULE(_hoct, m) {
   m.doc() = "hoct: exact contour trees of piecewise-polynomial fields (native part)";
-  py::register_exception<Error>(m, "HoctError", PyExc_ValueError);
+  // Messages quote file names and file contents: made a str with any NUL and invalid UTF-8
+  // kept visible (PyErr_SetString would end it at a NUL, or fail on the bytes).
+  static py::exception<Error> hoct_error(m, "HoctError", PyExc_ValueError);
+  py::register_exception_translator([](std::exception_ptr p) {
+    try {
+      if (p)
+        std::rethrow_exception(p);
+    } catch (const Error &e) {
+      const std::string what = e.what();
+      py::object text = py::reinterpret_steal<py::object>(PyUnicode_DecodeUTF8(
+          what.data(), static_cast<py::ssize_t>(what.size()), "backslashreplace"));
+      PyErr_SetObject(hoct_error.ptr(), text.ptr());
+    }
+  });
 
   py::class_<PyMesh>(m, "Mesh")
       .def_property_readonly("num_cells",
@@ -158,8 +175,7 @@ PYBIND11_MODULE(_hoct, m) {
       .def_property_readonly("source", [](const PyMesh &x) { return x.mesh->source; })
       .def_property_readonly("field_name", [](const PyMesh &x) { return x.mesh->field_name; })
       .def("value", [](const PyMesh &x, int64_t cell, double u, double v) {
-        if (cell < 0 || cell >= x.mesh->topology.num_cells())
-          throw Error("value: cell out of range");
+        py_checks::eval_point(cell, u, v, x.mesh->topology.num_cells());
         return x.mesh->field.value(cell, u, v);
       });
 
@@ -277,7 +293,7 @@ PYBIND11_MODULE(_hoct, m) {
       .def("simplify",
            [](const PyTree &t, double threshold) {
              PyTree r;
-             r.tree = simplify_tree(t.tree, threshold);
+             r.tree = simplify_tree(t.tree, py_checks::threshold(threshold, "simplify"));
              return r;
            })
       .def("arc_paths",
@@ -304,7 +320,7 @@ PYBIND11_MODULE(_hoct, m) {
       .def(
           "write_json",
           [](const PyTree &t, const std::string &path, bool timings) {
-            write_tree_json(path, t.tree, timings);
+            write_tree_json(no_nul(path, "write_json: path"), t.tree, timings);
           },
           py::arg("path"), py::arg("timings") = true, py::call_guard<py::gil_scoped_release>())
       .def(
@@ -312,7 +328,7 @@ PYBIND11_MODULE(_hoct, m) {
           [](PyTree &t, const std::string &path) {
             if (t.tree.arc_paths.empty())
               compute_arc_paths(t.tree, 0);
-            write_tree_vtp(path, t.tree);
+            write_tree_vtp(no_nul(path, "write_vtp: path"), t.tree);
           },
           py::arg("path"), py::call_guard<py::gil_scoped_release>())
       .def(
@@ -320,7 +336,8 @@ PYBIND11_MODULE(_hoct, m) {
           [](const PyTree &t, const std::string &path, const std::string &title) {
             if (t.tree.branches.empty())
               throw Error("write_svg draws the reduced tree (not an augmented one)");
-            write_tree_svg(path, t.tree, title);
+            write_tree_svg(no_nul(path, "write_svg: path"), t.tree,
+                           no_nul(title, "write_svg: title"));
           },
           py::arg("path"), py::arg("title") = "", py::call_guard<py::gil_scoped_release>())
       .def("join_tree", [](const PyTree &t) { return merge_tree_dict(t, true); })
@@ -331,9 +348,10 @@ PYBIND11_MODULE(_hoct, m) {
       "read",
       [](const std::string &path, const std::string &scalar, const std::string &max_memory,
          int threads, double merge_tolerance) {
-        ReadLimits limits = read_limits_for(max_memory);
+        ReadLimits limits = read_limits_for(no_nul(max_memory, "read: max_memory"));
         limits.threads = thread_count(threads);
-        MeshInput input = read_mesh(path, scalar, limits);
+        MeshInput input =
+            read_mesh(no_nul(path, "read: path"), no_nul(scalar, "read: scalar"), limits);
         if (merge_tolerance >= 0) // as `hoct tree --merge-duplicates=TOL`
           merge_duplicate_points(input, merge_tolerance, thread_count(threads));
         return make_mesh(std::move(input), threads);
@@ -353,7 +371,7 @@ PYBIND11_MODULE(_hoct, m) {
         o.seed = seed;
         o.frequency = frequency;
         o.plateau = plateau;
-        return make_mesh(generate_dataset(name, o));
+        return make_mesh(generate_dataset(no_nul(name, "generate: name"), o));
       },
       py::call_guard<py::gil_scoped_release>());
   m.def("dataset_names", &dataset_names);

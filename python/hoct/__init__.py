@@ -8,6 +8,10 @@
 
 The same library computes what the `hoct` command line prints: the results are identical.
 """
+import math
+import numbers
+
+from . import _arguments as _args
 from . import _hoct
 from ._hoct import HoctError, Mesh, Tree
 
@@ -28,7 +32,12 @@ def read(path, scalar=None, max_memory=None, threads=None, merge_duplicates=None
 
     `merge_duplicates`: merge points at the same position before building the mesh, as
     `hoct tree --merge-duplicates[=TOL]`: True (within 1e-9 of the bounding-box diagonal) or a
-    tolerance TOL between 0 and 0.1."""
+    tolerance TOL between 0 and 0.1.
+
+    `path` is a str, bytes or os.PathLike; one with a NUL character is refused (HoctError), as
+    is a `scalar` with one, instead of opening or naming its prefix."""
+    path = _args.path(path, "read: path")
+    scalar = "" if scalar is None else _args.text(scalar, "read: scalar")
     if max_memory is None:
         budget = ""
     elif isinstance(max_memory, bool):
@@ -37,21 +46,22 @@ def read(path, scalar=None, max_memory=None, threads=None, merge_duplicates=None
         if max_memory <= 0:
             raise HoctError("read: max_memory must be positive, got %d" % max_memory)
         budget = str(max_memory)
+    elif isinstance(max_memory, float):
+        budget = repr(max_memory)
     else:
-        budget = str(max_memory)
-    if threads is not None and (isinstance(threads, bool) or not isinstance(threads, int)
-                                or threads < 1):
-        raise HoctError("read: threads must be a positive integer, got %r" % (threads,))
+        budget = _args.text(max_memory, "read: max_memory")
+    nthreads = _args.threads(threads, "read")
     if merge_duplicates is None or merge_duplicates is False:
         tolerance = -1.0
     elif merge_duplicates is True:
         tolerance = 1e-9
-    elif isinstance(merge_duplicates, (int, float)) and 0 <= merge_duplicates <= 0.1:
+    elif (isinstance(merge_duplicates, numbers.Real) and not isinstance(merge_duplicates, bool)
+          and 0 <= merge_duplicates <= 0.1):
         tolerance = float(merge_duplicates)
     else:
         raise HoctError("read: merge_duplicates must be True or a tolerance between 0 and 0.1, "
                         "got %r" % (merge_duplicates,))
-    return _hoct.read(str(path), scalar or "", budget, int(threads or 0), tolerance)
+    return _hoct.read(path, scalar, budget, nthreads, tolerance)
 
 
 _TRIANGLE_TYPES = {5: 1, 22: 2}  # VTK_TRIANGLE, VTK_QUADRATIC_TRIANGLE; 69 = any degree
@@ -62,22 +72,33 @@ def from_arrays(points, cells, values, degree=None, cell_types=None):
     triangles in VTK node order (3, 6, 10, 15, ... nodes per cell), values (n,). `degree`, if
     given, must match the node count; `cell_types` (VTK codes 5, 22 or 69 per cell), if given,
     are checked against it. The mesh is built on every hardware thread (the same mesh for any
-    number)."""
-    import numpy as np
+    number).
 
-    cells = np.asarray(cells)
+    Cell indices follow the rules of a .vtu file's connectivity: an integer array, or floating
+    point values that are all whole, finite and within int64 (1.5, nan, 1e20 are refused with
+    their position). A numpy masked array with a masked entry is refused (points, cells, values
+    and cell_types alike): hoct does not guess the values a mask hides."""
+    return _from_arrays(points, cells, values, degree, cell_types, "from_arrays")
+
+
+def _from_arrays(points, cells, values, degree, cell_types, what):
+    points = _args.real_array(points, what + ": points")
+    values = _args.real_array(values, what + ": values")
+    cells = _args.index_array(cells, what + ": cells")
     if cells.ndim != 2:
-        raise HoctError("from_arrays: cells must be a 2D array (cells, nodes per cell)")
+        raise HoctError(what + ": cells must be a 2D array (cells, nodes per cell)")
     n = cells.shape[1]
+    if degree is not None:
+        degree = _args.integer(degree, what + ": degree", 1, 1 << 20)
     if degree is not None and (degree + 1) * (degree + 2) // 2 != n:
-        raise HoctError("from_arrays: degree %d needs %d nodes per cell, cells have %d"
-                        % (degree, (degree + 1) * (degree + 2) // 2, n))
+        raise HoctError("%s: degree %d needs %d nodes per cell, cells have %d"
+                        % (what, degree, (degree + 1) * (degree + 2) // 2, n))
     if cell_types is not None:
-        for i, t in enumerate(np.asarray(cell_types).ravel()):
+        for i, t in enumerate(_args.index_array(cell_types, what + ": cell_types").ravel()):
             if t not in (5, 22, 69) or (t in _TRIANGLE_TYPES and
                                         (_TRIANGLE_TYPES[t] + 1) * (_TRIANGLE_TYPES[t] + 2) // 2 != n):
-                raise HoctError("from_arrays: cell %d has VTK type %d, which does not match %d-node "
-                                "triangles" % (i, t, n))
+                raise HoctError("%s: cell %d has VTK type %d, which does not match %d-node "
+                                "triangles" % (what, i, t, n))
     return _hoct.from_arrays(points, cells, values)
 
 
@@ -85,9 +106,19 @@ def generate(name, degree=0, cells=0, seed=1, frequency=1.0, plateau=0.0, scale=
     """A synthetic dataset (hoct.dataset_names()): the same as `hoct generate`
     (frequency: `random` only, its wave numbers multiplied; plateau: `random` only, the values
     below their plateau-th percentile raised to it; every value v then becomes
-    scale * v + offset); its mesh built on every hardware thread."""
-    return _hoct.generate(name, int(degree), int(cells), int(seed), float(frequency),
-                          float(plateau), float(scale), float(offset))
+    scale * v + offset); its mesh built on every hardware thread.
+
+    As for the command line, degree and seed are integers (1.5 is refused, not truncated) and
+    cells a whole number (1e6 is fine)."""
+    name = _args.text(name, "generate: name")
+    degree = _args.integer(degree, "generate: degree", 0, 1 << 20)
+    seed = _args.integer(seed, "generate: seed", 0, (1 << 64) - 1)
+    if isinstance(cells, bool) or not isinstance(cells, numbers.Real):
+        raise TypeError("generate: cells must be a number, not %r" % (cells,))
+    if not (0 <= cells <= 1e12) or cells != math.floor(cells):
+        raise HoctError("generate: cells must be a positive whole number, got %r" % (cells,))
+    return _hoct.generate(name, degree, int(cells), seed, float(frequency), float(plateau),
+                          float(scale), float(offset))
 
 
 dataset_names = _hoct.dataset_names
@@ -96,23 +127,12 @@ dataset_names = _hoct.dataset_names
 def from_meshio(mesh, scalar=None):
     """A mesh from a meshio.Mesh (its triangle blocks, VTK node order; point data `scalar` or the
     first)."""
-    import numpy as np
-
     blocks = [b for b in mesh.cells if b.type.startswith("triangle")]
     if len(blocks) != 1:
         raise HoctError("from_meshio: expected exactly one block of triangles, got %d" % len(blocks))
     name = scalar or next(iter(mesh.point_data))
-    return _hoct.from_arrays(np.asarray(mesh.points, dtype=float), np.asarray(blocks[0].data),
-                             np.asarray(mesh.point_data[name], dtype=float))
-
-
-def _spec(simplify):
-    """A threshold as the library parses it: a number (absolute) or a text such as "0.5%"."""
-    if simplify is None:
-        return ""
-    if isinstance(simplify, bool):
-        raise HoctError("contour_tree: simplify must be a number or a text such as '0.5%'")
-    return simplify if isinstance(simplify, str) else repr(float(simplify))
+    return _from_arrays(mesh.points, blocks[0].data, mesh.point_data[name], None, None,
+                        "from_meshio")
 
 
 def contour_tree(mesh, simplify=None, threads=None, method="exact", refine=4, keep_flat=False,
@@ -127,12 +147,18 @@ def contour_tree(mesh, simplify=None, threads=None, method="exact", refine=4, ke
     keep_flat  keep the nodes and zero-length arcs of plateaus (`--keep-flat`)
     augmented  keep the regular nodes (`--augmented`; no simplification then)
     force      compute what is well defined on a domain that is not one disk or one sphere
-               (`--force`); without it such a domain raises HoctError"""
-    if threads is not None and (isinstance(threads, bool) or not isinstance(threads, int)
-                                or threads < 1):
-        raise HoctError("contour_tree: threads must be a positive integer, got %r" % (threads,))
-    return _hoct.contour_tree(mesh, method, int(refine), int(threads or 0), bool(keep_flat),
-                              bool(force), bool(augmented), _spec(simplify))
+               (`--force`); without it such a domain raises HoctError
+
+    The arguments follow the flags' rules: simplify a finite number >= 0 or "N%" with N such a
+    number (nan, -1, "-5%" are refused), refine an integer 1..1024, threads 1..1024, the
+    switches True or False."""
+    what = "contour_tree"
+    return _hoct.contour_tree(mesh, _args.text(method, what + ": method"),
+                              _args.integer(refine, what + ": refine", 1, _args.MAX_REFINE),
+                              _args.threads(threads, what), _args.flag(keep_flat, what + ": keep_flat"),
+                              _args.flag(force, what + ": force"),
+                              _args.flag(augmented, what + ": augmented"),
+                              _args.threshold(simplify, what + ": simplify"))
 
 
 def _to_networkx(tree):
@@ -147,7 +173,44 @@ def _to_networkx(tree):
 
 
 Tree.to_networkx = _to_networkx
-_native_simplify_by = Tree.simplify_by
-Tree.simplify_by = lambda self, spec: _native_simplify_by(self, _spec(spec))
-Tree.simplify_by.__doc__ = ("The tree simplified by a persistence threshold: a number, or a "
-                            "percentage of the value range such as '0.5%'.")
+_native = {name: getattr(Tree, name) for name in ("simplify", "simplify_by", "write_json",
+                                                  "write_vtp", "write_svg")}
+
+
+def _simplify(self, threshold):
+    """The tree simplified by an absolute persistence threshold: a finite number >= 0 (nan, inf
+    and negatives are refused, as by `--simplify`)."""
+    if isinstance(threshold, bool) or not isinstance(threshold, numbers.Real):
+        raise TypeError("simplify: the threshold must be a number, not %s (%r); simplify_by "
+                        "takes a text such as '0.5%%'" % (type(threshold).__name__, threshold))
+    return _native["simplify"](self, float(threshold))
+
+
+def _simplify_by(self, spec):
+    """The tree simplified by a persistence threshold: a finite number >= 0, or a percentage of
+    the value range such as '0.5%' (as `--simplify`)."""
+    return _native["simplify_by"](self, _args.threshold(spec, "simplify_by"))
+
+
+def _write_json(self, path, timings=True):
+    """Write the tree as `hoct tree --json` does (atomically); path: str, bytes or PathLike."""
+    return _native["write_json"](self, _args.path(path, "write_json: path"),
+                                 _args.flag(timings, "write_json: timings"))
+
+
+def _write_vtp(self, path):
+    """Write critical points and arcs as `hoct tree --vtp` does (atomically)."""
+    return _native["write_vtp"](self, _args.path(path, "write_vtp: path"))
+
+
+def _write_svg(self, path, title=""):
+    """Draw the tree as `hoct tree --svg` does (atomically)."""
+    return _native["write_svg"](self, _args.path(path, "write_svg: path"),
+                                _args.text(title, "write_svg: title"))
+
+
+Tree.simplify = _simplify
+Tree.simplify_by = _simplify_by
+Tree.write_json = _write_json
+Tree.write_vtp = _write_vtp
+Tree.write_svg = _write_svg
