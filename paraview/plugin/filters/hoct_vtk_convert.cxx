@@ -3,6 +3,7 @@
 #include "io/vtk_cells.hpp"
 #include "util/error.hpp"
 
+#include <vtkAbstractArray.h>
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
 #include <vtkDataArray.h>
@@ -54,7 +55,54 @@ vtkNew<vtkCellArray> make_verts(std::size_t count) {
   return v;
 }
 
+// One of VTK's bookkeeping arrays, never a field: vtkGhostType, vtkOriginalPointIds, ...
+bool bookkeeping(vtkPointData *pd, vtkDataArray *a) {
+  const char *name = a->GetName();
+  return (name && std::string(name).rfind("vtk", 0) == 0) || a == pd->GetGlobalIds() ||
+         a == pd->GetPedigreeIds();
+}
+
+// "a, b (3 components), c" for the messages.
+std::string point_arrays(vtkPointData *pd) {
+  std::string list;
+  for (int i = 0; i < pd->GetNumberOfArrays(); ++i) {
+    vtkAbstractArray *a = pd->GetAbstractArray(i);
+    list += (list.empty() ? "" : ", ") + std::string(a->GetName() ? a->GetName() : "(unnamed)");
+    if (a->GetNumberOfComponents() != 1)
+      list += " (" + std::to_string(a->GetNumberOfComponents()) + " components)";
+  }
+  return list.empty() ? "the grid has no point data" : "point arrays: " + list;
+}
+
 } // namespace
+
+vtkDataArray *point_scalar(vtkUnstructuredGrid *grid, vtkDataArray *selected,
+                           const std::string &requested, bool *by_default) {
+  *by_default = false;
+  if (selected)
+    return selected;
+  vtkPointData *pd = grid->GetPointData();
+  if (!requested.empty())
+    fail("no point array named '" + requested + "' (" + point_arrays(pd) + ")");
+  *by_default = true;
+  vtkDataArray *active = pd->GetScalars();
+  if (active && active->GetNumberOfComponents() == 1 && !bookkeeping(pd, active))
+    return active;
+  vtkDataArray *other = nullptr;
+  for (int i = 0; i < pd->GetNumberOfArrays(); ++i) {
+    vtkDataArray *a = pd->GetArray(i); // null for string arrays
+    if (!a || a->GetNumberOfComponents() != 1 || bookkeeping(pd, a))
+      continue;
+    if (a->GetDataType() == VTK_FLOAT || a->GetDataType() == VTK_DOUBLE)
+      return a;
+    if (!other)
+      other = a;
+  }
+  if (!other)
+    fail("no point scalar array selected and no one-component point array to default to (" +
+         point_arrays(pd) + ")");
+  return other;
+}
 
 MeshInput mesh_input_from_grid(vtkUnstructuredGrid *grid, vtkDataArray *scalar) {
   const vtkIdType np = grid->GetNumberOfPoints(), nc = grid->GetNumberOfCells();

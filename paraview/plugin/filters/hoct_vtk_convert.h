@@ -6,11 +6,26 @@
 #include "io/tree_polydata.hpp"
 #include "mesh/mesh_input.hpp"
 
+#include <string>
+
 class vtkDataArray;
 class vtkPolyData;
 class vtkUnstructuredGrid;
 
 namespace hoct::paraview {
+
+// The point scalar to compute the tree of. `selected` is the filter's input array (null when the
+// property names no array, names one the grid lacks, or asks for active scalars there are none
+// of); `requested` the name the property gives ("" for none). A named array that is missing is an
+// error (hoct::InputError listing the point arrays). With no name, the default, the same rule in
+// the GUI (the property's domain) and in scripts: the active point scalars if they have one
+// component, else the first one-component floating-point point array, else the first
+// one-component point array of another type; never one of VTK's bookkeeping arrays (a name
+// starting with "vtk": vtkGhostType, vtkOriginalPointIds, vtkValidPointMask, ...) nor the
+// GlobalIds / PedigreeIds attribute. None of those: an InputError. *by_default says whether the
+// default was taken.
+vtkDataArray *point_scalar(vtkUnstructuredGrid *grid, vtkDataArray *selected,
+                           const std::string &requested, bool *by_default);
 
 // The grid's points, its triangle cells (vertex and line cells are skipped) and the values of
 // `scalar` (one component, one tuple per point). Throws hoct::InputError naming the cell or point

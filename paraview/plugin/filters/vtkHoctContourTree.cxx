@@ -13,12 +13,14 @@
 #include <vtkFieldData.h>
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
+#include <vtkMultiProcessController.h>
 #include <vtkObjectFactory.h>
 #include <vtkPolyData.h>
 #include <vtkStringArray.h>
 #include <vtkUnstructuredGrid.h>
 
 #include <exception>
+#include <string>
 #include <utility>
 
 vtkStandardNewMacro(vtkHoctContourTree);
@@ -56,6 +58,57 @@ void add_stats(const hoct::TreeResult &tree, vtkPolyData *out) {
   }
 }
 
+// The string `value` as the one-value field-data array `name` of out.
+void add_string(vtkPolyData *out, const char *name, const std::string &value) {
+  vtkNew<vtkStringArray> a;
+  a->SetName(name);
+  a->InsertNextValue(value);
+  out->GetFieldData()->AddArray(a);
+}
+
+// How the input is spread over the processes (pvbatch, pvserver under MPI): this process's rank,
+// the cells of all pieces and how many pieces have cells. Collective: every process of the global
+// controller runs the filter's RequestData (ParaView executes a pipeline on all of them), so it
+// is the first thing RequestData does, before anything that can fail. One process (pvpython,
+// the GUI's built-in server, no controller): the local piece alone.
+struct Pieces {
+  int rank = 0;
+  vtkIdType cells = 0, with_cells = 0;
+};
+Pieces pieces(vtkIdType local_cells) {
+  Pieces p{0, local_cells, local_cells > 0 ? 1 : 0};
+  vtkMultiProcessController *c = vtkMultiProcessController::GetGlobalController();
+  if (!c || c->GetNumberOfProcesses() < 2)
+    return p;
+  p.rank = c->GetLocalProcessId();
+  const vtkIdType send[2] = {p.cells, p.with_cells};
+  vtkIdType sum[2] = {0, 0};
+  c->AllReduce(send, sum, 2, vtkCommunicator::SUM_OP);
+  p.cells = sum[0];
+  p.with_cells = sum[1];
+  return p;
+}
+
+// The outputs of a piece without cells: empty, with the arrays of a tree (so that appending the
+// pieces, as ParaView does to fetch or render them, keeps the other pieces' arrays).
+void empty_outputs(bool simplified_output, vtkPolyData *points, vtkPolyData *arcs,
+                   vtkPolyData *simplified) {
+  const hoct::TreePolyData none;
+  hoct::paraview::critical_points_polydata(none, points);
+  hoct::paraview::arcs_polydata(none, /*with_nodes=*/false, arcs);
+  if (simplified_output)
+    hoct::paraview::arcs_polydata(none, /*with_nodes=*/true, simplified);
+}
+
+// The array name the filter's input array 0 asks for ("" when none: the property is unset, or
+// the request is for the active scalars).
+std::string requested_name(vtkInformation *info) {
+  const char *name = info && info->Has(vtkDataObject::FIELD_NAME())
+                         ? info->Get(vtkDataObject::FIELD_NAME())
+                         : nullptr;
+  return name ? name : "";
+}
+
 } // namespace
 
 int vtkHoctContourTree::RequestData(vtkInformation *, vtkInformationVector **inputVector,
@@ -64,9 +117,28 @@ int vtkHoctContourTree::RequestData(vtkInformation *, vtkInformationVector **inp
   vtkPolyData *points = vtkPolyData::GetData(outputVector, 0);
   vtkPolyData *arcs = vtkPolyData::GetData(outputVector, 1);
   vtkPolyData *simplified = vtkPolyData::GetData(outputVector, 2);
+  const Pieces all = pieces(grid ? grid->GetNumberOfCells() : 0);
+  if (all.with_cells > 1 && !this->WarnedPerPiece && all.rank == 0) {
+    this->WarnedPerPiece = true;
+    vtkWarningMacro("Higher-Order Contour Tree: the input is split into "
+                    << all.with_cells
+                    << " pieces with cells over the processes; each process computes the "
+                       "tree of its own piece, not of the whole domain (distributed trees are "
+                       "not supported yet). For the whole domain's tree, run on one process "
+                       "or gather the cells onto one.");
+  }
   if (!grid || !points || !arcs || !simplified) {
     vtkErrorMacro("Higher-Order Contour Tree: missing input or output");
     return 0;
+  }
+  const bool simplified_output = this->PersistenceThreshold > 0 && !this->Augmented;
+  if (grid->GetNumberOfCells() == 0) {
+    // An empty piece (a process the input's cells are not on, an empty upstream selection):
+    // empty outputs, no error.
+    if (all.cells == 0 && all.rank == 0)
+      vtkWarningMacro("Higher-Order Contour Tree: the input has no cells; the outputs are empty");
+    empty_outputs(simplified_output, points, arcs, simplified);
+    return 1;
   }
   try {
     // The properties as a library request: the same call as `hoct tree` (pipeline/compute_tree).
@@ -80,14 +152,20 @@ int vtkHoctContourTree::RequestData(vtkInformation *, vtkInformationVector **inp
     rq.force = this->Force;
     rq.threads = this->Threads;
     rq.arcs = hoct::ArcGeometry::AllPaths;
-    if (this->PersistenceThreshold > 0 && !this->Augmented)
+    if (simplified_output)
       rq.simplify =
           hoct::Threshold{this->PersistenceThreshold, this->ThresholdMode == PERCENT_OF_RANGE};
     else if (this->PersistenceThreshold > 0)
       vtkWarningMacro("Higher-Order Contour Tree: simplification works on the reduced tree; "
                       "turn Augmented off to get output 2");
-    hoct::MeshInput input =
-        hoct::paraview::mesh_input_from_grid(grid, this->GetInputArrayToProcess(0, inputVector));
+    bool by_default = false;
+    vtkDataArray *scalar = hoct::paraview::point_scalar(
+        grid, this->GetInputArrayToProcess(0, inputVector),
+        requested_name(this->GetInputArrayInformation(0)), &by_default);
+    const std::string scalar_name = scalar->GetName() ? scalar->GetName() : "";
+    vtkDebugMacro("Higher-Order Contour Tree: the tree of point array '"
+                  << scalar_name << "'" << (by_default ? " (the default: none was named)" : ""));
+    hoct::MeshInput input = hoct::paraview::mesh_input_from_grid(grid, scalar);
     this->UpdateProgress(0.1);
     // Only the linear method reads the input's nodes again; else the build consumes them.
     const hoct::MeshBuildOptions build{.throw_on_error = false,
@@ -103,10 +181,13 @@ int vtkHoctContourTree::RequestData(vtkInformation *, vtkInformationVector **inp
     hoct::paraview::critical_points_polydata(layout, points);
     hoct::paraview::arcs_polydata(layout, /*with_nodes=*/false, arcs);
     add_stats(out.tree, points);
+    add_string(points, "Scalar", scalar_name);
+    add_string(arcs, "Scalar", scalar_name);
     if (out.simplified) {
       hoct::paraview::arcs_polydata(hoct::tree_polydata(*out.simplified), /*with_nodes=*/true,
                                     simplified);
       add_stats(*out.simplified, simplified);
+      add_string(simplified, "Scalar", scalar_name);
     }
   } catch (const std::exception &e) {
     points->Initialize();

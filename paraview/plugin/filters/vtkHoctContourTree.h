@@ -71,6 +71,7 @@ protected:
   bool KeepFlat = false;
   bool Force = false;
   int Threads = 0;
+  bool WarnedPerPiece = false; // the per-piece warning under MPI is given once
 
 private:
   vtkHoctContourTree(const vtkHoctContourTree &) = delete;
