@@ -29,6 +29,9 @@ public:
   // Component i (0 = x, 1 = y, 2 = z) of the map as a Bernstein polynomial.
   BernsteinTriangle component(int64_t c, int i) const;
   Vec3 position(int64_t c, double u, double v) const;
+  // The control points of cell c's map (lattice_size(degree(c)) of them, canonical lattice
+  // order).
+  const Vec3 *control_points(int64_t c) const { return &maps_->coef[maps_->offset[c]]; }
   // d phi / du and d phi / dv.
   std::array<Vec3, 2> jacobian(int64_t c, double u, double v) const;
   // The control points of d phi / du and d phi / dv (degree(c) - 1, canonical lattice order,

@@ -46,6 +46,7 @@ Mesh build(const MeshInput &input, MeshInput *consumed, const MeshBuildOptions &
     m.field = Field::build(input, m.topology, m.problems, options.threads);
     step_done(times.field);
     check_geometry(m.geometry, m.topology, m.problems, options.threads);
+    check_edge_geometry(m.geometry, m.topology, m.problems, options.threads);
     step_done(times.geometry_checks);
     m.complete = true;
   }
@@ -97,6 +98,7 @@ Mesh build_mesh_from_samples(const MeshInput &input, const std::vector<CellSampl
       m.field = Field::build_from_polynomials(m.topology, polys, m.problems);
       m.geometry = Geometry::build(input, options.threads);
       check_geometry(m.geometry, m.topology, m.problems, options.threads);
+      check_edge_geometry(m.geometry, m.topology, m.problems, options.threads);
       m.complete = true;
     }
   }

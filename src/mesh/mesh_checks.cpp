@@ -342,7 +342,76 @@ void check_surface_cell(const Geometry &g, int64_t c, double area_tol, ProblemLo
     problems.add(Problem::FoldedCell, cell_str(c) + ": its surface normal flips inside the cell");
 }
 
+// The control points of cell c's map along its local edge k, from the edge's lo to its hi
+// vertex, raised to degree `to` (into out: to + 1 points).
+void edge_control_points(const Geometry &g, const Topology &topo, int64_t c, int k, int to,
+                         Vec3 *out) {
+  const int d = g.degree(c);
+  const Vec3 *cp = g.control_points(c);
+  const bool reversed = topo.edge_reversed(c, k);
+  for (int t = 0; t <= d; ++t)
+    out[reversed ? d - t : t] = cp[edge_lattice_index(d, k, t)];
+  for (int n = d; n < to; ++n) { // degree n -> n + 1, in place from the end
+    out[n + 1] = out[n];
+    for (int i = n; i >= 1; --i) {
+      const double a = static_cast<double>(i) / (n + 1);
+      for (int j = 0; j < 3; ++j)
+        out[i][j] = a * out[i - 1][j] + (1 - a) * out[i][j];
+    }
+  }
+}
+
 } // namespace
+
+void check_edge_geometry(const Geometry &g, const Topology &topo, ProblemLog &problems,
+                         int threads) {
+  const int64_t ne = topo.num_edges();
+  const std::array<Vec3, 2> &box = g.bounds();
+  double magnitude = 0;
+  for (const Vec3 &corner : box)
+    for (int j = 0; j < 3; ++j)
+      magnitude = std::max(magnitude, std::abs(corner[j]));
+  const double tol = 1e-6 * (g.extent() + magnitude);
+  const int64_t blocks = problem_blocks(ne);
+  BlockProblems found(blocks);
+  parallel_chunks(
+      ne, blocks, threads_for(ne, threads, 65536), [&](int64_t b, int64_t begin, int64_t end, int) {
+        Vec3 first[kMaxDegree + 1], other[kMaxDegree + 1];
+        for (int64_t e = begin; e < end; ++e) {
+          const int n = topo.edge_cell_count(e);
+          if (n < 2)
+            continue;
+          const int64_t *cells = topo.edge_cells_begin(e);
+          int to = 1;
+          for (int i = 0; i < n; ++i)
+            to = std::max(to, g.degree(cells[i]));
+          if (to == 1)
+            continue; // straight segments between the same two vertices
+          edge_control_points(g, topo, cells[0], topo.local_edge(cells[0], e), to, first);
+          for (int i = 1; i < n; ++i) {
+            edge_control_points(g, topo, cells[i], topo.local_edge(cells[i], e), to, other);
+            double gap = 0;
+            for (int t = 0; t <= to; ++t)
+              for (int j = 0; j < 3; ++j)
+                gap = std::max(gap, std::abs(other[t][j] - first[t][j]));
+            if (!(gap <= tol)) {
+              const auto &v = topo.edge_vertices(e);
+              std::ostringstream m;
+              m << "cells " << cells[0] << " (degree " << g.degree(cells[0]) << " map) and "
+                << cells[i] << " (degree " << g.degree(cells[i])
+                << " map) do not meet along their shared edge (points " << topo.vertex_point(v[0])
+                << "-" << topo.vertex_point(v[1]) << "): their edge curves differ by up to " << gap
+                << " (a curved edge next to a straight one, or edge nodes at "
+                   "different positions: the mesh has a gap there)";
+              found[b].add(Problem::GeometricGap, m.str());
+            }
+          }
+        }
+      });
+  found.append_to(problems);
+}
+
+namespace {} // namespace
 
 void check_geometry(const Geometry &g, const Topology &topo, ProblemLog &problems, int threads) {
   const int64_t nc = g.num_cells();

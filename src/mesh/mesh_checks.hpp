@@ -32,6 +32,14 @@ void check_duplicate_vertices(const MeshInput &input, const Topology &topology,
                               ProblemLog &problems, int threads = 1,
                               const std::array<Vec3, 2> *box = nullptr);
 
+// Gaps between cells: the cells of an edge must trace the same curve along it (compared as
+// Bernstein control points, raised to the higher degree and oriented alike, within 1e-6 of the
+// bounding-box diagonal plus the coordinates' magnitude: float32 files pass). A curved P2 edge
+// next to a straight P1 one, or the shared edge's nodes of two cells at different positions,
+// is a GeometricGap. Edges whose cells are all straight-sided are the same segment and skipped.
+void check_edge_geometry(const Geometry &geometry, const Topology &topology, ProblemLog &problems,
+                         int threads = 1);
+
 // Degenerate (zero-area) and inverted cells. Planar meshes: the Jacobian determinant of each
 // cell's map, in Bernstein form (certified where its coefficients share a sign, else sampled), must
 // be bounded away from zero and agree in sign with a consistent orientation of the mesh. Surfaces:

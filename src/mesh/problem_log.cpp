@@ -16,6 +16,7 @@ const ProblemInfo &problem_info(Problem p) {
       {"discontinuous field at a vertex", Severity::Error, false},
       {"duplicate vertices", Severity::Error, true},
       {"empty mesh", Severity::Error, false},
+      {"gap between cells (their shared edge differs)", Severity::Error, true},
       {"inconsistent arrays", Severity::Error, false},
       {"inconsistent nodes", Severity::Error, false},
       {"inverted cell", Severity::Error, true},

@@ -23,6 +23,7 @@ enum class Problem : uint8_t {
   DiscontinuousVertex,
   DuplicateVertices,
   EmptyMesh,
+  GeometricGap,
   InconsistentArrays,
   InconsistentNodes,
   InvertedCell,
@@ -43,7 +44,8 @@ struct ProblemInfo {
   Severity severity;
   // A contour tree is still well defined past it (hoct tree --force): the algorithm works in
   // each cell's reference triangle, so inverted or folded cells do not change the field's tree,
-  // and unmerged duplicate vertices only cut the surface along cracks.
+  // unmerged duplicate vertices only cut the surface along cracks, and a gap between cells
+  // (a curved edge next to a straight one) leaves the cells' shared edge one edge of the field.
   bool forceable;
 };
 const ProblemInfo &problem_info(Problem p);

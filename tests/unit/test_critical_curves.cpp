@@ -198,8 +198,9 @@ TEST(CriticalCurves, PairsWithinTheSlackAreFlagged) {
         (t.nodes[p.birth].fallback || t.nodes[p.death].fallback) && p.persistence() <= 2 * slack;
     expected += near;
     flagged += t.uncertain(p);
-    if (near)
+    if (near) {
       EXPECT_TRUE(t.uncertain(p));
+    }
   }
   EXPECT_GT(expected, 0);
   EXPECT_EQ(*t.stats.pairs_within_fallback_slack, expected);

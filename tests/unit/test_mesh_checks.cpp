@@ -206,6 +206,52 @@ TEST(MeshChecks, InvertedAndZeroAreaCells) {
   EXPECT_FALSE(cw.problems.has_errors()) << cw.problems.summary();
 }
 
+// A P1 cell next to a P2 cell across the square's diagonal (issue 27, item 13): where the P2
+// cell's midpoint of the shared edge leaves the straight line, the two cells do not meet (a
+// geometric gap) and the mesh check says so; on the line, or with float32-rounded coordinates
+// far from the origin, there is none. The field (x + 2y at the nodes, the midpoint's value the P1
+// cell's) is continuous either way.
+MeshInput p1_next_to_p2(Vec3 diagonal_midpoint, Vec3 shift = {0, 0, 0}, bool round = false) {
+  MeshInput m;
+  m.points = {{0, 0, 0},         {1, 0, 0},   {1, 1, 0},  {0, 1, 0},
+              diagonal_midpoint, {0.5, 1, 0}, {0, 0.5, 0}};
+  for (auto &p : m.points)
+    for (int j = 0; j < 3; ++j)
+      p[j] = round ? static_cast<double>(static_cast<float>(p[j] + shift[j])) : p[j] + shift[j];
+  for (const auto &p : m.points)
+    m.values.push_back(p[0] + 2 * p[1]);
+  // The midpoint's value is the P1 cell's there, wherever the node sits.
+  m.values[4] = (m.values[0] + m.values[2]) / 2;
+  const int64_t a[3] = {0, 1, 2};
+  // Lattice order: corner 0, edge 0's midpoint, corner 1, edge 2's midpoint, edge 1's, corner 2.
+  const int64_t b[6] = {0, 4, 2, 6, 5, 3};
+  m.add_cell(1, a);
+  m.add_cell(2, b);
+  m.source = "gap";
+  return m;
+}
+
+TEST(MeshChecks, CurvedEdgeNextToStraightEdgeIsAGap) {
+  const Mesh gap = build_mesh(p1_next_to_p2({0.45, 0.55, 0}), {false});
+  EXPECT_EQ(gap.problems.count(Problem::GeometricGap), 1) << gap.problems.summary();
+  EXPECT_TRUE(message_contains(gap, Problem::GeometricGap,
+                               "cells 0 (degree 1 map) and 1 (degree 2 map) do not meet along "
+                               "their shared edge (points 0-2): their edge curves differ by up to"))
+      << gap.problems.summary();
+  EXPECT_EQ(gap.problems.count(Problem::DiscontinuousEdge), 0) << gap.problems.summary();
+  EXPECT_TRUE(problem_info(Problem::GeometricGap).forceable);
+  EXPECT_THROW(build_mesh(p1_next_to_p2({0.45, 0.55, 0})), Error);
+  // Barely off the line (1e-4 of the diagonal): still a gap.
+  const Mesh small = build_mesh(p1_next_to_p2({0.5, 0.5 + 1.4e-4, 0}), {false});
+  EXPECT_EQ(small.problems.count(Problem::GeometricGap), 1) << small.problems.summary();
+  // On the straight line: no gap.
+  const Mesh straight = build_mesh(p1_next_to_p2({0.5, 0.5, 0}), {false});
+  EXPECT_FALSE(straight.problems.has_errors()) << straight.problems.summary();
+  // float32 coordinates around (1e4, 1e4): rounding is no gap.
+  const Mesh rounded = build_mesh(p1_next_to_p2({0.5, 0.5, 0}, {1e4, 1e4, 0}, true), {false});
+  EXPECT_FALSE(rounded.problems.has_errors()) << rounded.problems.summary();
+}
+
 TEST(MeshChecks, BadInputData) {
   std::mt19937_64 rng(3);
   std::vector<Vec3> v;
