@@ -74,6 +74,16 @@ public:
 
 private:
   [[noreturn]] void fail(const std::string &what) const { throw InputError(path_ + ": " + what); }
+  // "line N" of element n in the file (from its offset in the parsed text).
+  std::string line_of(const pugi::xml_node &n) const;
+  // What XML parsers may let pass and VTK's files never have: a second root element, an
+  // attribute given twice (not well-formed XML; pugixml keeps both and the first would win), a
+  // second <UnstructuredGrid>, or a second <Points>, <PointData> or <Cells> in a piece.
+  void check_structure() const;
+  // The only child `name` of parent (null if none); a second one is refused.
+  pugi::xml_node single_child(const pugi::xml_node &parent, const char *name) const;
+  // The DataArray of parent named `name` (null if none); a second one of that name is refused.
+  pugi::xml_node named_array(const pugi::xml_node &parent, const std::string &name) const;
   void load();
   void load_whole();
   bool open_streamed();
@@ -116,6 +126,7 @@ private:
   std::string_view appended_;    // appended payload (after '_')
   bool appended_base64_ = false;
   pugi::xml_document doc_;
+  const char *xml_text_ = nullptr; // the text doc_ was parsed from (in place)
   int header_size_ = 4;
   bool big_endian_ = false, compressed_ = false;
 };
@@ -272,13 +283,74 @@ void VtuFile::load_whole() {
     xml = xml_.data();
     xml_size = xml_.size();
   }
+  xml_text_ = xml;
   const pugi::xml_parse_result r = doc_.load_buffer_inplace(xml, xml_size);
   if (!r)
     fail(std::string("not valid XML: ") + r.description() + " at byte " + std::to_string(r.offset));
 }
 
+std::string VtuFile::line_of(const pugi::xml_node &n) const {
+  const std::ptrdiff_t at = n.offset_debug();
+  if (at < 0 || xml_text_ == nullptr)
+    return "<" + std::string(n.name()) + ">";
+  return "<" + std::string(n.name()) + "> at line " +
+         std::to_string(1 + std::count(xml_text_, xml_text_ + at, '\n'));
+}
+
+void VtuFile::check_structure() const {
+  pugi::xml_node first;
+  for (const pugi::xml_node n : doc_.children()) {
+    if (n.type() != pugi::node_element)
+      continue;
+    if (first)
+      fail("a second root element " + line_of(n) + " after <" + first.name() +
+           ">: an XML file has one (a VTK file's is <VTKFile>)");
+    first = n;
+  }
+  // Every element's attributes, once each (depth first; the elements are few: the arrays' data
+  // are text, not elements).
+  std::vector<pugi::xml_node> todo(1, first);
+  while (!todo.empty()) {
+    const pugi::xml_node e = todo.back();
+    todo.pop_back();
+    if (!e)
+      continue;
+    for (pugi::xml_attribute a = e.first_attribute(); a; a = a.next_attribute())
+      for (pugi::xml_attribute b = a.next_attribute(); b; b = b.next_attribute())
+        if (std::strcmp(a.name(), b.name()) == 0)
+          fail(line_of(e) + " has the attribute " + a.name() + " twice ('" + a.value() + "' and '" +
+               b.value() + "'): not well-formed XML (an attribute is given once)");
+    for (const pugi::xml_node c : e.children())
+      if (c.type() == pugi::node_element)
+        todo.push_back(c);
+  }
+}
+
+pugi::xml_node VtuFile::single_child(const pugi::xml_node &parent, const char *name) const {
+  const pugi::xml_node c = parent.child(name);
+  if (c)
+    for (pugi::xml_node d = c.next_sibling(name); d; d = d.next_sibling(name))
+      fail("a second " + line_of(d) + " in " + line_of(parent) + " (the first is " + line_of(c) +
+           "): which one holds the data is ambiguous");
+  return c;
+}
+
+pugi::xml_node VtuFile::named_array(const pugi::xml_node &parent, const std::string &name) const {
+  pugi::xml_node found;
+  for (auto a : parent.children("DataArray")) {
+    if (a.attribute("Name").as_string() != name)
+      continue;
+    if (found)
+      fail("two DataArrays named '" + name + "' in " + line_of(parent) + " (" + line_of(found) +
+           " and " + line_of(a) + "): which one to read is ambiguous");
+    found = a;
+  }
+  return found;
+}
+
 void VtuFile::load() {
   if (streamed_) { // the XML around the payload is in xml_ already
+    xml_text_ = xml_.data();
     const pugi::xml_parse_result r = doc_.load_buffer_inplace(xml_.data(), xml_.size());
     if (!r)
       fail(std::string("not valid XML: ") + r.description() + " at byte " +
@@ -286,6 +358,7 @@ void VtuFile::load() {
   } else {
     load_whole();
   }
+  check_structure();
   const pugi::xml_node root = doc_.child("VTKFile");
   if (!root)
     fail("not a VTK XML file (no <VTKFile> element)");
@@ -738,13 +811,6 @@ PooledVector<int64_t> VtuFile::read_ints(const pugi::xml_node &a, std::size_t ex
   return read_array<int64_t>(a, expected);
 }
 
-pugi::xml_node named_array(const pugi::xml_node &parent, const char *name) {
-  for (auto a : parent.children("DataArray"))
-    if (std::string(a.attribute("Name").as_string()) == name)
-      return a;
-  return {};
-}
-
 // Count of values of a DataArray whose length is known only from its own data (offsets).
 long long parse_count(const pugi::xml_attribute &a) {
   if (!a)
@@ -759,13 +825,13 @@ long long parse_count(const pugi::xml_attribute &a) {
 
 MeshInput VtuFile::read() {
   load();
-  const pugi::xml_node grid = doc_.child("VTKFile").child("UnstructuredGrid");
+  const pugi::xml_node grid = single_child(doc_.child("VTKFile"), "UnstructuredGrid");
   if (!grid)
     fail("no <UnstructuredGrid> element");
   MeshInput m;
   m.source = path_;
   m.cell_offsets.assign(1, 0);
-  int piece_index = 0;
+  int piece_index = 0, read_pieces = 0;
   long long skipped = 0;
   for (auto piece : grid.children("Piece")) {
     const std::string where = "piece " + std::to_string(piece_index);
@@ -773,6 +839,10 @@ MeshInput VtuFile::read() {
     const long long nc = parse_count(piece.attribute("NumberOfCells"));
     if (np < 0 || nc < 0)
       fail(where + ": missing or bad NumberOfPoints / NumberOfCells");
+    if (np == 0 && nc == 0) { // an empty piece (parallel writers' idle ranks): nothing to read
+      ++piece_index;
+      continue;
+    }
     // Guard counts against the file size before allocating (a value needs >= 1 byte).
     if (static_cast<unsigned long long>(np) > file_size_ ||
         static_cast<unsigned long long>(nc) > file_size_)
@@ -782,7 +852,7 @@ MeshInput VtuFile::read() {
                  m.cell_nodes.size() + 3 * static_cast<uint64_t>(nc), path_ + ": " + where);
     const int64_t base = static_cast<int64_t>(m.points.size());
     // Points.
-    const pugi::xml_node pa = piece.child("Points").child("DataArray");
+    const pugi::xml_node pa = single_child(single_child(piece, "Points"), "DataArray");
     if (!pa)
       fail(where + ": no <Points> DataArray");
     const int pc = pa.attribute("NumberOfComponents").as_int(1);
@@ -802,7 +872,7 @@ MeshInput VtuFile::read() {
         fail(where + ": point " + std::to_string(i) + " has a NaN or infinite coordinate");
     }
     // The scalar.
-    const pugi::xml_node pd = piece.child("PointData");
+    const pugi::xml_node pd = single_child(piece, "PointData");
     pugi::xml_node sa;
     std::string available;
     for (auto a : pd.children("DataArray")) {
@@ -827,7 +897,8 @@ MeshInput VtuFile::read() {
            "' has " + sa.attribute("NumberOfComponents").as_string() +
            " components; a scalar field needs 1");
     const std::string field = sa.attribute("Name").as_string();
-    if (piece_index == 0)
+    named_array(pd, field); // refuses a second array of that name
+    if (read_pieces == 0)
       m.field_name = field;
     else if (field != m.field_name)
       fail(where + ": scalar '" + field + "' differs from the first piece's '" + m.field_name +
@@ -841,7 +912,7 @@ MeshInput VtuFile::read() {
     else
       m.values.insert(m.values.end(), vals.begin(), vals.end());
     // Cells.
-    const pugi::xml_node cells = piece.child("Cells");
+    const pugi::xml_node cells = single_child(piece, "Cells");
     const pugi::xml_node ca = named_array(cells, "connectivity"),
                          oa = named_array(cells, "offsets"), ta = named_array(cells, "types");
     if (!ca || !oa || !ta)
@@ -894,6 +965,7 @@ MeshInput VtuFile::read() {
     }
     m.cell_nodes.resize(start + static_cast<std::size_t>(write));
     ++piece_index;
+    ++read_pieces;
   }
   if (piece_index == 0)
     fail("no <Piece> in <UnstructuredGrid>");

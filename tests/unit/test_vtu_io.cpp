@@ -174,6 +174,64 @@ TEST(VtuReader, ValidFixtureReads) {
   EXPECT_EQ(first, (std::vector<int64_t>{0, 4, 1, 6, 5, 2}));
 }
 
+// The text of the fixture with `from` replaced by `to` (which must occur).
+std::string edited(const std::string &from, const std::string &to) {
+  std::string s = Fixture().text();
+  const std::size_t at = s.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  return at == std::string::npos ? s : s.replace(at, from.size(), to);
+}
+
+// What XML parsers let pass and would make one of two readings win silently (issue 27, item
+// 13): refused with the element and its line. Empty pieces are read as nothing.
+TEST(VtuReader, AmbiguousXmlIsRefused) {
+  TempDir tmp;
+  const std::string array_t = "<DataArray type=\"Float64\" Name=\"T\" format=\"ascii\">";
+  expect_error(tmp, edited("Name=\"T\"", "Name=\"T\" Name=\"U\""),
+               "<DataArray> at line 6 has the attribute Name twice ('T' and 'U'): not "
+               "well-formed XML");
+  expect_error(tmp, edited("NumberOfCells=\"2\"", "NumberOfCells=\"2\" NumberOfCells=\"1\""),
+               "<Piece> at line 4 has the attribute NumberOfCells twice ('2' and '1')");
+  expect_error(tmp, Fixture().text() + "<VTKFile type=\"UnstructuredGrid\"/>\n",
+               "a second root element <VTKFile> at line 19 after <VTKFile>");
+  expect_error(tmp, edited(array_t, array_t + "9 9 9 9 9 9 9 9 9</DataArray>\n" + array_t),
+               "two DataArrays named 'T' in <PointData> at line 5 (<DataArray> at line 6 and "
+               "<DataArray> at line 7)");
+  expect_error(tmp,
+               edited("<DataArray type=\"Int64\" Name=\"offsets\"",
+                      "<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">0 1 2 4 5 "
+                      "6 0 2 3 6 7 8</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\""),
+               "two DataArrays named 'connectivity' in <Cells>");
+  expect_error(tmp, edited("</Points>", "</Points>\n<Points></Points>"),
+               "a second <Points> at line 11 in <Piece> at line 4 (the first is <Points> at "
+               "line 8)");
+  expect_error(tmp,
+               edited("</Piece>\n</UnstructuredGrid>", "</Piece>\n</UnstructuredGrid>\n"
+                                                       "<UnstructuredGrid/>"),
+               "a second <UnstructuredGrid>");
+  expect_error(tmp,
+               edited("</Points>", "<DataArray type=\"Float64\" NumberOfComponents=\"3\" "
+                                   "format=\"ascii\">0 0 0</DataArray></Points>"),
+               "a second <DataArray> at line 10 in <Points> at line 8");
+  // Empty pieces (a parallel writer's idle ranks) before and after: read as nothing.
+  const std::string empty = "<Piece NumberOfPoints=\"0\" NumberOfCells=\"0\"/>\n";
+  const MeshInput m = read_vtu(
+      tmp.write("empty-pieces.vtu",
+                edited("<Piece ", empty + "<Piece NumberOfPoints=\"0\" NumberOfCells=\"0\">\n"
+                                          "</Piece>\n<Piece ")));
+  EXPECT_EQ(m.num_cells(), 2u);
+  EXPECT_EQ(m.num_points(), 9u);
+  EXPECT_EQ(m.field_name, "T");
+  const MeshInput after = read_vtu(
+      tmp.write("empty-after.vtu", edited("</UnstructuredGrid>", empty + "</UnstructuredGrid>")));
+  EXPECT_EQ(after.num_cells(), 2u);
+  expect_error(tmp,
+               "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"1.0\">\n"
+               "<UnstructuredGrid>\n" +
+                   empty + empty + "</UnstructuredGrid>\n</VTKFile>\n",
+               "the file has no cells");
+}
+
 TEST(VtuReader, MalformedFilesGiveClearErrors) {
   TempDir tmp;
   const std::string ok = Fixture().text();
