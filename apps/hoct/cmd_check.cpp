@@ -3,6 +3,7 @@
 // node values and positions, types versus degrees and versus samples of the field.
 #include "analysis/tree_check.hpp"
 #include "commands.hpp"
+#include "field_options.hpp"
 #include "io/tree_json.hpp"
 #include "load_mesh.hpp"
 #include "util/error.hpp"
@@ -15,7 +16,8 @@ namespace hoct::cli {
 namespace {
 
 struct CheckOptions {
-  std::string tree, file, scalar;
+  std::string tree, file;
+  FieldOptions field;
   bool verbose = false;
   double value_tolerance = 1e-9;
   MergeOption merge;
@@ -24,7 +26,8 @@ struct CheckOptions {
 void run_check(const CheckOptions &o) {
   const TreeResult tree = read_tree_json(o.tree);
   // Not strict: a tree computed with --force on an invalid domain can still be checked.
-  const LoadedMesh lm = load_mesh(o.file, o.scalar, /*strict=*/false, o.merge.tolerance());
+  const LoadedMesh lm =
+      load_mesh(o.file, o.field.selection(), /*strict=*/false, o.merge.tolerance());
   if (!lm.mesh.complete)
     throw Error(o.file + ": the mesh is too broken to check a tree against:\n" +
                 lm.mesh.problems.summary());
@@ -60,7 +63,7 @@ void register_check(CLI::App &app) {
   sub->add_option("tree", o->tree, "Tree file written by hoct tree --json")->required();
   sub->add_option("file", o->file, "The input mesh (.vtu, .msh) the tree was computed from")
       ->required();
-  sub->add_option("--scalar", o->scalar, "Point-data array / node-data view (default: the first)");
+  add_field_options(sub, o->field);
   sub->add_option("--value-tolerance", o->value_tolerance,
                   "Allowed |value - field| relative to the value range (default 1e-9)")
       ->check(CLI::PositiveNumber);

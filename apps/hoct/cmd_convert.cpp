@@ -1,6 +1,7 @@
 // `hoct convert INPUT -o OUTPUT.vtu`: any input hoct reads (.vtu, .msh) as VTK XML with Lagrange
 // triangles and the chosen scalar, for ParaView (paraview/render_tree.py uses it for .msh files).
 #include "commands.hpp"
+#include "field_options.hpp"
 #include "io/read_mesh.hpp"
 #include "io/vtu_writer.hpp"
 #include "output_paths.hpp"
@@ -14,18 +15,19 @@ namespace hoct::cli {
 
 void register_convert(CLI::App &app) {
   struct Options {
-    std::string input, output, scalar;
+    std::string input, output;
+    FieldOptions field;
   };
   auto o = std::make_shared<Options>();
   auto *sub = app.add_subcommand(
       "convert", "Write any input (.vtu, .msh) as VTK XML (.vtu) with Lagrange triangles");
   sub->add_option("input", o->input, "Input file (.vtu, .msh)")->required();
   sub->add_option("-o,--output", o->output, "Output file (.vtu)")->required();
-  sub->add_option("--scalar", o->scalar, "Point-data array / node-data view (default: the first)");
+  add_field_options(sub, o->field);
   sub->callback([o] {
     require_extension("-o", o->output, ".vtu", "VTK XML unstructured grid");
     require_distinct_outputs({{"the input", o->input}}, {{"-o", o->output}});
-    const MeshInput mesh = read_mesh(o->input, o->scalar);
+    const MeshInput mesh = read_mesh(o->input, o->field.selection());
     write_vtu(o->output, mesh);
     std::printf("%s: %zu cells, %zu points, field '%s' -> %s\n", o->input.c_str(), mesh.num_cells(),
                 mesh.num_points(), mesh.field_name.c_str(), o->output.c_str());

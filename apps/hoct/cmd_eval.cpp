@@ -1,5 +1,6 @@
 // `hoct eval FILE --points PTS`: the field and the geometry map at parametric points of cells.
 #include "commands.hpp"
+#include "field_options.hpp"
 #include "load_mesh.hpp"
 #include "util/error.hpp"
 
@@ -18,7 +19,8 @@ namespace hoct::cli {
 namespace {
 
 struct EvalOptions {
-  std::string file, scalar, points = "-";
+  std::string file, points = "-";
+  FieldOptions field;
 };
 
 // Lines longer than this are refused (a point line is a few dozen bytes; /dev/zero has none).
@@ -80,7 +82,7 @@ bool parse_point(const std::string &line, long long &c, double &u, double &v) {
 }
 
 void run_eval(const EvalOptions &o) {
-  const LoadedMesh lm = load_mesh(o.file, o.scalar, /*strict=*/true);
+  const LoadedMesh lm = load_mesh(o.file, o.field.selection(), /*strict=*/true);
   const Mesh &m = lm.mesh;
   std::ifstream file;
   std::istream *in = &std::cin;
@@ -130,7 +132,7 @@ void register_eval(CLI::App &app) {
       "eval", "Evaluate the field and the geometry at parametric points: reads lines 'cell u v' "
               "(reference triangle (0,0),(1,0),(0,1)), prints 'cell u v x y z value'");
   sub->add_option("file", o->file, "Input file (.vtu, .msh)")->required();
-  sub->add_option("--scalar", o->scalar, "Point-data array / node-data view (default: the first)");
+  add_field_options(sub, o->field);
   sub->add_option("--points", o->points, "File of 'cell u v' lines, or - for stdin");
   sub->callback([o] { run_eval(*o); });
 }

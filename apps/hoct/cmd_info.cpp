@@ -1,5 +1,6 @@
 // `hoct info FILE`: what the file holds and whether hoct can compute its contour tree.
 #include "commands.hpp"
+#include "field_options.hpp"
 #include "load_mesh.hpp"
 
 #include <nlohmann/json.hpp>
@@ -13,7 +14,8 @@ namespace hoct::cli {
 namespace {
 
 struct InfoOptions {
-  std::string file, scalar;
+  std::string file;
+  FieldOptions field;
   MergeOption merge;
   bool json = false;
 };
@@ -30,7 +32,8 @@ std::string domain_kind(const Topology &t) {
 }
 
 int run_info(const InfoOptions &o) {
-  const LoadedMesh lm = load_mesh(o.file, o.scalar, /*strict=*/false, o.merge.tolerance());
+  const LoadedMesh lm =
+      load_mesh(o.file, o.field.selection(), /*strict=*/false, o.merge.tolerance());
   const Mesh &m = lm.mesh;
   std::map<int, int64_t> degrees;
   for (int64_t c = 0; c < m.field.num_cells(); ++c)
@@ -123,7 +126,7 @@ void register_info(CLI::App &app) {
   auto *sub = app.add_subcommand("info", "Describe a mesh file: cells, degrees, topology, value "
                                          "range, geometry and any problems (exit 1 if invalid)");
   sub->add_option("file", o->file, "Input file (.vtu, .msh)")->required();
-  sub->add_option("--scalar", o->scalar, "Point-data array / node-data view (default: the first)");
+  add_field_options(sub, o->field);
   sub->add_flag("--json", o->json, "Print JSON instead of text");
   add_merge_option(sub, o->merge);
   sub->callback([o] {

@@ -1,6 +1,7 @@
 // `hoct render INPUT -o FIELD.png|.svg`: the field, exact isolines and critical points.
 #include "commands.hpp"
 #include "exact/exact_contour_tree.hpp"
+#include "field_options.hpp"
 #include "io/tree_json.hpp"
 #include "load_mesh.hpp"
 #include "output_paths.hpp"
@@ -16,7 +17,8 @@ namespace hoct::cli {
 namespace {
 
 struct RenderCmdOptions {
-  std::string file, scalar, output, tree, view = "1,1,1", size = "1000x800", simplify;
+  std::string file, output, tree, view = "1,1,1", size = "1000x800", simplify;
+  FieldOptions field;
   int isolines = 12;
   bool no_points = false;
 };
@@ -26,7 +28,7 @@ void run_render(const RenderCmdOptions &o) {
     throw Error("render: give an output picture with -o FIELD.png (or .svg)");
   require_distinct_outputs({{"the input", o.file}, {"the --tree input", o.tree}},
                            {{"-o", o.output}});
-  const LoadedMesh lm = load_mesh(o.file, o.scalar, /*strict=*/true);
+  const LoadedMesh lm = load_mesh(o.file, o.field.selection(), /*strict=*/true);
   RenderOptions ro;
   if (std::sscanf(o.size.c_str(), "%dx%d", &ro.width, &ro.height) != 2)
     throw Error("render: --size must look like 1000x800, got '" + o.size + "'");
@@ -65,7 +67,7 @@ void register_render(CLI::App &app) {
       "render", "Draw the field with exact isolines and its critical points (PNG or SVG)");
   sub->add_option("file", o->file, "Input file (.vtu, .msh)")->required();
   sub->add_option("-o,--output", o->output, "Picture to write (.png or .svg)");
-  sub->add_option("--scalar", o->scalar, "Point-data array / node-data view (default: the first)");
+  add_field_options(sub, o->field);
   sub->add_option("--tree", o->tree,
                   "Critical points from this tree (JSON from hoct tree; default: compute the "
                   "exact tree)");

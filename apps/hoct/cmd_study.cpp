@@ -1,6 +1,7 @@
 // `hoct study INPUT --refine 1,2,4,8,16`: the exact tree against PL trees of refinements.
 #include "analysis/case_study.hpp"
 #include "commands.hpp"
+#include "field_options.hpp"
 #include "load_mesh.hpp"
 #include "output_paths.hpp"
 #include "study_writers.hpp"
@@ -15,7 +16,8 @@ namespace hoct::cli {
 namespace {
 
 struct StudyCmdOptions {
-  std::string file, scalar, csv, json, svg, threshold = "1%";
+  std::string file, csv, json, svg, threshold = "1%";
+  FieldOptions field;
   std::vector<int> levels = {1, 2, 4, 8, 16};
   int threads = 0;
 };
@@ -23,7 +25,7 @@ struct StudyCmdOptions {
 void run_study(const StudyCmdOptions &o) {
   require_distinct_outputs({{"the input", o.file}},
                            {{"--csv", o.csv}, {"--json", o.json}, {"--svg", o.svg}});
-  const LoadedMesh lm = load_mesh(o.file, o.scalar, /*strict=*/true);
+  const LoadedMesh lm = load_mesh(o.file, o.field.selection(), /*strict=*/true);
   StudyOptions so;
   so.levels = o.levels;
   so.threads = o.threads;
@@ -72,7 +74,7 @@ void register_study(CLI::App &app) {
   auto *sub = app.add_subcommand("study", "Case study (thesis 5.5): the exact tree against the "
                                           "PL trees of uniform refinements");
   sub->add_option("file", o->file, "Input file (.vtu, .msh)")->required();
-  sub->add_option("--scalar", o->scalar, "Point-data array / node-data view (default: the first)");
+  add_field_options(sub, o->field);
   sub->add_option("--refine", o->levels, "Refinement levels, e.g. 1,2,4,8,16")->delimiter(',');
   sub->add_option("--threshold", o->threshold,
                   "Persistence of a feature (absolute or % of the value range; default 1%)");

@@ -1,5 +1,6 @@
 // `hoct tree INPUT`: the contour tree, written as JSON and VTP and summarised on the terminal.
 #include "commands.hpp"
+#include "field_options.hpp"
 #include "io/read_limits.hpp"
 #include "io/tree_json.hpp"
 #include "io/tree_svg_writer.hpp"
@@ -21,7 +22,8 @@ namespace hoct::cli {
 namespace {
 
 struct TreeOptions {
-  std::string file, scalar, json, vtp, svg, simplify;
+  std::string file, json, vtp, svg, simplify;
+  FieldOptions field;
   bool branches = false;
   bool linear = false, augmented = false, force = false, quiet = false, keep_flat = false;
   bool no_timings = false;
@@ -53,8 +55,8 @@ void run_tree(const TreeOptions &o) {
                            {{"--json", o.json}, {"--vtp", o.vtp}, {"--svg", o.svg}});
   TreeRequest rq = request_of(o);
   // Only --linear reads the input's nodes again: elsewhere the mesh holds all the tree needs.
-  const LoadedMesh lm = load_mesh(o.file, o.scalar, /*strict=*/false, o.merge.tolerance(),
-                                  o.threads, /*keep_input=*/o.linear);
+  const LoadedMesh lm = load_mesh(o.file, o.field.selection(), /*strict=*/false,
+                                  o.merge.tolerance(), o.threads, /*keep_input=*/o.linear);
   rq.read_seconds = lm.read_seconds;
   rq.build_seconds = lm.build_seconds;
   if (rq.method == TreeMethod::Refine) {
@@ -100,7 +102,7 @@ void register_tree(CLI::App &app) {
   auto *sub = app.add_subcommand(
       "tree", "Compute the contour tree of a field: exact (default) or piecewise-linear");
   sub->add_option("file", o->file, "Input file (.vtu, .msh)")->required();
-  sub->add_option("--scalar", o->scalar, "Point-data array / node-data view (default: the first)");
+  add_field_options(sub, o->field);
   sub->add_flag("--linear", o->linear,
                 "Piecewise-linear tree of the input's nodes (each cell split into linear "
                 "triangles through its Lagrange nodes)");

@@ -11,13 +11,13 @@
 
 namespace hoct::cli {
 
-LoadedMesh load_mesh(const std::string &path, const std::string &scalar, bool strict,
+LoadedMesh load_mesh(const std::string &path, const FieldSelection &field, bool strict,
                      double merge_tolerance, int threads, bool keep_input) {
   LoadedMesh r;
   Stopwatch clock;
   ReadLimits limits = read_limits();
   limits.threads = thread_count(threads);
-  r.input = read_mesh(path, scalar, limits);
+  r.input = read_mesh(path, field, limits);
   if (merge_tolerance >= 0) {
     const MergeReport m = merge_duplicate_points(r.input, merge_tolerance, thread_count(threads));
     if (m.merged_points > 0)

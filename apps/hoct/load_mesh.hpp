@@ -1,6 +1,7 @@
 // Shared by the commands: read a file and build the checked mesh, timing both.
 #pragma once
 
+#include "io/field_selection.hpp"
 #include "mesh/mesh.hpp"
 
 #include <CLI/CLI.hpp>
@@ -23,7 +24,7 @@ struct LoadedMesh {
 // `threads` (0: all cores) converts the cells to Bernstein form in parallel. Without
 // keep_input the build consumes the input (build_mesh(MeshInput &&)): its arrays are released
 // as the mesh takes their place (at 4M cubic cells the input is over a third of the memory).
-LoadedMesh load_mesh(const std::string &path, const std::string &scalar, bool strict,
+LoadedMesh load_mesh(const std::string &path, const FieldSelection &field, bool strict,
                      double merge_tolerance = -1, int threads = 1, bool keep_input = false);
 
 // --merge-duplicates[=TOL] of a command.

@@ -81,8 +81,10 @@ std::string str(double v) {
 
 class MshReader {
 public:
-  MshReader(const std::string &path, std::string data, std::string scalar, const ReadLimits &limits)
-      : s_(path, std::move(data)), scalar_(std::move(scalar)), limits_(limits) {}
+  MshReader(const std::string &path, std::string data, FieldSelection field,
+            const ReadLimits &limits)
+      : s_(path, std::move(data)), field_(std::move(field)), scalar_(field_.name), limits_(limits) {
+  }
   MeshInput read();
 
 private:
@@ -118,7 +120,8 @@ private:
   }
 
   MshScanner s_;
-  std::string scalar_;
+  FieldSelection field_;
+  std::string scalar_; // field_.name
   ReadLimits limits_;
   bool have_format_ = false, have_nodes_ = false, have_elements_ = false;
   bool binary_ = false;
@@ -624,12 +627,34 @@ void MshReader::read_node_data(std::size_t at) {
     }
   if (!seen_name)
     views_.emplace_back(name, components);
+  const bool vector = field_.component != FieldSelection::kScalar;
   const bool collect = !scalar_.empty() ? name == scalar_
                        : have_chosen_   ? name == chosen_
-                                        : components == 1;
-  if (collect && components != 1)
+                                        : (vector ? components > 1 : components == 1) &&
+                                            !is_bookkeeping_array(std::string(name));
+  if (collect && !vector && components != 1)
     s_.fail_at(at, "$NodeData '" + name + "' has " + str(components) +
-                       " components; a scalar field needs 1");
+                       " components; a scalar field needs 1 (choose one with --component N, or "
+                       "--component magnitude)");
+  if (collect && vector && components == 1)
+    s_.fail_at(at, "--component: $NodeData '" + name + "' has one component");
+  if (collect && field_.component >= components)
+    s_.fail_at(at, "--component " + str(int64_t{field_.component}) + ": $NodeData '" + name +
+                       "' has " + str(components) + " components (0 to " + str(components - 1) +
+                       ")");
+  // The value a node's components give: the one, the chosen component, or the magnitude.
+  double comp[9];
+  const int64_t ncomp = components; // (a structured binding: lambdas capture a copy)
+  auto combined = [&]() {
+    if (field_.component >= 0)
+      return comp[field_.component];
+    if (!vector)
+      return comp[0];
+    double sum = 0;
+    for (int64_t k = 0; k < ncomp; ++k)
+      sum += comp[k] * comp[k];
+    return std::sqrt(sum);
+  };
   if (collect) {
     if (!have_chosen_ || step != chosen_step_)
       values_.assign(points_.size(), kNoValue); // a later time step replaces the earlier
@@ -660,19 +685,20 @@ void MshReader::read_node_data(std::size_t at) {
         if (tag <= 0)
           s_.fail_at(tag_at, "$NodeData '" + name + "': node tag " + str(int64_t{tag}) +
                                  " is not positive");
-        store(static_cast<uint64_t>(tag), s_.get_unchecked<double>(), tag_at + 4);
+        for (uint64_t k = 0; k < comps; ++k)
+          comp[k] = s_.get_unchecked<double>();
+        store(static_cast<uint64_t>(tag), combined(), tag_at + 4);
       }
     }
   } else {
     for (uint64_t i = 0; i < n; ++i) {
       const uint64_t tag = s_.unsigned_number("a node tag", true);
       const std::size_t value_at = (s_.line_ends(), s_.pos());
-      const double v = s_.real_number("a value");
-      for (uint64_t k = 1; k < comps; ++k)
-        s_.real_number("a value");
+      for (uint64_t k = 0; k < comps; ++k)
+        comp[k] = s_.real_number("a value");
       s_.end_line(comps == 1 ? "the node's value" : "the node's values");
       if (collect)
-        store(tag, v, value_at);
+        store(tag, combined(), value_at);
     }
   }
   expect_end("$EndNodeData");
@@ -728,20 +754,23 @@ MeshInput MshReader::finish() {
     node = renumber[static_cast<std::size_t>(node)];
   m.points = std::move(points_);
   m.values = std::move(values_);
-  m.field_name = chosen_;
+  m.field_name = field_.describe(chosen_);
   m.source = s_.path();
   return m;
 }
 
 } // namespace
 
-MeshInput read_msh(const std::string &path, const std::string &scalar, const ReadLimits &limits) {
-  return MshReader(path, read_whole_file(path), scalar, limits).read();
+MeshInput read_msh(const std::string &path, const FieldSelection &field, const ReadLimits &limits) {
+  if (!field.default_step())
+    throw InputError(path + ": --step / --time: choosing a time step of a Gmsh view is not "
+                            "supported yet (the last step of the view is read)");
+  return MshReader(path, read_whole_file(path), field, limits).read();
 }
 
-MeshInput read_msh_buffer(std::string bytes, const std::string &name, const std::string &scalar,
+MeshInput read_msh_buffer(std::string bytes, const std::string &name, const FieldSelection &field,
                           const ReadLimits &limits) {
-  return MshReader(name, std::move(bytes), scalar, limits).read();
+  return MshReader(name, std::move(bytes), field, limits).read();
 }
 
 } // namespace hoct

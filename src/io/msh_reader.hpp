@@ -4,6 +4,7 @@
 // in file order.
 #pragma once
 
+#include "io/field_selection.hpp"
 #include "io/read_limits.hpp"
 #include "mesh/mesh_input.hpp"
 
@@ -12,14 +13,15 @@
 namespace hoct {
 
 // Reads nodes, complete triangle elements of any order, and one $NodeData view (by name; empty =
-// the first). Nodes are converted to canonical lattice order. Throws InputError naming the file,
-// line (ascii) or byte offset (binary), and the problem. Counts in the file are checked against
-// the bytes left and against `limits` before anything is allocated for them.
-MeshInput read_msh(const std::string &path, const std::string &scalar = "",
+// the first one-component view that is no id array; a component or the magnitude of a vector
+// view with field.component). Nodes are converted to canonical lattice order. Throws InputError
+// naming the file, line (ascii) or byte offset (binary), and the problem. Counts in the file are
+// checked against the bytes left and against `limits` before anything is allocated for them.
+MeshInput read_msh(const std::string &path, const FieldSelection &field = {},
                    const ReadLimits &limits = {});
 
 // The same from the bytes of a file held in memory; `name` stands for the file in messages.
 MeshInput read_msh_buffer(std::string bytes, const std::string &name,
-                          const std::string &scalar = "", const ReadLimits &limits = {});
+                          const FieldSelection &field = {}, const ReadLimits &limits = {});
 
 } // namespace hoct

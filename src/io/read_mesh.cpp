@@ -10,16 +10,17 @@
 
 namespace hoct {
 
-MeshInput read_mesh(const std::string &path, const std::string &scalar, const ReadLimits &limits) {
+MeshInput read_mesh(const std::string &path, const FieldSelection &field,
+                    const ReadLimits &limits) {
   if (const std::string what = special_file(path); !what.empty())
     throw InputError(path + ": " + what);
   std::string ext = std::filesystem::path(path).extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(),
                  [](unsigned char c) { return std::tolower(c); });
   if (ext == ".vtu")
-    return read_vtu(path, scalar, limits);
+    return read_vtu(path, field, limits);
   if (ext == ".msh")
-    return read_msh(path, scalar, limits);
+    return read_msh(path, field, limits);
   throw InputError(path + ": unknown file type '" + ext +
                    "' (supported: .vtu VTK XML UnstructuredGrid, .msh Gmsh 4.1 or 2.2 ascii)");
 }

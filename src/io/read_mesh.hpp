@@ -1,6 +1,7 @@
 // Reads a mesh file of any supported format, chosen by extension (.vtu, .msh).
 #pragma once
 
+#include "io/field_selection.hpp"
 #include "io/read_limits.hpp"
 #include "mesh/mesh_input.hpp"
 
@@ -8,8 +9,8 @@
 
 namespace hoct {
 
-// scalar: name of the point-data array (VTU) or $NodeData view (MSH); empty = the first one.
-MeshInput read_mesh(const std::string &path, const std::string &scalar = "",
+// field: the point-data array (VTU) or $NodeData view (MSH), see FieldSelection.
+MeshInput read_mesh(const std::string &path, const FieldSelection &field = {},
                     const ReadLimits &limits = {});
 
 } // namespace hoct

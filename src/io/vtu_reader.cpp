@@ -55,8 +55,8 @@ struct Payload {
 
 class VtuFile {
 public:
-  VtuFile(std::string path, std::string scalar, const ReadLimits &limits)
-      : path_(std::move(path)), scalar_(std::move(scalar)), limits_(limits) {}
+  VtuFile(std::string path, FieldSelection field, const ReadLimits &limits)
+      : path_(std::move(path)), field_(std::move(field)), limits_(limits) {}
   VtuFile(const VtuFile &) = delete;
   VtuFile &operator=(const VtuFile &) = delete;
   ~VtuFile() {
@@ -84,6 +84,9 @@ private:
   pugi::xml_node single_child(const pugi::xml_node &parent, const char *name) const;
   // The DataArray of parent named `name` (null if none); a second one of that name is refused.
   pugi::xml_node named_array(const pugi::xml_node &parent, const std::string &name) const;
+  // The point-data array field_ names in pd, or the default (FieldSelection::name); refuses
+  // what cannot give a scalar field, listing the arrays there are.
+  pugi::xml_node choose_field(const pugi::xml_node &pd, const std::string &where) const;
   void load();
   void load_whole();
   bool open_streamed();
@@ -114,7 +117,8 @@ private:
   template <class T>
   PooledVector<T> read_array(const pugi::xml_node &a, std::size_t expected) const;
 
-  std::string path_, scalar_;
+  std::string path_;
+  FieldSelection field_;
   ReadLimits limits_;
   FileBytes bytes_; // the file (unless streamed)
   uint64_t file_size_ = 0;
@@ -346,6 +350,71 @@ pugi::xml_node VtuFile::named_array(const pugi::xml_node &parent, const std::str
     found = a;
   }
   return found;
+}
+
+pugi::xml_node VtuFile::choose_field(const pugi::xml_node &pd, const std::string &where) const {
+  const bool vector = field_.component != FieldSelection::kScalar;
+  auto components = [](const pugi::xml_node &a) {
+    return a.attribute("NumberOfComponents").as_int(1);
+  };
+  auto floating = [](const pugi::xml_node &a) {
+    const std::string t = a.attribute("type").as_string();
+    return t == "Float32" || t == "Float64" || t == "Float" || t == "Double";
+  };
+  auto suitable = [&](const pugi::xml_node &a) {
+    return vector ? components(a) > 1 : components(a) == 1;
+  };
+  std::string available;
+  for (auto a : pd.children("DataArray")) {
+    const int comps = components(a);
+    available += (available.empty() ? "" : ", ") + std::string(a.attribute("Name").as_string()) +
+                 (comps != 1 ? " (" + std::to_string(comps) + " components)" : "");
+  }
+  const std::string listed = available.empty() ? std::string(" (the file has no point data)")
+                                               : " (available: " + available + ")";
+  pugi::xml_node sa;
+  if (!field_.name.empty()) {
+    sa = named_array(pd, field_.name);
+    if (!sa)
+      fail(where + ": no point-data array named '" + field_.name + "'" + listed);
+  } else {
+    // The active scalars (or vectors) first, then the first floating-point array that is no
+    // id, ghost or mask array, then the first integer one of those.
+    const std::string active = pd.attribute(vector ? "Vectors" : "Scalars").as_string();
+    if (!active.empty()) {
+      const pugi::xml_node a = named_array(pd, active);
+      if (a && suitable(a) && !is_bookkeeping_array(active))
+        sa = a;
+    }
+    for (int pass = 0; pass < 2 && !sa; ++pass)
+      for (auto a : pd.children("DataArray"))
+        if (suitable(a) && (pass == 1 || floating(a)) &&
+            !is_bookkeeping_array(a.attribute("Name").as_string())) {
+          sa = a;
+          break;
+        }
+    if (!sa)
+      fail(where + ": no " +
+           (vector ? std::string("vector") : std::string("scalar (one-component)")) +
+           " point-data array but ids, ghost levels or masks" + listed +
+           (available.empty() ? "" : ": name one with --scalar"));
+    named_array(pd, sa.attribute("Name").as_string()); // refuses a second of that name
+  }
+  const int comps = components(sa);
+  const std::string name = sa.attribute("Name").as_string();
+  if (comps < 1 || comps > 64)
+    fail(where + ": point-data array '" + name + "' has " + std::to_string(comps) + " components");
+  if (!vector && comps != 1)
+    fail(where + ": point-data array '" + name + "' has " + std::to_string(comps) +
+         " components; a scalar field needs 1 (choose one with --component N, or --component "
+         "magnitude)");
+  if (vector && comps == 1)
+    fail(where + ": --component: point-data array '" + name + "' has one component");
+  if (field_.component >= comps)
+    fail(where + ": --component " + std::to_string(field_.component) + ": point-data array '" +
+         name + "' has " + std::to_string(comps) + " components (0 to " +
+         std::to_string(comps - 1) + ")");
+  return sa;
 }
 
 void VtuFile::load() {
@@ -871,39 +940,33 @@ MeshInput VtuFile::read() {
       if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
         fail(where + ": point " + std::to_string(i) + " has a NaN or infinite coordinate");
     }
-    // The scalar.
+    // The field.
     const pugi::xml_node pd = single_child(piece, "PointData");
-    pugi::xml_node sa;
-    std::string available;
-    for (auto a : pd.children("DataArray")) {
-      const std::string name = a.attribute("Name").as_string();
-      const int comps = a.attribute("NumberOfComponents").as_int(1);
-      available += (available.empty() ? "" : ", ") + name +
-                   (comps != 1 ? " (" + std::to_string(comps) + " components)" : "");
-      if (!sa && ((scalar_.empty() && comps == 1) || name == scalar_))
-        sa = a;
-    }
-    if (!sa) {
-      if (scalar_.empty())
-        fail(where + ": no scalar point-data array" +
-             (available.empty() ? std::string(" (the file has no point data)")
-                                : " (available: " + available + ")"));
-      fail(where + ": no point-data array named '" + scalar_ + "'" +
-           (available.empty() ? std::string(" (the file has no point data)")
-                              : " (available: " + available + ")"));
-    }
-    if (sa.attribute("NumberOfComponents").as_int(1) != 1)
-      fail(where + ": point-data array '" + std::string(sa.attribute("Name").as_string()) +
-           "' has " + sa.attribute("NumberOfComponents").as_string() +
-           " components; a scalar field needs 1");
-    const std::string field = sa.attribute("Name").as_string();
-    named_array(pd, field); // refuses a second array of that name
+    const pugi::xml_node sa = choose_field(pd, where);
+    const std::string field = field_.describe(sa.attribute("Name").as_string());
     if (read_pieces == 0)
       m.field_name = field;
     else if (field != m.field_name)
-      fail(where + ": scalar '" + field + "' differs from the first piece's '" + m.field_name +
-           "'");
-    PooledVector<double> vals = read_doubles(sa, static_cast<std::size_t>(np));
+      fail(where + ": field '" + field + "' differs from the first piece's '" + m.field_name + "'");
+    const int comps = sa.attribute("NumberOfComponents").as_int(1);
+    PooledVector<double> vals;
+    if (comps == 1) {
+      vals = read_doubles(sa, static_cast<std::size_t>(np));
+    } else { // one component, or the magnitude, of a vector array
+      const PooledVector<double> all = read_doubles(sa, static_cast<std::size_t>(np) * comps);
+      vals.resize(static_cast<std::size_t>(np));
+      for (long long i = 0; i < np; ++i) {
+        const double *v = all.data() + i * comps;
+        if (field_.component >= 0) {
+          vals[i] = v[field_.component];
+        } else {
+          double sum = 0;
+          for (int k = 0; k < comps; ++k)
+            sum += v[k] * v[k];
+          vals[i] = std::sqrt(sum);
+        }
+      }
+    }
     for (long long i = 0; i < np; ++i)
       if (!std::isfinite(vals[i]))
         fail(where + ": point " + std::to_string(i) + " has a non-finite value of '" + field + "'");
@@ -978,15 +1041,17 @@ MeshInput VtuFile::read() {
 
 } // namespace
 
-MeshInput read_vtu(const std::string &path, const std::string &scalar, const ReadLimits &limits) {
-  VtuFile f(path, scalar, limits);
+MeshInput read_vtu(const std::string &path, const FieldSelection &field, const ReadLimits &limits) {
+  if (!field.default_step())
+    throw InputError(path + ": --step / --time: a .vtu file holds one time step");
+  VtuFile f(path, field, limits);
   f.read_file();
   return f.read();
 }
 
-MeshInput read_vtu_buffer(std::string bytes, const std::string &name, const std::string &scalar,
+MeshInput read_vtu_buffer(std::string bytes, const std::string &name, const FieldSelection &field,
                           const ReadLimits &limits) {
-  VtuFile f(name, scalar, limits);
+  VtuFile f(name, field, limits);
   f.set_bytes(std::move(bytes));
   return f.read();
 }

@@ -137,6 +137,42 @@ TEST(MshReader, QuadraticTrianglesSparseTagsParametricNodes) {
   EXPECT_EQ(g.values, (PooledVector<double>{0, 0, 1, 1, 0, -1, -1, -2, 2}));
 }
 
+// A component or the magnitude of a vector view (issue 28, item 1): velocity is (1, 0, 0).
+TEST(MshReader, ComponentsAndMagnitudeOfVectorViews) {
+  const std::string path = data_path("time_steps.msh");
+  FieldSelection x("velocity");
+  x.component = 0;
+  const MeshInput mx = read_msh(path, x);
+  EXPECT_EQ(mx.field_name, "velocity[0]");
+  EXPECT_EQ(mx.values, (PooledVector<double>{1, 1, 1, 1}));
+  FieldSelection y = x;
+  y.component = 1;
+  EXPECT_EQ(read_msh(path, y).values, (PooledVector<double>{0, 0, 0, 0}));
+  FieldSelection magnitude; // no name: the first vector view
+  magnitude.component = FieldSelection::kMagnitude;
+  const MeshInput mm = read_msh(path, magnitude);
+  EXPECT_EQ(mm.field_name, "|velocity|");
+  EXPECT_EQ(mm.values, (PooledVector<double>{1, 1, 1, 1}));
+  FieldSelection beyond("velocity");
+  beyond.component = 3;
+  EXPECT_THROW(
+      {
+        try {
+          read_msh(path, beyond);
+        } catch (const InputError &e) {
+          EXPECT_NE(std::string(e.what()).find(
+                        "--component 3: $NodeData 'velocity' has 3 components (0 to 2)"),
+                    std::string::npos)
+              << e.what();
+          throw;
+        }
+      },
+      InputError);
+  FieldSelection of_scalar("T");
+  of_scalar.component = 0;
+  EXPECT_THROW(read_msh(path, of_scalar), InputError);
+}
+
 TEST(MshReader, Msh22ReadsLikeMsh41) {
   expect_sparse_p2(read_msh(data_path("p2_sparse_tags_msh22.msh")));
 }

@@ -232,6 +232,84 @@ TEST(VtuReader, AmbiguousXmlIsRefused) {
                "the file has no cells");
 }
 
+// The default field skips ids, ghost levels and masks, whatever their type or the active
+// scalars say (DOLFINx writes vtkOriginalPointIds first: its tree is the ids'); a named one is
+// read as named; vector arrays give a component or their magnitude (issue 28, item 1).
+TEST(VtuReader, DefaultFieldSkipsIdsAndVectorsGiveComponents) {
+  TempDir tmp;
+  const std::string array_t = "<DataArray type=\"Float64\" Name=\"T\" format=\"ascii\">";
+  const std::string ids =
+      "<DataArray type=\"Float64\" Name=\"vtkOriginalPointIds\" format=\"ascii\">8 7 6 5 4 3 2 1 "
+      "0</DataArray>\n<DataArray type=\"UInt8\" Name=\"vtkGhostType\" format=\"ascii\">0 0 0 0 0 "
+      "0 0 0 0</DataArray>\n<DataArray type=\"Int32\" Name=\"GlobalIds\" format=\"ascii\">0 1 2 3 "
+      "4 5 6 7 8</DataArray>\n<DataArray type=\"Float64\" Name=\"U\" NumberOfComponents=\"2\" "
+      "format=\"ascii\">3 4 3 4 3 4 3 4 3 4 0 1 0 1 0 1 0 1</DataArray>\n";
+  const std::string text = edited(array_t, ids + array_t);
+  const MeshInput m = read_vtu(tmp.write("ids-first.vtu", text));
+  EXPECT_EQ(m.field_name, "T");
+  EXPECT_EQ(m.values, (PooledVector<double>{0, 1, 2, 3, 4, 5, 6, 7, 8}));
+  // Active scalars naming the ids: still T.
+  std::string active = text;
+  active.replace(active.find("<PointData>"), 11, "<PointData Scalars=\"vtkOriginalPointIds\">");
+  EXPECT_EQ(read_vtu(tmp.write("active-ids.vtu", active)).field_name, "T");
+  // Active scalars naming a real field: that one, even after another.
+  std::string active_t =
+      edited(array_t, "<DataArray type=\"Float64\" Name=\"S\" format=\"ascii\">1 "
+                      "1 1 1 1 1 1 1 1</DataArray>\n" +
+                          array_t);
+  active_t.replace(active_t.find("<PointData>"), 11, "<PointData Scalars=\"T\">");
+  EXPECT_EQ(read_vtu(tmp.write("active-t.vtu", active_t)).field_name, "T");
+  EXPECT_EQ(read_vtu(tmp.write("first-s.vtu", edited(array_t, "<DataArray type=\"Float64\" "
+                                                              "Name=\"S\" format=\"ascii\">1 1 1 "
+                                                              "1 1 1 1 1 1</DataArray>\n" +
+                                                                  array_t)))
+                .field_name,
+            "S");
+  // Named: read as named, ids too.
+  EXPECT_EQ(read_vtu(tmp.write("named.vtu", text), "vtkOriginalPointIds").values[0], 8);
+  // Only ids: refused, saying so.
+  expect_error(tmp,
+               edited(array_t + "0 1 2 3 4 5 6 7 8</DataArray>",
+                      ids.substr(0, ids.find("<DataArray type=\"Float64\" Name=\"U\""))),
+               "no scalar (one-component) point-data array but ids, ghost levels or masks "
+               "(available: vtkOriginalPointIds, vtkGhostType, GlobalIds): name one with --scalar");
+  // Components of U = (3, 4) on the first five points, (0, 1) on the others.
+  FieldSelection u0("U");
+  u0.component = 0;
+  const MeshInput c0 = read_vtu(tmp.write("u0.vtu", text), u0);
+  EXPECT_EQ(c0.field_name, "U[0]");
+  EXPECT_EQ(c0.values, (PooledVector<double>{3, 3, 3, 3, 3, 0, 0, 0, 0}));
+  FieldSelection norm; // no name: the first vector array
+  norm.component = FieldSelection::kMagnitude;
+  const MeshInput n = read_vtu(tmp.write("norm.vtu", text), norm);
+  EXPECT_EQ(n.field_name, "|U|");
+  EXPECT_EQ(n.values, (PooledVector<double>{5, 5, 5, 5, 5, 1, 1, 1, 1}));
+  expect_error(tmp, text,
+               "point-data array 'U' has 2 components; a scalar field needs 1 (choose one with "
+               "--component N, or --component magnitude)",
+               "U");
+  FieldSelection u2("U");
+  u2.component = 2;
+  const std::string path = tmp.write("u2.vtu", text);
+  try {
+    read_vtu(path, u2);
+    ADD_FAILURE() << "component 2 of a 2-vector accepted";
+  } catch (const InputError &e) {
+    EXPECT_NE(
+        std::string(e.what()).find("--component 2: point-data array 'U' has 2 components (0 to 1)"),
+        std::string::npos)
+        << e.what();
+  }
+  FieldSelection step;
+  step.step = 2;
+  EXPECT_THROW(read_vtu(path, step), InputError);
+  EXPECT_EQ(parse_component("magnitude"), FieldSelection::kMagnitude);
+  EXPECT_EQ(parse_component("y"), 1);
+  EXPECT_EQ(parse_component("12"), 12);
+  EXPECT_THROW(parse_component("1.5"), Error);
+  EXPECT_THROW(parse_component("-1"), Error);
+}
+
 TEST(VtuReader, MalformedFilesGiveClearErrors) {
   TempDir tmp;
   const std::string ok = Fixture().text();
