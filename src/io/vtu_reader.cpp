@@ -927,6 +927,8 @@ MeshInput VtuFile::read() {
     const int pc = pa.attribute("NumberOfComponents").as_int(1);
     if (pc != 3 && pc != 2)
       fail(where + ": Points have " + std::to_string(pc) + " components (expected 3)");
+    if (type_of(pa).type == Scalar::F32)
+      m.coordinate_precision = 0x1p-24;
     resize_mapped(m.points, static_cast<std::size_t>(base + np));
     Vec3 *points = m.points.data() + base;
     // Float64 x, y, z as stored: straight into the points (the common case); else converted.

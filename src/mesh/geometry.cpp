@@ -124,7 +124,14 @@ Geometry Geometry::build(const MeshInput &in, int threads, const std::array<Vec3
   if (!in.points.empty())
     g.bounds_ = box ? *box : bounding_box(in.points, threads);
   const double ext = g.extent();
-  const double tol = 1e-12 * std::max(ext, 1e-300);
+  // Straight within 1e-12 of the extent, or within the coordinates' own rounding (float32
+  // files: a straight cell's edge nodes are rounded off the line by ~1e-7 of their magnitude).
+  double magnitude = 0;
+  for (const Vec3 &corner : g.bounds_)
+    for (int a = 0; a < 3; ++a)
+      magnitude = std::max(magnitude, std::abs(corner[a]));
+  const double tol =
+      std::max(1e-12 * std::max(ext, 1e-300), 8 * in.coordinate_precision * magnitude);
   g.planar_ = g.bounds_[1][2] - g.bounds_[0][2] <= tol;
 
   // Each cell's map degree (1: straight, three control points), then the control points into

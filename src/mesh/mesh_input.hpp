@@ -23,6 +23,9 @@ struct MeshInput {
   PooledVector<double> values;
   std::string field_name; // name of the scalar array, for reports
   std::string source;     // file name or generator description, for messages
+  // The rounding unit of the stored coordinates relative to their magnitude: 2^-24 for float32
+  // files, 0 for doubles. Straight cells of a float32 file are straight within it (Geometry).
+  double coordinate_precision = 0;
 
   // Cells in compressed-row form: the nodes of cell c are
   // cell_nodes[cell_offsets[c] .. cell_offsets[c+1]), (d+1)(d+2)/2 of them for degree d,

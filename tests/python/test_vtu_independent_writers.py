@@ -123,6 +123,25 @@ with tempdir() as tmp:
                 meshio.write(path, m, file_format="vtu", binary=binary, compression=compression)
                 check_file(path, pts, cells, values, corners, lat, d,
                            f"meshio d={d} binary={binary} {compression}", 1e-9)
+    # Float32 coordinates of straight cells far from the origin (issue 28, item 7): the edge and
+    # interior nodes are rounded off the straight lines by ~1e-4 here, far above 1e-12 of the
+    # extent; they are straight within the coordinates' own precision, not "curved".
+    for d in (2, 3, 5):
+        pts, cells, values, corners, lat = mesh(d)
+        far = pts + np.array([1000.37, -2000.11, 0.0])
+        path = os.path.join(tmp, "f32.vtu")
+        write_vtk(path, far, cells, values, d, "binary", None, False, True)
+        info = json.loads(run("info", path, "--json").stdout)
+        R.check(info["geometry"] == "planar-straight" and info["curved_cells"] == 0,
+                f"float32 straight d={d}: {info['geometry']}, {info['curved_cells']} curved")
+        # In doubles the same rounded points are curved (by 1e-4 of 2,000: far above 1e-12),
+        # from degree 3 on (a P2 midpoint of two rounded corners rounds onto their line).
+        if d == 2:
+            continue
+        write_vtk(path, far.astype(np.float32).astype(np.float64), cells, values, d, "binary",
+                  None, False, False)
+        info = json.loads(run("info", path, "--json").stdout)
+        R.check(info["curved_cells"] > 0, f"float64 of rounded points d={d}: {info['geometry']}")
     # Files hoct writes are read back by VTK with the same data.
     for enc in ("ascii", "base64", "zlib", "appended", "appended-base64"):
         path = os.path.join(tmp, f"g-{enc}.vtu")
