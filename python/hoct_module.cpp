@@ -174,6 +174,15 @@ PYBIND11_MODULE(_hoct, m) {
                              })
       .def_property_readonly("source", [](const PyMesh &x) { return x.mesh->source; })
       .def_property_readonly("field_name", [](const PyMesh &x) { return x.mesh->field_name; })
+      .def_property_readonly(
+          "fingerprint",
+          [](const PyMesh &x) -> py::object {
+            if (!x.mesh->fingerprint)
+              return py::none();
+            return py::str(x.mesh->fingerprint->hex());
+          },
+          "The 16 hexadecimal digits of the hash of the points, cells, degrees and node values "
+          "(the same for the same data in any file format); a tree's input['fingerprint']")
       .def("value", [](const PyMesh &x, int64_t cell, double u, double v) {
         py_checks::eval_point(cell, u, v, x.mesh->topology.num_cells());
         return x.mesh->field.value(cell, u, v);
@@ -181,6 +190,20 @@ PYBIND11_MODULE(_hoct, m) {
 
   py::class_<PyTree>(m, "Tree")
       .def_property_readonly("method", [](const PyTree &t) { return t.tree.method; })
+      .def_property_readonly(
+          "input",
+          [](const PyTree &t) -> py::object {
+            if (!t.tree.input)
+              return py::none();
+            py::dict d;
+            d["points"] = t.tree.input->points;
+            d["cells"] = t.tree.input->cells;
+            d["field"] = t.tree.input->field;
+            d["fingerprint"] = t.tree.input->hex();
+            return d;
+          },
+          "The mesh the tree was computed from, as its JSON's \"input\" records it: points, "
+          "cells, field and fingerprint (Mesh.fingerprint)")
       .def_property_readonly(
           "positions",
           [](const PyTree &t) {

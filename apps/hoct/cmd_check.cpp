@@ -6,6 +6,7 @@
 #include "field_options.hpp"
 #include "io/tree_json.hpp"
 #include "load_mesh.hpp"
+#include "tree_input.hpp"
 #include "util/error.hpp"
 
 #include <cstdio>
@@ -31,6 +32,7 @@ void run_check(const CheckOptions &o) {
   if (!lm.mesh.complete)
     throw Error(o.file + ": the mesh is too broken to check a tree against:\n" +
                 lm.mesh.problems.summary());
+  require_tree_of_mesh(o.tree, tree, o.file, lm.mesh, "--scalar and --merge-duplicates");
   TreeCheckOptions opt;
   opt.value_tolerance = o.value_tolerance;
   // The PL trees (--linear, --refine) are trees of another field: only their structure, values

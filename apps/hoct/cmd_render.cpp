@@ -6,6 +6,7 @@
 #include "load_mesh.hpp"
 #include "output_paths.hpp"
 #include "render/field_renderer.hpp"
+#include "tree_input.hpp"
 #include "util/error.hpp"
 
 #include <cstdio>
@@ -46,7 +47,9 @@ void run_render(const RenderCmdOptions &o) {
   std::vector<TreeNode> nodes;
   if (!o.no_points) {
     if (!o.tree.empty()) {
-      nodes = read_tree_json(o.tree).nodes;
+      TreeResult tree = read_tree_json(o.tree);
+      require_tree_of_mesh(o.tree, tree, o.file, lm.mesh, "--scalar");
+      nodes = std::move(tree.nodes);
     } else {
       ExactTreeOptions eo;
       eo.threads = 0;

@@ -5,6 +5,7 @@
     tree = hoct.contour_tree(mesh, simplify="0.5%")
     tree.positions, tree.values, tree.types, tree.arcs, tree.pairs, tree.branches
     tree.to_networkx()
+    tree.input == {"points": ..., "cells": ..., "field": ..., "fingerprint": mesh.fingerprint}
 
 The same library computes what the `hoct` command line prints: the results are identical.
 """

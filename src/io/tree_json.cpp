@@ -75,6 +75,11 @@ std::string to_json_text(const TreeResult &t, bool timings) {
   w.field("version", 1);
   w.field("method", t.method);
   w.field("augmented", t.augmented);
+  if (t.input)
+    w.field("input", {{"points", t.input->points},
+                      {"cells", t.input->cells},
+                      {"field", t.input->field},
+                      {"fingerprint", t.input->hex()}});
   if (!t.forced.empty()) {
     w.field("forced", true);
     w.field("forced_reasons", t.forced);
@@ -205,6 +210,20 @@ TreeResult read_tree_json(const std::string &path) {
     TreeResult t;
     t.method = j.value("method", "");
     t.augmented = j.value("augmented", false);
+    if (j.contains("input")) {
+      const auto &in = j.at("input");
+      InputFingerprint f;
+      f.points = in.at("points").get<int64_t>();
+      f.cells = in.at("cells").get<int64_t>();
+      f.field = in.value("field", std::string());
+      const auto hash = InputFingerprint::parse_hex(in.at("fingerprint").get<std::string>());
+      if (!hash)
+        throw std::invalid_argument("\"input\": \"fingerprint\" must be 16 hexadecimal digits, "
+                                    "got " +
+                                    in.at("fingerprint").dump());
+      f.hash = *hash;
+      t.input = f;
+    }
     if (j.value("forced", false))
       t.forced = j.value("forced_reasons", std::vector<std::string>{"forced"});
     const auto &nodes = j.at("nodes");

@@ -1,5 +1,7 @@
 // The contour-tree JSON format every tree hoct writes shares:
 //   {"format": "hoct-contour-tree", "version": 1, "method", "augmented",
+//    "input": {"points", "cells", "field", "fingerprint": 16 hex digits} (the mesh the tree was
+//    computed from: mesh/mesh_fingerprint.hpp; absent in files of earlier versions),
 //    "forced": true and "forced_reasons": [...] (only for hoct tree --force on an invalid domain),
 //    "nodes": [{"id", "type", "value", "position": [x,y,z], "cell", "uv": [u,v], "location",
 //               "fallback", "merged" (only if > 1: the nodes of a flat region it stands for)}],

@@ -27,6 +27,7 @@ Mesh build(const MeshInput &input, MeshInput *consumed, const MeshBuildOptions &
   m.source = input.source;
   m.field_name = input.field_name;
   m.num_points = static_cast<int64_t>(input.points.size());
+  m.fingerprint = mesh_fingerprint(input);
   MeshBuildTimes &times = m.build_times;
   Stopwatch step;
   auto step_done = [&step](double &seconds) { seconds = step.lap(); };

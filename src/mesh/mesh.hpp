@@ -4,10 +4,12 @@
 
 #include "mesh/field.hpp"
 #include "mesh/geometry.hpp"
+#include "mesh/mesh_fingerprint.hpp"
 #include "mesh/mesh_input.hpp"
 #include "mesh/problem_log.hpp"
 #include "mesh/topology.hpp"
 
+#include <optional>
 #include <string>
 
 namespace hoct {
@@ -28,6 +30,9 @@ struct MeshBuildTimes {
 struct Mesh {
   std::string source, field_name;
   int64_t num_points = 0;
+  // Of the input it was built from (mesh/mesh_fingerprint.hpp), for the results to record; unset
+  // for a mesh whose field does not come from the input's node values (build_mesh_from_samples).
+  std::optional<InputFingerprint> fingerprint;
   Topology topology;
   Field field;
   Geometry geometry;

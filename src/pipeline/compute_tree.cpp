@@ -79,6 +79,7 @@ TreeOutcome compute_tree(const Mesh &mesh, const TreeRequest &rq, const MeshInpu
   else
     decompose_branches(tree);
   tree.forced = out.warnings;
+  tree.input = mesh.fingerprint;
   tree.stats.input_cells = mesh.topology.num_cells();
   tree.stats.time.read = rq.read_seconds;
   tree.stats.time.check = rq.build_seconds;

@@ -78,6 +78,7 @@ TreeResult derived_result(const TreeResult &t, const ContourTree &tree,
   r.arcs = tree.arcs;
   r.pairs = tree_pairs(tree);
   r.stats = t.stats;
+  r.input = t.input;
   r.graph = t.graph;
   return r;
 }

@@ -9,11 +9,13 @@
 #include "tree/persistence.hpp"
 #include "tree/simplification.hpp"
 #include "tree/tree_stats.hpp"
+#include "util/fingerprint.hpp"
 #include "util/vec.hpp"
 
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -54,6 +56,10 @@ struct TreeResult {
   // Why the result was computed although the input is not a valid disk or sphere (hoct tree
   // --force); empty for a regular result.
   std::vector<std::string> forced;
+  // The input the tree was computed from (sizes, field, fingerprint: util/fingerprint.hpp), for
+  // a consumer of the tree to check it is given that mesh; unset when unknown (a tree file
+  // written before hoct recorded it, a tree computed outside compute_tree).
+  std::optional<InputFingerprint> input;
   // The graph the tree came from, with geometry (optional), and each arc drawn on the surface
   // (compute_arc_paths; empty = straight arcs).
   std::shared_ptr<const GeometricGraph> graph;

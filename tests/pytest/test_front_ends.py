@@ -134,3 +134,30 @@ def test_merge_duplicates_as_the_cli(data):
     for bad in (-1, 0.5, "lots"):
         with pytest.raises(hoct.HoctError, match="merge_duplicates"):
             hoct.read(path, merge_duplicates=bad)
+
+
+def test_the_input_fingerprint_as_the_cli(data):
+    # Mesh.fingerprint and Tree.input are what `hoct tree --json` records in "input"; the same
+    # mesh from arrays (another front end, the same data) has the same fingerprint, another
+    # field another one.
+    import json
+
+    import numpy as np
+
+    d, paths = data
+    path = paths["random"]
+    recorded = json.loads(cli_json(path, []))["input"]
+    mesh = hoct.read(path)
+    assert mesh.fingerprint == recorded["fingerprint"]
+    tree = hoct.contour_tree(mesh)
+    assert tree.input == recorded
+    assert tree.simplify_by("1%").input == recorded
+    assert json.loads(tree.to_json(timings=False))["input"] == recorded
+    points = np.array([[0, 0], [1, 0], [0, 1], [1, 1]], float)
+    cells = np.array([[0, 1, 2], [1, 3, 2]])
+    a = hoct.from_arrays(points, cells, np.array([0.0, 1.0, 2.0, 3.0]))
+    b = hoct.from_arrays(points, cells, np.array([0.0, 1.0, 2.0, 3.0]))
+    c = hoct.from_arrays(points, cells, np.array([0.0, 1.0, 2.0, np.nextafter(3.0, 4.0)]))
+    assert a.fingerprint == b.fingerprint != c.fingerprint
+    assert hoct.contour_tree(a).input == {"points": 4, "cells": 2, "field": "f",
+                                          "fingerprint": a.fingerprint}

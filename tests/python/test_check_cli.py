@@ -1,6 +1,7 @@
 """`hoct check TREE.json INPUT` (issue 8, item 6): passes on the exact tree of every generated
 dataset (reduced, augmented and simplified), fails with the findings and exit 1 on each kind of
-corrupted tree, and refuses malformed tree files with a clear message."""
+corrupted tree, and refuses malformed tree files, and the tree of another mesh, with a clear
+message."""
 import copy
 import json
 import os
@@ -78,8 +79,16 @@ with tempdir() as tmp:
     json.dump(c, open(p("range.json"), "w"))
     r = run("check", p("range.json"), p("gauss.vtu"), check=False)
     R.check(r.returncode == 1 and "refers to node 1000000" in r.stderr, f"range: {r.stderr.strip()}")
-    # A tree checked against the wrong input.
+    # A tree checked against the wrong input: refused by its recorded input fingerprint.
     r = run("check", p("gauss.json"), p("sphere.vtu"), check=False)
-    R.check(r.returncode == 1 and "FAIL" in r.stdout, "tree against the wrong mesh fails")
+    R.check(r.returncode == 1 and "is the tree of a mesh with" in r.stderr,
+            f"tree against the wrong mesh refused: {r.stderr.strip()}")
+    # Without the fingerprint (a file of an earlier version), the findings show it.
+    c = copy.deepcopy(t)
+    del c["input"]
+    json.dump(c, open(p("no-input.json"), "w"))
+    r = run("check", p("no-input.json"), p("sphere.vtu"), check=False)
+    R.check(r.returncode == 1 and "FAIL" in r.stdout and "records no input fingerprint" in r.stderr,
+            "tree without fingerprint against the wrong mesh fails")
 
 R.finish()

@@ -90,6 +90,8 @@ TEST(TreeJson, RoundTripAndErrors) {
   const Mesh mesh = build_mesh(testing::lagrange_mesh(
       v, t, [](int64_t) { return 2; }, testing::sphere_projection, f, rng));
   TreeResult tree = pl_contour_tree(refine(mesh, 2), false, "refine k=2");
+  ASSERT_TRUE(mesh.fingerprint);
+  tree.input = mesh.fingerprint;
   const auto dir = std::filesystem::temp_directory_path() / "hoct_tree_json_test";
   std::filesystem::create_directories(dir);
   const std::string path = (dir / "t.json").string();
@@ -103,6 +105,12 @@ TEST(TreeJson, RoundTripAndErrors) {
     EXPECT_EQ(back.nodes[i].location, tree.nodes[i].location);
   }
   EXPECT_EQ(back.arcs, tree.arcs);
+  ASSERT_TRUE(back.input);
+  EXPECT_TRUE(back.input->same_data(*mesh.fingerprint));
+  EXPECT_EQ(back.input->field, mesh.field_name);
+  tree.input.reset(); // a file of an earlier version: no "input"
+  write_tree_json(path, tree);
+  EXPECT_FALSE(read_tree_json(path).input);
   ASSERT_EQ(back.pairs.size(), tree.pairs.size());
   for (std::size_t i = 0; i < tree.pairs.size(); ++i)
     EXPECT_EQ(back.pairs[i].persistence(), tree.pairs[i].persistence());
@@ -126,6 +134,12 @@ TEST(TreeJson, RoundTripAndErrors) {
   expect_error(R"({"format":"hoct-contour-tree","nodes":[{"id":0,"type":"peak","value":1,
       "position":[0,0,0]}],"arcs":[],"pairs":[]})",
                "unknown node type");
+  expect_error(R"({"format":"hoct-contour-tree","input":{"points":3,"cells":1,"field":"f",
+      "fingerprint":"12345"},"nodes":[],"arcs":[],"pairs":[]})",
+               "16 hexadecimal digits");
+  expect_error(R"({"format":"hoct-contour-tree","input":{"cells":1,"fingerprint":"12345"},
+      "nodes":[],"arcs":[],"pairs":[]})",
+               "points");
   std::filesystem::remove_all(dir);
 }
 
