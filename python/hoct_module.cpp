@@ -21,6 +21,7 @@
 #include <pybind11/stl.h>
 
 #include <memory>
+#include <optional>
 
 namespace py = pybind11;
 using namespace hoct;
@@ -57,39 +58,50 @@ PyMesh make_mesh(MeshInput in, int threads = 0) {
 
 // Cells convert only safely (no forcecast): a float or uint64 array is refused, not truncated
 // or wrapped (hoct.from_arrays converts the arrays a .vtu file could hold, with messages).
+// `blocks`: one (cells, nodes per cell) array per cell degree or per block of a meshio mesh.
+// With merge_tolerance >= 0, points at the same position are merged first (--merge-duplicates).
 PyMesh from_arrays(py::array_t<double, py::array::c_style | py::array::forcecast> points,
-                   py::array_t<int64_t, py::array::c_style> cells,
-                   py::array_t<double, py::array::c_style | py::array::forcecast> values) {
+                   const std::vector<py::array_t<int64_t, py::array::c_style>> &blocks,
+                   py::array_t<double, py::array::c_style | py::array::forcecast> values,
+                   double merge_tolerance, const std::string &field_name, bool float32_points) {
   if (points.ndim() != 2 || (points.shape(1) != 2 && points.shape(1) != 3))
     throw Error("from_arrays: points must have shape (n, 2) or (n, 3)");
-  if (cells.ndim() != 2)
-    throw Error("from_arrays: cells must have shape (cells, nodes per cell), nodes in VTK order");
   if (values.ndim() != 1 || values.shape(0) != points.shape(0))
     throw Error("from_arrays: values must have one entry per point");
-  const int degree = degree_from_node_count(cells.shape(1));
-  if (degree < 1)
-    throw Error("from_arrays: " + std::to_string(cells.shape(1)) +
-                " nodes per cell is not a complete triangle (3, 6, 10, 15, ...)");
   MeshInput in;
   const auto p = points.unchecked<2>();
   for (py::ssize_t i = 0; i < points.shape(0); ++i)
     in.points.push_back({p(i, 0), p(i, 1), points.shape(1) == 3 ? p(i, 2) : 0.0});
   in.values.assign(values.data(), values.data() + values.shape(0));
-  const auto &perm = node_order_to_lattice(NodeOrdering::Vtk, degree);
-  const auto c = cells.unchecked<2>();
-  std::vector<int64_t> nodes(perm.size());
-  for (py::ssize_t k = 0; k < cells.shape(0); ++k) {
-    for (std::size_t i = 0; i < perm.size(); ++i) {
-      const int64_t id = c(k, static_cast<py::ssize_t>(i));
-      if (id < 0 || id >= points.shape(0))
-        throw Error("from_arrays: cell " + std::to_string(k) + " refers to point " +
-                    std::to_string(id) + ", but there are " + std::to_string(points.shape(0)));
-      nodes[perm[i]] = id;
+  if (float32_points)
+    in.coordinate_precision = 0x1p-24;
+  int64_t first = 0; // the cell index of the block's first cell, for messages
+  for (const auto &cells : blocks) {
+    if (cells.ndim() != 2)
+      throw Error("from_arrays: cells must have shape (cells, nodes per cell), nodes in VTK order");
+    const int degree = degree_from_node_count(cells.shape(1));
+    if (degree < 1)
+      throw Error("from_arrays: " + std::to_string(cells.shape(1)) +
+                  " nodes per cell is not a complete triangle (3, 6, 10, 15, ...)");
+    const auto &perm = node_order_to_lattice(NodeOrdering::Vtk, degree);
+    const auto c = cells.unchecked<2>();
+    std::vector<int64_t> nodes(perm.size());
+    for (py::ssize_t k = 0; k < cells.shape(0); ++k) {
+      for (std::size_t i = 0; i < perm.size(); ++i) {
+        const int64_t id = c(k, static_cast<py::ssize_t>(i));
+        if (id < 0 || id >= points.shape(0))
+          throw Error("from_arrays: cell " + std::to_string(first + k) + " refers to point " +
+                      std::to_string(id) + ", but there are " + std::to_string(points.shape(0)));
+        nodes[perm[i]] = id;
+      }
+      in.add_cell(degree, nodes.data());
     }
-    in.add_cell(degree, nodes.data());
+    first += cells.shape(0);
   }
   in.source = "arrays";
-  in.field_name = "f";
+  in.field_name = field_name;
+  if (merge_tolerance >= 0)
+    merge_duplicate_points(in, merge_tolerance, thread_count(0));
   return make_mesh(std::move(in));
 }
 
@@ -370,17 +382,25 @@ PYBIND11_MODULE(_hoct, m) {
   m.def(
       "read",
       [](const std::string &path, const std::string &scalar, const std::string &max_memory,
-         int threads, double merge_tolerance) {
+         int threads, double merge_tolerance, const std::string &component, int64_t step,
+         std::optional<double> time) {
         ReadLimits limits = read_limits_for(no_nul(max_memory, "read: max_memory"));
         limits.threads = thread_count(threads);
-        MeshInput input =
-            read_mesh(no_nul(path, "read: path"), no_nul(scalar, "read: scalar"), limits);
+        FieldSelection field(no_nul(scalar, "read: scalar"));
+        if (!component.empty())
+          field.component = parse_component(component);
+        field.step = step;
+        field.time = time;
+        MeshInput input = read_mesh(no_nul(path, "read: path"), field, limits);
         if (merge_tolerance >= 0) // as `hoct tree --merge-duplicates=TOL`
           merge_duplicate_points(input, merge_tolerance, thread_count(threads));
         return make_mesh(std::move(input), threads);
       },
-      py::call_guard<py::gil_scoped_release>());
+      py::arg("path"), py::arg("scalar"), py::arg("max_memory"), py::arg("threads"),
+      py::arg("merge_tolerance"), py::arg("component") = "", py::arg("step") = -1,
+      py::arg("time") = py::none(), py::call_guard<py::gil_scoped_release>());
   m.def("from_arrays", &from_arrays);
+  m.def("is_bookkeeping_array", &is_bookkeeping_array);
   m.def("contour_tree", &py_contour_tree, py::call_guard<py::gil_scoped_release>());
   m.def(
       "generate",

@@ -20,8 +20,15 @@ __all__ = ["read", "from_arrays", "from_meshio", "generate", "contour_tree", "Me
            "HoctError"]
 
 
-def read(path, scalar=None, max_memory=None, threads=None, merge_duplicates=None):
-    """Read a .vtu or .msh file; `scalar` names the point-data array (default: the first).
+def read(path, scalar=None, max_memory=None, threads=None, merge_duplicates=None,
+         component=None, step=None, time=None):
+    """Read a mesh file (.vtu, .msh, ...); `scalar` names the point-data array or view (default:
+    the active scalars, else the first one-component floating-point array that is no id, ghost
+    or mask array), as `--scalar` does.
+
+    `component`: of a vector array, an index (0, 1, ...), 'x', 'y', 'z' or 'magnitude', as
+    `--component`. `step` / `time`: the time step of files that hold several (index from 0,
+    negative from the end; default the last), as `--step` / `--time`.
 
     `threads`: threads that read large arrays and build the mesh (default: every hardware
     thread, as `contour_tree`); the mesh is the same for any number.
@@ -52,23 +59,16 @@ def read(path, scalar=None, max_memory=None, threads=None, merge_duplicates=None
     else:
         budget = _args.text(max_memory, "read: max_memory")
     nthreads = _args.threads(threads, "read")
-    if merge_duplicates is None or merge_duplicates is False:
-        tolerance = -1.0
-    elif merge_duplicates is True:
-        tolerance = 1e-9
-    elif (isinstance(merge_duplicates, numbers.Real) and not isinstance(merge_duplicates, bool)
-          and 0 <= merge_duplicates <= 0.1):
-        tolerance = float(merge_duplicates)
-    else:
-        raise HoctError("read: merge_duplicates must be True or a tolerance between 0 and 0.1, "
-                        "got %r" % (merge_duplicates,))
-    return _hoct.read(path, scalar, budget, nthreads, tolerance)
+    tolerance = _args.merge_tolerance(merge_duplicates, "read")
+    return _hoct.read(path, scalar, budget, nthreads, tolerance,
+                      _args.component(component, "read"), _args.step(step, "read"),
+                      _args.time(time, "read"))
 
 
 _TRIANGLE_TYPES = {5: 1, 22: 2}  # VTK_TRIANGLE, VTK_QUADRATIC_TRIANGLE; 69 = any degree
 
 
-def from_arrays(points, cells, values, degree=None, cell_types=None):
+def from_arrays(points, cells, values, degree=None, cell_types=None, merge_duplicates=None):
     """A mesh from numpy arrays: points (n, 2|3), cells (cells, nodes) of complete Lagrange
     triangles in VTK node order (3, 6, 10, 15, ... nodes per cell), values (n,). `degree`, if
     given, must match the node count; `cell_types` (VTK codes 5, 22 or 69 per cell), if given,
@@ -78,11 +78,22 @@ def from_arrays(points, cells, values, degree=None, cell_types=None):
     Cell indices follow the rules of a .vtu file's connectivity: an integer array, or floating
     point values that are all whole, finite and within int64 (1.5, nan, 1e20 are refused with
     their position). A numpy masked array with a masked entry is refused (points, cells, values
-    and cell_types alike): hoct does not guess the values a mask hides."""
-    return _from_arrays(points, cells, values, degree, cell_types, "from_arrays")
+    and cell_types alike): hoct does not guess the values a mask hides.
+
+    `merge_duplicates`: as for `read` (points at the same position merged first: deal.II's
+    simplex output and DG-projected fields repeat them)."""
+    return _from_arrays(points, cells, values, degree, cell_types, "from_arrays",
+                        _args.merge_tolerance(merge_duplicates, "from_arrays"))
 
 
-def _from_arrays(points, cells, values, degree, cell_types, what):
+def _float32(a):
+    import numpy as np
+
+    return getattr(a, "dtype", None) == np.float32
+
+
+def _from_arrays(points, cells, values, degree, cell_types, what, tolerance=-1.0, field="f"):
+    float32 = _float32(points)
     points = _args.real_array(points, what + ": points")
     values = _args.real_array(values, what + ": values")
     cells = _args.index_array(cells, what + ": cells")
@@ -100,7 +111,7 @@ def _from_arrays(points, cells, values, degree, cell_types, what):
                                         (_TRIANGLE_TYPES[t] + 1) * (_TRIANGLE_TYPES[t] + 2) // 2 != n):
                 raise HoctError("%s: cell %d has VTK type %d, which does not match %d-node "
                                 "triangles" % (what, i, t, n))
-    return _hoct.from_arrays(points, cells, values)
+    return _hoct.from_arrays(points, [cells], values, tolerance, field, float32)
 
 
 def generate(name, degree=0, cells=0, seed=1, frequency=1.0, plateau=0.0, scale=1.0, offset=0.0):
@@ -125,15 +136,85 @@ def generate(name, degree=0, cells=0, seed=1, frequency=1.0, plateau=0.0, scale=
 dataset_names = _hoct.dataset_names
 
 
-def from_meshio(mesh, scalar=None):
-    """A mesh from a meshio.Mesh (its triangle blocks, VTK node order; point data `scalar` or the
-    first)."""
-    blocks = [b for b in mesh.cells if b.type.startswith("triangle")]
-    if len(blocks) != 1:
-        raise HoctError("from_meshio: expected exactly one block of triangles, got %d" % len(blocks))
-    name = scalar or next(iter(mesh.point_data))
-    return _from_arrays(mesh.points, blocks[0].data, mesh.point_data[name], None, None,
-                        "from_meshio")
+# meshio's cell types that are no part of a surface's field: skipped, as the file readers skip
+# vertex and line cells.
+_MESHIO_SKIPPED = ("vertex", "line", "VTK_LAGRANGE_CURVE")
+
+
+def from_meshio(mesh, scalar=None, component=None, merge_duplicates=None):
+    """A mesh from a meshio.Mesh: every triangle block (triangle, triangle6, triangle10, ...
+    and VTK_LAGRANGE_TRIANGLE of any degree, VTK node order; several blocks, e.g. a Gmsh
+    model's surfaces, together), vertex and line blocks skipped. The field is point data
+    `scalar`, else the first one-component floating-point array that is no id, ghost or mask
+    array (as `read`); (n, 1) arrays are one-component; `component` takes one component of a
+    vector array or its 'magnitude'. `merge_duplicates` as for `read`."""
+    import numpy as np
+
+    what = "from_meshio"
+    tolerance = _args.merge_tolerance(merge_duplicates, what)
+    blocks = []
+    for i, block in enumerate(mesh.cells):
+        kind = block.type
+        if kind.startswith("triangle") or kind == "VTK_LAGRANGE_TRIANGLE":
+            blocks.append(_args.index_array(block.data, "%s: cell block %d (%s)" % (what, i, kind)))
+        elif not kind.startswith(_MESHIO_SKIPPED):
+            raise HoctError("%s: cell block %d is of type '%s': hoct reads triangles (triangle, "
+                            "triangle6, triangle10, ..., VTK_LAGRANGE_TRIANGLE)" % (what, i, kind))
+    if not blocks:
+        raise HoctError("%s: no triangle blocks (blocks: %s)"
+                        % (what, ", ".join(b.type for b in mesh.cells) or "none"))
+    data = mesh.point_data
+    if not data:
+        raise HoctError("%s: the mesh has no point data (a field at its nodes)" % what)
+
+    def components(a):
+        a = np.asarray(a)
+        return 1 if a.ndim == 1 or (a.ndim == 2 and a.shape[1] == 1) else (
+            a.shape[1] if a.ndim == 2 else 0)
+
+    listed = ", ".join("%s (%d components)" % (k, components(v)) if components(v) != 1 else k
+                       for k, v in data.items())
+    comp = _args.component(component, what)
+    vector = comp != ""
+    if scalar is not None:
+        name = _args.text(scalar, what + ": scalar")
+        if name not in data:
+            raise HoctError("%s: no point data named '%s' (available: %s)" % (what, name, listed))
+    else:
+        suitable = [k for k, v in data.items() if (components(v) > 1 if vector else
+                                                    components(v) == 1)
+                    and not _hoct.is_bookkeeping_array(k)]
+        floating = [k for k in suitable if np.issubdtype(np.asarray(data[k]).dtype, np.floating)]
+        if not suitable:
+            raise HoctError("%s: no %s point data but ids, ghost levels or masks (available: %s):"
+                            " name one with scalar=" % (what, "vector" if vector else
+                                                        "scalar (one-component)", listed))
+        name = (floating or suitable)[0]
+    values = np.asarray(data[name])
+    n = components(values)
+    if not vector:
+        if n != 1:
+            raise HoctError("%s: point data '%s' has %d components; a scalar field needs 1 "
+                            "(choose one with component=N, or component='magnitude')"
+                            % (what, name, n))
+        values, label = values.reshape(-1), name
+    else:
+        if n < 2:
+            raise HoctError("%s: component: point data '%s' has one component" % (what, name))
+        values = _args.real_array(values, what + ": values")
+        if comp == "magnitude" or comp in ("mag", "norm"):
+            values, label = np.sqrt((values * values).sum(axis=1)), "|%s|" % name
+        else:
+            k = {"x": 0, "y": 1, "z": 2}.get(comp)
+            k = int(comp) if k is None else k
+            if k >= n:
+                raise HoctError("%s: component %d: point data '%s' has %d components (0 to %d)"
+                                % (what, k, name, n, n - 1))
+            values, label = values[:, k], "%s[%d]" % (name, k)
+    float32 = _float32(mesh.points)
+    points = _args.real_array(mesh.points, what + ": points")
+    values = _args.real_array(values, what + ": values")
+    return _hoct.from_arrays(points, blocks, values, tolerance, label, float32)
 
 
 def contour_tree(mesh, simplify=None, threads=None, method="exact", refine=4, keep_flat=False,

@@ -174,3 +174,44 @@ def threshold(x, what):
     except OverflowError:
         raise HoctError("%s: %r is not a threshold (a number, or a percentage like 0.5%%)"
                         % (what, x))
+
+
+def merge_tolerance(x, what):
+    """merge_duplicates=: None/False (no merge, -1), True (1e-9) or a tolerance in [0, 0.1]."""
+    if x is None or x is False:
+        return -1.0
+    if x is True:
+        return 1e-9
+    if isinstance(x, numbers.Real) and not isinstance(x, bool) and 0 <= x <= 0.1:
+        return float(x)
+    raise HoctError("%s: merge_duplicates must be True or a tolerance between 0 and 0.1, got %r"
+                    % (what, x))
+
+
+def component(x, what):
+    """component=: None (a scalar field), an index >= 0, 'x' / 'y' / 'z' or 'magnitude'; as
+    the text --component takes."""
+    if x is None:
+        return ""
+    if isinstance(x, str):
+        if x.lower() in ("x", "y", "z", "magnitude", "mag", "norm"):
+            return x.lower()
+        raise HoctError("%s: component must be an index, 'x', 'y', 'z' or 'magnitude', got %r"
+                        % (what, x))
+    return str(integer(x, what + ": component", 0, 63))
+
+
+def step(x, what):
+    """step=: None (the last) or an index (negative from the end)."""
+    if x is None:
+        return -1
+    return integer(x, what + ": step", -(1 << 62), 1 << 62)
+
+
+def time(x, what):
+    """time=: None or a finite number."""
+    if x is None:
+        return None
+    if isinstance(x, bool) or not isinstance(x, numbers.Real) or not math.isfinite(x):
+        raise HoctError("%s: time must be a finite number, got %r" % (what, x))
+    return float(x)
