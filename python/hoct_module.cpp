@@ -7,6 +7,7 @@
 #include "io/tree_svg_writer.hpp"
 #include "io/tree_vtp_writer.hpp"
 #include "mesh/duplicate_points.hpp"
+#include "mesh/gll_nodes.hpp"
 #include "mesh/mesh.hpp"
 #include "pipeline/compute_tree.hpp"
 #include "pipeline/domain_check.hpp"
@@ -47,6 +48,15 @@ template <class T> py::array_t<T> array_1d(const std::vector<T> &v) {
 // The mesh built on `threads` threads (0 = every hardware thread, as the command line's default;
 // the same mesh for any number). Problems a forced tree can go past (inverted cells, duplicate
 // vertices) are left to contour_tree, as `hoct tree` does; any other makes it throw here.
+PyMesh make_mesh_from_samples(MeshInput in, const std::vector<CellSamples> &samples, int threads) {
+  PyMesh m;
+  m.input = std::move(in);
+  m.mesh = std::make_shared<Mesh>(build_mesh_from_samples(
+      m.input, samples, {.throw_on_error = false, .threads = thread_count(threads)}));
+  require_valid_mesh(*m.mesh, /*allow_forceable=*/true);
+  return m;
+}
+
 PyMesh make_mesh(MeshInput in, int threads = 0) {
   PyMesh m;
   m.input = std::move(in);
@@ -394,6 +404,9 @@ PYBIND11_MODULE(_hoct, m) {
         MeshInput input = read_mesh(no_nul(path, "read: path"), field, limits);
         if (merge_tolerance >= 0) // as `hoct tree --merge-duplicates=TOL`
           merge_duplicate_points(input, merge_tolerance, thread_count(threads));
+        GllResampling gll = resample_gll_cells(input); // as the command line reads
+        if (gll.cells > 0)
+          return make_mesh_from_samples(std::move(input), gll.samples, threads);
         return make_mesh(std::move(input), threads);
       },
       py::arg("path"), py::arg("scalar"), py::arg("max_memory"), py::arg("threads"),

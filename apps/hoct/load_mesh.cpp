@@ -3,6 +3,7 @@
 #include "io/read_mesh.hpp"
 #include "memory_guard.hpp"
 #include "mesh/duplicate_points.hpp"
+#include "mesh/gll_nodes.hpp"
 #include "util/error.hpp"
 #include "util/parallel_for.hpp"
 #include "util/stopwatch.hpp"
@@ -26,9 +27,19 @@ LoadedMesh load_mesh(const std::string &path, const FieldSelection &field, bool 
                    "bounding-box diagonal)\n",
                    static_cast<long long>(m.merged_points), path.c_str(), merge_tolerance);
   }
+  const GllResampling gll = resample_gll_cells(r.input);
+  if (gll.cells > 0)
+    std::fprintf(stderr,
+                 "hoct: note: %lld cell(s) of %s have their nodes at Gauss-Lobatto-Legendre "
+                 "points (as DOLFINx writes degree >= 3), though VTK's Lagrange cells label them "
+                 "as equispaced: their values are read as samples at the nodes' true positions\n",
+                 static_cast<long long>(gll.cells), path.c_str());
   r.read_seconds = clock.lap();
   const MeshBuildOptions build{.throw_on_error = strict, .threads = thread_count(threads)};
-  r.mesh = keep_input ? build_mesh(r.input, build) : build_mesh(std::move(r.input), build);
+  if (gll.cells > 0)
+    r.mesh = build_mesh_from_samples(r.input, gll.samples, build);
+  else
+    r.mesh = keep_input ? build_mesh(r.input, build) : build_mesh(std::move(r.input), build);
   r.build_seconds = clock.lap();
   return r;
 }

@@ -1,0 +1,163 @@
+#include "mesh/gll_nodes.hpp"
+
+#include "poly/lagrange_to_bernstein.hpp"
+#include "poly/lattice.hpp"
+
+#include <cmath>
+
+namespace hoct {
+
+std::vector<double> gll_points(int d) {
+  // The interior points are the roots of P_d'(x) on [-1, 1]: Newton from the Chebyshev-Gauss-
+  // Lobatto points on (1 - x^2) P_d'(x) = d (P_{d-1}(x) - x P_d(x)).
+  std::vector<double> t(static_cast<std::size_t>(d) + 1);
+  for (int k = 0; k <= d; ++k) {
+    double x = -std::cos(M_PI * k / d);
+    if (k > 0 && k < d)
+      for (int it = 0; it < 100; ++it) {
+        double p0 = 1, p1 = x; // P_0, P_1, then P_{n-1}, P_n
+        for (int n = 2; n <= d; ++n) {
+          const double p2 = ((2 * n - 1) * x * p1 - (n - 1) * p0) / n;
+          p0 = p1;
+          p1 = p2;
+        }
+        // f = P_{d-1} - x P_d (zero where P_d' is), f' = -d P_d... via (1 - x^2) P_d'' etc.:
+        // Newton on g(x) = (1 - x^2) P_d'(x) / d = P_{d-1} - x P_d, g' = -(d + 1) P_d.
+        const double g = p0 - x * p1, dg = -(d + 1) * p1;
+        const double step = g / dg;
+        x -= step;
+        if (std::abs(step) < 1e-16)
+          break;
+      }
+    t[k] = (x + 1) / 2;
+  }
+  t.front() = 0;
+  t.back() = 1;
+  return t;
+}
+
+namespace {
+
+// The reference position (u, v) of point q in the straight triangle p0, p1, p2 (least squares
+// in its plane) and q's distance from that plane; false for a degenerate triangle.
+bool reference_position(const Vec3 &p0, const Vec3 &p1, const Vec3 &p2, const Vec3 &q, Vec2 &uv,
+                        double &off_plane) {
+  Vec3 e1, e2, r;
+  for (int a = 0; a < 3; ++a) {
+    e1[a] = p1[a] - p0[a];
+    e2[a] = p2[a] - p0[a];
+    r[a] = q[a] - p0[a];
+  }
+  auto dot = [](const Vec3 &x, const Vec3 &y) { return x[0] * y[0] + x[1] * y[1] + x[2] * y[2]; };
+  const double a11 = dot(e1, e1), a12 = dot(e1, e2), a22 = dot(e2, e2);
+  const double det = a11 * a22 - a12 * a12;
+  if (!(det > 1e-24 * a11 * a22))
+    return false;
+  const double b1 = dot(e1, r), b2 = dot(e2, r);
+  uv = {(a22 * b1 - a12 * b2) / det, (a11 * b2 - a12 * b1) / det};
+  Vec3 rest;
+  for (int a = 0; a < 3; ++a)
+    rest[a] = r[a] - uv[0] * e1[a] - uv[1] * e2[a];
+  off_plane = std::sqrt(dot(rest, rest));
+  return true;
+}
+
+} // namespace
+
+GllResampling resample_gll_cells(MeshInput &in) {
+  GllResampling r;
+  const std::size_t nc = in.num_cells();
+  std::vector<char> gll(nc, 0);
+  std::vector<std::vector<Vec2>> positions(nc);
+  std::vector<std::vector<double>> gll_of(kMaxDegree + 1);
+  constexpr double kTol = 1e-6;
+  for (std::size_t c = 0; c < nc; ++c) {
+    const int d = in.cell_degree[c];
+    if (d < 3)
+      continue;
+    if (gll_of[d].empty())
+      gll_of[d] = gll_points(d);
+    const std::vector<double> &g = gll_of[d];
+    const int64_t *nodes = &in.cell_nodes[in.cell_offsets[c]];
+    const Vec3 &p0 = in.points[nodes[corner_index(d, 0)]],
+               &p1 = in.points[nodes[corner_index(d, 1)]],
+               &p2 = in.points[nodes[corner_index(d, 2)]];
+    const double size =
+        std::sqrt((p1[0] - p0[0]) * (p1[0] - p0[0]) + (p1[1] - p0[1]) * (p1[1] - p0[1]) +
+                  (p1[2] - p0[2]) * (p1[2] - p0[2]));
+    // Most files' cells are equispaced: the first node of edge 0 tells at once.
+    {
+      Vec2 first;
+      double off = 0;
+      if (!reference_position(p0, p1, p2, in.points[nodes[1]], first, off) ||
+          std::abs(first[0] - g[1]) > kTol || std::abs(first[1]) > kTol || off > kTol * size)
+        continue;
+    }
+    const int n = lattice_size(d);
+    std::vector<Vec2> uv(static_cast<std::size_t>(n));
+    bool equispaced = true, ok = true;
+    for (int i = 0; i < n && ok; ++i) {
+      double off = 0;
+      if (!reference_position(p0, p1, p2, in.points[nodes[i]], uv[i], off) || off > kTol * size) {
+        ok = false; // degenerate, or curved out of its plane
+        break;
+      }
+      const auto [a, b] = lattice_point(d, i);
+      const double u = uv[i][0], v = uv[i][1];
+      if (std::abs(u - double(a) / d) > kTol || std::abs(v - double(b) / d) > kTol)
+        equispaced = false;
+      if (b == 0 || a == 0 || a + b == d) { // an edge node: at the GLL points of its edge
+        ok = std::abs(u - (b == 0 || a + b == d ? g[a] : 0.0)) <= kTol &&
+             std::abs(v - (a == 0 || a + b == d ? g[b] : 0.0)) <= kTol;
+      } else { // inside
+        ok = u > kTol && v > kTol && u + v < 1 - kTol;
+      }
+    }
+    if (ok && !equispaced) {
+      gll[c] = 1;
+      positions[c] = std::move(uv);
+      ++r.cells;
+    }
+  }
+  if (r.cells == 0)
+    return r;
+  r.samples.resize(nc);
+  for (std::size_t c = 0; c < nc; ++c) {
+    const int d = in.cell_degree[c];
+    const int n = lattice_size(d);
+    const int64_t *nodes = &in.cell_nodes[in.cell_offsets[c]];
+    CellSamples &s = r.samples[c];
+    s.degree = d;
+    s.values.resize(static_cast<std::size_t>(n));
+    for (int i = 0; i < n; ++i)
+      s.values[i] = in.values[nodes[i]];
+    if (gll[c]) {
+      s.positions = std::move(positions[c]);
+    } else {
+      s.positions.resize(static_cast<std::size_t>(n));
+      for (int i = 0; i < n; ++i) {
+        const auto [a, b] = lattice_point(d, i);
+        s.positions[i] = {double(a) / d, double(b) / d};
+      }
+    }
+  }
+  // The GLL cells' nodes onto the equispaced lattice of their straight triangles (a node shared
+  // by two such cells lands on the same point from both: the lattice of an edge is symmetric).
+  for (std::size_t c = 0; c < nc; ++c) {
+    if (!gll[c])
+      continue;
+    const int d = in.cell_degree[c];
+    const int64_t *nodes = &in.cell_nodes[in.cell_offsets[c]];
+    const Vec3 p0 = in.points[nodes[corner_index(d, 0)]], p1 = in.points[nodes[corner_index(d, 1)]],
+               p2 = in.points[nodes[corner_index(d, 2)]];
+    for (int i = 0; i < lattice_size(d); ++i) {
+      const auto [a, b] = lattice_point(d, i);
+      const double u = double(a) / d, v = double(b) / d;
+      for (int k = 0; k < 3; ++k)
+        in.points[nodes[i]][k] = (1 - u - v) * p0[k] + u * p1[k] + v * p2[k];
+    }
+  }
+  return r;
+}
+
+} // namespace hoct
