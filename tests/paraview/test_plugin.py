@@ -178,29 +178,10 @@ def catch_errors(proxy):
     return messages
 
 
-def grid_source(points, cells, values):
-    """A ParaView source holding a vtkUnstructuredGrid made here."""
-    g = vtkUnstructuredGrid()
-    pts = vtkPoints()
-    for p in points:
-        pts.InsertNextPoint(p)
-    g.SetPoints(pts)
-    for cell_type, ids in cells:
-        g.InsertNextCell(cell_type, len(ids), ids)
-    a = vtkDoubleArray()
-    a.SetName("f")
-    for v in values:
-        a.InsertNextValue(v)
-    g.GetPointData().SetScalars(a)
-    source = pv.TrivialProducer()
-    source.GetClientSideObject().SetOutput(g)
-    source.UpdatePipeline()
-    return source
-
-
-def arrays_source(points, cells, arrays):
-    """A source holding a grid with the point arrays `arrays` ((class, name, components, values
-    per point)), none of them the active scalars."""
+def arrays_source(points, cells, arrays, active=None):
+    """A ParaView source holding a vtkUnstructuredGrid made here, with the point arrays `arrays`
+    ((class, name, components, values per point)); `active` names the active scalars (none by
+    default)."""
     g = vtkUnstructuredGrid()
     pts = vtkPoints()
     for p in points:
@@ -216,10 +197,17 @@ def arrays_source(points, cells, arrays):
             for _ in range(comps):
                 a.InsertNextValue(v)
         g.GetPointData().AddArray(a)
+    if active is not None:
+        g.GetPointData().SetActiveScalars(active)
     source = pv.TrivialProducer()
     source.GetClientSideObject().SetOutput(g)
     source.UpdatePipeline()
     return source
+
+
+def grid_source(points, cells, values):
+    """A source holding a grid whose active scalars are `values`, named f."""
+    return arrays_source(points, cells, [(vtkDoubleArray, "f", 1, values)], active="f")
 
 
 def scalar_used(proxy):
