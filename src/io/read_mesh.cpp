@@ -10,8 +10,8 @@
 
 namespace hoct {
 
-MeshInput read_mesh(const std::string &path, const FieldSelection &field,
-                    const ReadLimits &limits) {
+MeshInput read_mesh(const std::string &path, const FieldSelection &field, const ReadLimits &limits,
+                    FileContents *contents) {
   if (const std::string what = special_file(path); !what.empty())
     throw InputError(path + ": " + what);
   std::string ext = std::filesystem::path(path).extension().string();
@@ -20,9 +20,9 @@ MeshInput read_mesh(const std::string &path, const FieldSelection &field,
   if (ext == ".vtu")
     return read_vtu(path, field, limits);
   if (ext == ".msh")
-    return read_msh(path, field, limits);
+    return read_msh(path, field, limits, contents);
   throw InputError(path + ": unknown file type '" + ext +
-                   "' (supported: .vtu VTK XML UnstructuredGrid, .msh Gmsh 4.1 or 2.2 ascii)");
+                   "' (supported: .vtu VTK XML UnstructuredGrid, .msh Gmsh 4.1 or 2.2)");
 }
 
 } // namespace hoct

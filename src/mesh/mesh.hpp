@@ -26,7 +26,7 @@ struct MeshBuildTimes {
 };
 
 struct Mesh {
-  std::string source, field_name;
+  std::string source, field_name, field_detail;
   int64_t num_points = 0;
   Topology topology;
   Field field;

@@ -21,8 +21,9 @@ struct MeshInput {
   // Every node of the mesh (corner and higher-order nodes), with its 3D position and field value.
   PooledVector<Vec3> points;
   PooledVector<double> values;
-  std::string field_name; // name of the scalar array, for reports
-  std::string source;     // file name or generator description, for messages
+  std::string field_name;   // name of the scalar array, for reports
+  std::string field_detail; // which of several time steps, e.g. "(step 2 of 3, time 0.2)"
+  std::string source;       // file name or generator description, for messages
 
   // Cells in compressed-row form: the nodes of cell c are
   // cell_nodes[cell_offsets[c] .. cell_offsets[c+1]), (d+1)(d+2)/2 of them for degree d,
