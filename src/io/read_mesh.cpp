@@ -2,6 +2,7 @@
 
 #include "io/file_bytes.hpp"
 #include "io/msh_reader.hpp"
+#include "io/pos_reader.hpp"
 #include "io/vtu_reader.hpp"
 #include "util/error.hpp"
 
@@ -21,8 +22,11 @@ MeshInput read_mesh(const std::string &path, const FieldSelection &field, const 
     return read_vtu(path, field, limits);
   if (ext == ".msh")
     return read_msh(path, field, limits, contents);
-  throw InputError(path + ": unknown file type '" + ext +
-                   "' (supported: .vtu VTK XML UnstructuredGrid, .msh Gmsh 4.1 or 2.2)");
+  if (ext == ".pos")
+    return read_pos(path, field, limits, contents);
+  throw InputError(
+      path + ": unknown file type '" + ext +
+      "' (supported: .vtu VTK XML UnstructuredGrid, .msh Gmsh 4.1 or 2.2, .pos Gmsh parsed views)");
 }
 
 } // namespace hoct

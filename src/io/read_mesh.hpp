@@ -1,4 +1,4 @@
-// Reads a mesh file of any supported format, chosen by extension (.vtu, .msh).
+// Reads a mesh file of any supported format, chosen by extension (.vtu, .msh, .pos).
 #pragma once
 
 #include "io/field_selection.hpp"

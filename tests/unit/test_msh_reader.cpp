@@ -8,10 +8,12 @@
 //    the place (line, or byte offset in binary files) and names the problem;
 //  - files written by Gmsh with $ElementNodeData (continuous and not), $ElementData, binary MSH
 //    2.2 and views of several time steps (the second group of make_gmsh_fixtures.py);
+//  - .pos views (ST by Gmsh, ST2 in its syntax), merged by position, and malformed ones;
 //  - every truncation and many corruptions of the good files, which must fail cleanly.
 #include "io/file_contents.hpp"
 #include "io/msh_element_types.hpp"
 #include "io/msh_reader.hpp"
+#include "io/pos_reader.hpp"
 #include "poly/lattice.hpp"
 #include "util/error.hpp"
 
@@ -671,6 +673,120 @@ TEST(MshReader, MalformedElementNodeDataAndMsh22Binary) {
                  put<double>(b, data + 16, std::numeric_limits<double>::infinity());
                }),
                at(data + 16), "has a non-finite value (inf)");
+}
+
+// ---- .pos files (parsed views) ----
+
+std::string pos_error(const std::string &text, const FieldSelection &field = {}) {
+  try {
+    read_pos_buffer(text, "t.pos", field);
+  } catch (const InputError &e) {
+    return e.what();
+  }
+  ADD_FAILURE() << text << " was accepted";
+  return "";
+}
+
+TEST(MshReader, PosViewsMergeNodesByPosition) {
+  // gmsh_square_p1.pos: written by Gmsh, steps f and f + 10 at times 0 and 1.
+  const std::string p1 = data_path("gmsh_square_p1.pos");
+  const MeshInput last = read_pos(p1);
+  ASSERT_EQ(last.num_cells(), 2u);
+  EXPECT_EQ(last.points.size(), 4u); // 6 nodes, 2 shared
+  EXPECT_EQ(last.field_detail, "(step 1 of 2, time 1)");
+  const MeshInput first = read_pos(p1, view("f", 0));
+  expect_gmsh_square(first, 1);
+  for (std::size_t i = 0; i < 4; ++i)
+    EXPECT_EQ(last.values[i], first.values[i] + 10);
+  EXPECT_EQ(read_pos(p1, at_time("f", 1)).values, last.values);
+  // ST2, with a text annotation (skipped) and a comment.
+  const MeshInput p2 = read_pos(data_path("square_p2.pos"));
+  expect_gmsh_square(p2, 2);
+  FileContents c;
+  read_pos(p1, {}, {}, &c);
+  ASSERT_EQ(c.fields.size(), 1u);
+  EXPECT_EQ(c.fields[0].steps.size(), 2u);
+}
+
+TEST(MshReader, PosMalformedAndRefusedContents) {
+  const std::string tri = "ST(0,0,0,1,0,0,0,1,0){1,2,3};\n";
+  const struct {
+    std::string text, phrase;
+  } cases[] = {
+      {"View \"v\" {\n" + tri + "ST(0,0,0,0,1,0,-1,0,0){1.5,3,4};\n};\n",
+       "t.pos:3: View 'v': the point (0, 0, 0) has values 1 (element 1) and 1.5 (element 2): the "
+       "field is discontinuous there (largest jump 0.5 of a range 3); hoct needs a continuous "
+       "field"},
+      {"View \"v\" {\nVT(0,0,0,1,0,0,0,1,0){1,0,0,1,0,0,1,0,0};\n};\n",
+       "t.pos:2: View 'v': VT (vector triangle) is not read: hoct reads scalar triangles"},
+      {"View \"v\" {\nSQ(0,0,0,1,0,0,1,1,0,0,1,0){1,2,3,4};\n};\n", "SQ (scalar quadrangle)"},
+      {"View \"v\" {\nXX(0){1};\n};\n", "t.pos:2: View 'v': unknown element type 'XX'"},
+      {"View \"v\" {\nT2(1,1,0){\"only text\"};\n};\n",
+       "t.pos: no View holds scalar triangles (ST, ST2, ST3) (views: v (no scalar triangles))"},
+      {"View \"v\" {\nST(0,0,0,1,0,0,0,1,0){1,2,1/3};\n};\n",
+       "t.pos:2: expected ',' or '}' after a value, got '/3};'"},
+      {"View \"v\" {\nST(0,0,0,1,0,0,0,1,0){1,2,Sqrt(2)};\n};\n",
+       "expected a value (a number; hoct does not evaluate expressions), got 'Sqrt(2)};'"},
+      {"View \"v\" {\nST(0,0,0,1,0,0){1,2,3};\n};\n",
+       "t.pos:2: View 'v': ST has 6 coordinates, expected 9"},
+      {"View \"v\" {\nST(0,0,0,1,0,0,0,1,0){1,2};\n};\n",
+       "t.pos:2: View 'v': ST has 2 values, not a multiple of its 3 nodes"},
+      {"View \"v\" {\n" + tri + "ST(0,0,0,1,0,0,0,1,0){1,2,3,4,5,6};\n};\n",
+       "t.pos:3: View 'v': ST has values for 2 time steps, the elements before it for 1"},
+      {"View \"v\" {\nTIME{0,1};\n" + tri + "};\n",
+       "t.pos:2: View 'v': TIME gives 2 times for 1 time steps"},
+      {"View \"v\" {\n" + tri, "t.pos:1: View 'v' has no closing '}'"},
+      {"View \"v\" {\n/* " + tri + "};\n", "t.pos:2: a /* comment is not closed"},
+      {"Mesh.Algorithm = 6;\n", "t.pos:1: expected a View, got 'Mesh.Algorithm'"},
+      {"View v {\n" + tri + "};\n", "t.pos:1: expected the view's name (a \"string\"), got 'v'"},
+      {"View \"v\n", "t.pos:1: unterminated string"},
+      {"View \"v\" {\nST(0,0,0,1,0,0,0,1,inf){1,2,3};\n};\n", "a coordinate 'inf' is not finite"},
+      {"", "t.pos: the file has no View"},
+  };
+  for (const auto &c : cases) {
+    SCOPED_TRACE(c.text);
+    const std::string msg = pos_error(c.text);
+    EXPECT_NE(msg.find(c.phrase), std::string::npos) << msg;
+  }
+  const std::string v =
+      "View \"v\" {\nTIME{0,0.5};\n" + std::string("ST(0,0,0,1,0,0,0,1,0){1,2,3,4,5,6};\n};\n");
+  EXPECT_NE(pos_error(v, "w").find("t.pos: no View named 'w' (available: v)"), std::string::npos);
+  EXPECT_NE(pos_error(v, view("v", 2)).find("--step 2: View 'v' has 2 time steps (times 0, 0.5)"),
+            std::string::npos);
+  EXPECT_NE(pos_error(v, at_time("v", 1)).find("--time 1: View 'v' has no time step at that time"),
+            std::string::npos);
+  FieldSelection magnitude("v");
+  magnitude.component = FieldSelection::kMagnitude;
+  EXPECT_NE(pos_error(v, magnitude).find("--component: View 'v' holds scalar values"),
+            std::string::npos);
+}
+
+// Every prefix and many corruptions of the .pos fixtures: read, or an InputError naming the file.
+TEST(MshReader, PosTruncatedAndCorruptedFailCleanly) {
+  for (const char *name : {"gmsh_square_p1.pos", "square_p2.pos"}) {
+    SCOPED_TRACE(name);
+    const std::string path = data_path(name);
+    const std::string full = slurp(path);
+    const std::size_t must_fail = full.rfind("};");
+    for (std::size_t n = 0; n < full.size(); ++n) {
+      try {
+        read_pos_buffer(full.substr(0, n), path);
+        ASSERT_GE(n, must_fail) << "a prefix of " << n << " bytes was accepted";
+      } catch (const InputError &e) {
+        ASSERT_EQ(std::string(e.what()).rfind(path + ":", 0), 0u) << e.what();
+      }
+    }
+    const char values[] = {'\0', '\xff', '9', '\n', '-', ',', '}', '"'};
+    for (std::size_t i = 0, k = 0; i < full.size(); ++i, ++k) {
+      std::string b = full;
+      b[i] = values[k % std::size(values)] == b[i] ? 'x' : values[k % std::size(values)];
+      try {
+        read_pos_buffer(std::move(b), path);
+      } catch (const InputError &e) {
+        ASSERT_EQ(std::string(e.what()).rfind(path + ":", 0), 0u) << e.what();
+      }
+    }
+  }
 }
 
 // Prefixes of the good files (every one for the small hand-written files, a sample for Gmsh's):

@@ -117,3 +117,39 @@ write_views("gmsh_steps_p2.msh", 2, 4.1, 0,
              ("f", "NodeData", [(0, continuous)])])
 write_views("gmsh_steps_p2_binary.msh", 2, 4.1, 1,
             [("T", "NodeData", [(0.1 * s, step(s)) for s in range(3)])])
+
+
+def write_pos():
+    """.pos views of the square: P1 by Gmsh (gmsh.view.addListData "ST", two steps: f, then
+    f + 10), and ST2 in Gmsh's parsed syntax (Gmsh has no list type of degree 2 in its API)."""
+    here = os.path.dirname(os.path.abspath(__file__))
+    for order in (1, 2):
+        square(order)
+        tags, coords, _ = gmsh.model.mesh.getNodes()
+        at = {int(t): coords[3 * i:3 * i + 3] for i, t in enumerate(tags)}
+        types, elements, element_nodes = gmsh.model.mesh.getElements(2)
+        n = len(element_nodes[0]) // len(elements[0])
+        triangles = [[int(t) for t in element_nodes[0][n * k:n * k + n]]
+                     for k in range(len(elements[0]))]
+        if order == 1:
+            data = []
+            for nodes in triangles:
+                for k in range(3):
+                    data += [at[t][k] for t in nodes]
+                data += [f(*at[t][:2]) for t in nodes] + [f(*at[t][:2]) + 10 for t in nodes]
+            view = gmsh.view.add("f")
+            gmsh.view.addListData(view, "ST", len(triangles), data)
+            gmsh.view.write(view, os.path.join(here, "gmsh_square_p1.pos"))
+        else:
+            with open(os.path.join(here, "square_p2.pos"), "w") as out:
+                out.write('// The square of two quadratic triangles, f at the nodes.\n')
+                out.write('View "f" {\nTIME{0.5};\n')
+                for nodes in triangles:
+                    xyz = ",".join(repr(float(c)) for t in nodes for c in at[t])
+                    values = ",".join(repr(f(*at[t][:2])) for t in nodes)
+                    out.write(f"ST2({xyz}){{{values}}};\n")
+                out.write('T2(10, 10, 0){"a text annotation"};\n};\n')
+        gmsh.finalize()
+
+
+write_pos()
