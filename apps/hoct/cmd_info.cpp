@@ -160,7 +160,7 @@ void register_info(CLI::App &app) {
   auto o = std::make_shared<InfoOptions>();
   auto *sub = app.add_subcommand("info", "Describe a mesh file: cells, degrees, topology, value "
                                          "range, geometry and any problems (exit 1 if invalid)");
-  sub->add_option("file", o->file, "Input file (.vtu, .msh)")->required();
+  sub->add_option("file", o->file, "Input file (.vtu, .msh, .pos)")->required();
   add_field_options(sub, o->field);
   sub->add_flag("--json", o->json, "Print JSON instead of text");
   add_merge_option(sub, o->merge);
