@@ -21,7 +21,7 @@ void register_convert(CLI::App &app) {
   auto o = std::make_shared<Options>();
   auto *sub = app.add_subcommand(
       "convert", "Write any input (.vtu, .msh) as VTK XML (.vtu) with Lagrange triangles");
-  sub->add_option("input", o->input, "Input file (.vtu, .msh)")->required();
+  sub->add_option("input", o->input, "Input file (.vtu, .msh, .pos)")->required();
   sub->add_option("-o,--output", o->output, "Output file (.vtu)")->required();
   add_field_options(sub, o->field);
   sub->callback([o] {

@@ -48,6 +48,20 @@ int run_info(const InfoOptions &o) {
     nlohmann::ordered_json j;
     j["file"] = o.file;
     j["field"] = m.field_name;
+    if (!m.field_detail.empty())
+      j["field_detail"] = m.field_detail;
+    if (!lm.contents.fields.empty()) {
+      nlohmann::ordered_json views = nlohmann::ordered_json::array();
+      for (const FileField &f : lm.contents.fields) {
+        nlohmann::ordered_json steps = nlohmann::ordered_json::array();
+        for (const FileFieldStep &s : f.steps)
+          steps.push_back(
+              {{"tag", s.tag}, {"time", s.time ? nlohmann::ordered_json(*s.time) : nullptr}});
+        views.push_back(
+            {{"name", f.name}, {"kind", f.kind}, {"components", f.components}, {"steps", steps}});
+      }
+      j["views"] = views;
+    }
     j["cells"] = m.complete ? m.topology.num_cells() : 0;
     j["points"] = m.num_points;
     nlohmann::ordered_json deg = nlohmann::ordered_json::object();
@@ -84,7 +98,28 @@ int run_info(const InfoOptions &o) {
   }
 
   std::printf("file:        %s\n", o.file.c_str());
-  std::printf("field:       %s\n", m.field_name.c_str());
+  std::printf("field:       %s%s\n", m.field_name.c_str(),
+              m.field_detail.empty() ? "" : (" " + m.field_detail).c_str());
+  if (!lm.contents.fields.empty()) {
+    std::printf("views:\n");
+    for (const FileField &f : lm.contents.fields) {
+      std::string times;
+      for (std::size_t i = 0; i < f.steps.size(); ++i) {
+        if (i == 12) {
+          times += ", ...";
+          break;
+        }
+        char buf[40];
+        if (f.steps[i].time)
+          std::snprintf(buf, sizeof buf, "%.9g", *f.steps[i].time);
+        times += (i ? ", " : "") + (f.steps[i].time ? std::string(buf) : std::string("none"));
+      }
+      std::printf("  %s: %s, %lld component%s, %zu time step%s (times %s)\n", f.name.c_str(),
+                  f.kind.c_str(), static_cast<long long>(f.components),
+                  f.components == 1 ? "" : "s", f.steps.size(), f.steps.size() == 1 ? "" : "s",
+                  times.c_str());
+    }
+  }
   if (m.complete) {
     std::printf("cells:       %lld (", static_cast<long long>(m.topology.num_cells()));
     bool first = true;
@@ -125,7 +160,7 @@ void register_info(CLI::App &app) {
   auto o = std::make_shared<InfoOptions>();
   auto *sub = app.add_subcommand("info", "Describe a mesh file: cells, degrees, topology, value "
                                          "range, geometry and any problems (exit 1 if invalid)");
-  sub->add_option("file", o->file, "Input file (.vtu, .msh)")->required();
+  sub->add_option("file", o->file, "Input file (.vtu, .msh, .pos)")->required();
   add_field_options(sub, o->field);
   sub->add_flag("--json", o->json, "Print JSON instead of text");
   add_merge_option(sub, o->merge);

@@ -18,7 +18,7 @@ LoadedMesh load_mesh(const std::string &path, const FieldSelection &field, bool 
   Stopwatch clock;
   ReadLimits limits = read_limits();
   limits.threads = thread_count(threads);
-  r.input = read_mesh(path, field, limits);
+  r.input = read_mesh(path, field, limits, &r.contents);
   if (merge_tolerance >= 0) {
     const MergeReport m = merge_duplicate_points(r.input, merge_tolerance, thread_count(threads));
     if (m.merged_points > 0)

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "io/field_selection.hpp"
+#include "io/file_contents.hpp"
 #include "mesh/mesh.hpp"
 
 #include <CLI/CLI.hpp>
@@ -15,6 +16,7 @@ struct LoadedMesh {
   // else empty: the mesh build consumed it.
   MeshInput input;
   Mesh mesh;
+  FileContents contents; // the fields the file offers (Gmsh views), where the reader lists them
   double read_seconds = 0, build_seconds = 0;
 };
 

@@ -1,35 +1,50 @@
-// Reader for Gmsh MSH files: version 4.1 (ascii and binary) and 2.2 (ascii).
+// Reader for Gmsh MSH files: version 4.1 and 2.2, ascii and binary.
 //
 // What it reads:
-//  - $MeshFormat: version 4.1 (file type 0 ascii, 1 binary with 8-byte size_t and the int 1 that
-//    fixes the byte order) or 2.2 ascii. Other versions (4.0, 3.0, 2.x binary, ...) are rejected
-//    with the version found.
-//  - $Nodes: all entity blocks; parametric coordinates (parametric flag 1: as many as the entity's
-//    dimension) are skipped. Node tags are arbitrary positive integers, possibly sparse.
+//  - $MeshFormat: version 4.1 or 2.2, file type 0 ascii or 1 binary (8-byte size_t, followed
+//    by the int 1 that fixes the byte order: big-endian files are refused). Other versions (4.0,
+//    3.0, ...) are rejected with the version found.
+//  - $Nodes: all entity blocks (4.1); parametric coordinates (parametric flag 1: as many as the
+//    entity's dimension) are skipped. Node tags are arbitrary positive integers, possibly sparse.
+//    Binary 2.2: per node an int tag and three doubles.
 //  - $Elements: complete Lagrange triangles (types 2, 9, 21, 23, 25, 42-46: degrees 1 to 10),
 //    converted from Gmsh's node order to the canonical lattice order. Points and lines (0D and 1D
 //    elements) are skipped; incomplete (serendipity) triangles and every other 2D or 3D type are
-//    errors naming the element.
-//  - $NodeData: the view named `scalar` (empty: the first view with one component). The name is
-//    the first string tag; the integer tags are time step, components, number of values
-//    (and partition). If several $NodeData blocks have the chosen name, the last time step in the
-//    file is used: a block with another time step replaces the values read so far, a block with
-//    the same time step (another partition of it) adds to them. Only the chosen view's values are
-//    checked (finite); the others are parsed and dropped.
-//  - Every other section ($Entities, $PhysicalNames, $Periodic, $ElementData, $Comments, ...) is
-//    skipped up to its $End marker.
+//    errors naming the element. Binary 2.2: blocks of a header (type, count, number of tags)
+//    followed by that many elements (tag, tags, nodes; ints).
+//  - Views: $NodeData (a value per node) and $ElementNodeData (per element, a value at each of
+//    its nodes, in Gmsh's order of them), one view being all blocks of a name (the first string
+//    tag); the integer tags are time step, components, number of values (and partition), the
+//    first real tag the time. The view is `field.name` (empty: the first view with one component
+//    that is no id array); its time steps are the distinct time-step tags in file order, and
+//    `field.step` (from 0, negative from the end, default the last) or `field.time` (within 1e-9
+//    relative) chooses one. The blocks of that step are merged (partitions). $ElementNodeData
+//    values are merged into node values where the elements sharing a node agree within 1e-9 of
+//    the view's range (plus rounding); else the file is refused naming the node, the elements and
+//    the largest jump. An $InterpolationScheme, if the view names one, is ignored: the values are
+//    taken as values at the element's nodes. $ElementData (one value per element) is listed, and
+//    refused if chosen: a piecewise-constant field has no contour tree of this kind.
+//    All blocks are parsed (every view's syntax is checked) and only the chosen step's values are
+//    read and checked (finite) after the whole file, so views may come before or after a repeated
+//    mesh.
+//  - Every other section ($Entities, $PhysicalNames, $Periodic, $InterpolationScheme,
+//    $Comments, ...) is skipped up to its $End marker.
 // Gmsh's view.write(view, file, append=True) repeats the whole mesh before the view: a node or
 // triangle whose tag was seen before must be identical to it, and is then ignored.
 //
 // Result: cells in file order; points are the nodes the triangles use, in the order they were
 // first defined in the file (nodes used only by points and lines are dropped, and need no value).
-// Every node of every triangle must be in $Nodes and have a value in the chosen view.
+// Every node of every triangle must be in $Nodes and have a value in the chosen view. With several
+// time steps, MeshInput::field_detail says which was read: "(step 2 of 3, time 0.2)".
 //
 // Errors are InputError messages "file:LINE: what" (ascii) or "file: byte OFFSET: what" (binary);
 // problems of the file as a whole ("no $Nodes section") give the file name only. Every count read
 // from the file is checked against the bytes left before anything is allocated for it.
 #include "io/msh_reader.hpp"
 
+#include "io/file_contents.hpp"
+
+#include "io/field_selection.hpp"
 #include "io/msh_element_types.hpp"
 #include "io/msh_scanner.hpp"
 #include "io/tag_index.hpp"
@@ -47,12 +62,21 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <optional>
 
 namespace hoct {
 namespace {
 
 constexpr double kNoValue = std::numeric_limits<double>::quiet_NaN();
 constexpr int kMaxDegree = 10;
+
+enum class DataKind { Node, ElementNode, Element };
+
+const char *section_of(DataKind k) {
+  return k == DataKind::Node          ? "$NodeData"
+         : k == DataKind::ElementNode ? "$ElementNodeData"
+                                      : "$ElementData";
+}
 
 std::string read_whole_file(const std::string &path) {
   std::error_code ec;
@@ -82,9 +106,9 @@ std::string str(double v) {
 class MshReader {
 public:
   MshReader(const std::string &path, std::string data, FieldSelection field,
-            const ReadLimits &limits)
-      : s_(path, std::move(data)), field_(std::move(field)), scalar_(field_.name), limits_(limits) {
-  }
+            const ReadLimits &limits, FileContents *contents)
+      : s_(path, std::move(data)), field_(std::move(field)), scalar_(field_.name), limits_(limits),
+        contents_(contents) {}
   MeshInput read();
 
 private:
@@ -93,7 +117,12 @@ private:
   void read_nodes_22(std::size_t at);
   void read_elements_41(std::size_t at);
   void read_elements_22(std::size_t at);
-  void read_node_data(std::size_t at);
+  void read_elements_22_binary(uint64_t total);
+  void skip_element(uint64_t tag) {
+    skipped_index_.insert(tag, 0);
+    ++skipped_elements_;
+  }
+  void read_data(std::size_t at, DataKind kind);
   void skip_section(std::string_view name, std::size_t at);
   void expect_end(const char *marker);
   // Reads the four counts of a 4.1 $Nodes or $Elements header.
@@ -108,6 +137,34 @@ private:
                                    std::size_t at) const;
   const std::vector<int> &gmsh_to_lattice(int degree);
   MeshInput finish();
+
+  // A $NodeData, $ElementNodeData or $ElementData section: its header, and where its values are.
+  struct DataBlock {
+    DataKind kind = DataKind::Node;
+    std::string name;
+    int64_t step = 0, components = 1;
+    uint64_t count = 0;
+    std::optional<double> time;
+    std::size_t at = 0, values_at = 0;
+  };
+  // A view: the blocks of one name, with its time steps in file order.
+  struct View {
+    std::string name;
+    DataKind kind;
+    int64_t components;
+    std::size_t at; // its first block
+    std::vector<FileFieldStep> steps;
+  };
+  // Reads the values of a block (the scanner at its values_at): only checked for syntax and
+  // skipped, or (collect) stored as the field.
+  void scan_values(const DataBlock &b, bool collect);
+  void merge_value(std::size_t node, double v, uint64_t element);
+  // Chooses the view and its step (field_), and reads its values into values_.
+  void choose_view();
+  void check_continuity(const std::string &what) const;
+  std::string available() const;
+  static std::string step_list(const View &v);
+  void fill_contents() const;
   // The memory budget for these totals; the place (whose line takes a scan to find) is formatted
   // only when the budget is exceeded.
   void check_budget(uint64_t points, uint64_t cells, uint64_t cell_nodes, std::size_t at) const {
@@ -123,6 +180,7 @@ private:
   FieldSelection field_;
   std::string scalar_; // field_.name
   ReadLimits limits_;
+  FileContents *contents_;
   bool have_format_ = false, have_nodes_ = false, have_elements_ = false;
   bool binary_ = false;
   int version_ = 0; // 41 or 22
@@ -136,6 +194,7 @@ private:
   MeshInput cells_;
   std::vector<uint64_t> cell_tags_;
   TagIndex element_index_;
+  TagIndex skipped_index_; // point and line elements (their $ElementNodeData is ignored)
   uint64_t skipped_elements_ = 0;
   std::array<const std::vector<int> *, kMaxDegree + 1> perms_{};
 
@@ -143,14 +202,16 @@ private:
   std::vector<uint64_t> tags_;
   std::array<int64_t, lattice_size(kMaxDegree)> canonical_{};
 
-  // Views: every name seen (with its number of components), and the chosen one's values per
-  // node (NaN: no value).
-  std::vector<std::pair<std::string, int64_t>> views_;
-  bool have_chosen_ = false;
-  std::string chosen_;
-  int64_t chosen_step_ = 0;
+  // Every data block and view, in file order; the chosen one's values per node (NaN: no value)
+  // and, for $ElementNodeData, the lowest and highest value each node was given, and by which
+  // elements.
+  std::vector<DataBlock> blocks_;
+  std::vector<View> views_;
+  std::string chosen_, chosen_what_, chosen_detail_;
   std::size_t chosen_at_ = 0;
   PooledVector<double> values_;
+  std::vector<double> lo_, hi_;
+  std::vector<uint64_t> lo_element_, hi_element_;
 };
 
 MeshInput MshReader::read() {
@@ -172,7 +233,11 @@ MeshInput MshReader::read() {
     else if (section == "Elements")
       version_ == 41 ? read_elements_41(at) : read_elements_22(at);
     else if (section == "NodeData")
-      read_node_data(at);
+      read_data(at, DataKind::Node);
+    else if (section == "ElementNodeData")
+      read_data(at, DataKind::ElementNode);
+    else if (section == "ElementData")
+      read_data(at, DataKind::Element);
     else
       skip_section(section, at);
   }
@@ -193,8 +258,8 @@ void MshReader::read_format(std::size_t at) {
                                                      : 0;
   if (found == 0)
     s_.fail_at(version_at, "MSH version " + MshScanner::quote(v) +
-                               " is not supported: hoct reads MSH 4.1 (ascii or binary) and 2.2 "
-                               "(ascii); in Gmsh, save with Mesh.MshFileVersion = 4.1");
+                               " is not supported: hoct reads MSH 4.1 and 2.2 (ascii or "
+                               "binary); in Gmsh, save with Mesh.MshFileVersion = 4.1");
   const std::size_t type_at = (s_.line_ends(), s_.pos());
   const uint64_t file_type = s_.unsigned_number("the file type");
   const uint64_t data_size = s_.unsigned_number("the data size");
@@ -202,9 +267,6 @@ void MshReader::read_format(std::size_t at) {
   if (file_type > 1)
     s_.fail_at(type_at, "unknown file type " + str(file_type) + " (0 ascii, 1 binary)");
   const bool binary = file_type == 1;
-  if (binary && found == 22)
-    s_.fail_at(type_at, "binary MSH 2.2 is not supported: save as MSH 4.1 "
-                        "(Mesh.MshFileVersion = 4.1) or as ascii");
   if (binary && data_size != 8)
     s_.fail_at(type_at, "binary data size " + str(data_size) +
                             " is not supported (hoct reads 8-byte size_t)");
@@ -367,9 +429,25 @@ void MshReader::read_nodes_22(std::size_t) {
   const std::size_t header_at = (s_.skip_space(), s_.pos());
   const uint64_t n = s_.unsigned_number("the number of nodes", true);
   s_.end_line("the number of nodes");
-  s_.check_count(n, 8, "nodes", header_at);
+  s_.check_count(n, binary_ ? 28 : 8, "nodes", header_at); // binary: int tag, 3 doubles
   check_budget(points_.size() + n, cells_.num_cells(), cells_.cell_nodes.size(), header_at);
   node_index_.allow_flat(2 * (points_.size() + n) + 1024);
+  if (binary_) {
+    s_.need(28 * n, "the nodes");
+    for (uint64_t i = 0; i < n; ++i) {
+      const std::size_t node_at = s_.pos();
+      const auto tag = s_.get_unchecked<int32_t>();
+      if (tag <= 0)
+        s_.fail_at(node_at, "node tag " + str(int64_t{tag}) + " (tags are positive)");
+      Vec3 p;
+      for (double &c : p)
+        c = s_.get_unchecked<double>();
+      add_node(static_cast<uint64_t>(tag), p, node_at);
+    }
+    expect_end("$EndNodes");
+    have_nodes_ = true;
+    return;
+  }
   for (uint64_t i = 0; i < n; ++i) {
     const std::size_t node_at = (s_.skip_space(), s_.pos());
     const uint64_t tag = s_.unsigned_number("a node tag", true);
@@ -460,6 +538,7 @@ void MshReader::read_elements_41(std::size_t at) {
   check_budget(points_.size(), cells_.num_cells() + total, cells_.cell_nodes.size() + 3 * total,
                header_at);
   element_index_.allow_flat(2 * (cells_.num_cells() + total) + 1024);
+  skipped_index_.allow_flat(2 * (skipped_elements_ + total) + 1024);
   uint64_t seen = 0;
   for (uint64_t b = 0; b < blocks; ++b) {
     const std::size_t block_at = binary_ ? s_.pos() : (s_.skip_space(), s_.pos());
@@ -503,7 +582,11 @@ void MshReader::read_elements_41(std::size_t at) {
     if (binary_) {
       s_.need(8 * (1 + nodes) * n, "the element block");
       if (degree == 0) { // points and lines
-        s_.skip(8 * (1 + nodes) * n, "the element block");
+        skipped_index_.allow_flat(2 * (skipped_elements_ + n) + 1024);
+        for (uint64_t i = 0; i < n; ++i) {
+          skipped_index_.insert(s_.get_unchecked<uint64_t>(), 0);
+          s_.skip(8 * nodes, "the element");
+        }
         skipped_elements_ += n;
         continue;
       }
@@ -520,7 +603,7 @@ void MshReader::read_elements_41(std::size_t at) {
         const uint64_t tag = s_.unsigned_number("an element tag", true);
         ascii_node_tags(tag, *t);
         if (degree == 0)
-          ++skipped_elements_;
+          skip_element(tag);
         else
           add_triangle(tag, degree, element_at);
       }
@@ -539,9 +622,15 @@ void MshReader::read_elements_22(std::size_t at) {
   const std::size_t header_at = (s_.skip_space(), s_.pos());
   const uint64_t n = s_.unsigned_number("the number of elements", true);
   s_.end_line("the number of elements");
-  s_.check_count(n, 8, "elements", header_at); // tag, type, number of tags, a node
+  // Ascii: tag, type, number of tags, a node; binary: tag and a node (4 bytes each).
+  s_.check_count(n, 8, "elements", header_at);
   check_budget(points_.size(), cells_.num_cells() + n, cells_.cell_nodes.size() + 3 * n, header_at);
   element_index_.allow_flat(2 * (cells_.num_cells() + n) + 1024);
+  skipped_index_.allow_flat(2 * (skipped_elements_ + n) + 1024);
+  if (binary_) {
+    read_elements_22_binary(n);
+    return;
+  }
   for (uint64_t i = 0; i < n; ++i) {
     const std::size_t element_at = (s_.skip_space(), s_.pos());
     const uint64_t tag = s_.unsigned_number("an element tag", true);
@@ -557,7 +646,7 @@ void MshReader::read_elements_22(std::size_t at) {
     tags_.resize(static_cast<std::size_t>(t->nodes));
     ascii_node_tags(tag, *t);
     if (degree == 0)
-      ++skipped_elements_;
+      skip_element(tag);
     else
       add_triangle(tag, degree, element_at);
   }
@@ -565,9 +654,61 @@ void MshReader::read_elements_22(std::size_t at) {
   have_elements_ = true;
 }
 
-void MshReader::read_node_data(std::size_t at) {
+// Binary MSH 2.2: blocks of a header (type, number of elements, number of tags: 3 ints) and
+// that many elements of the type: tag, tags, nodes (ints).
+void MshReader::read_elements_22_binary(uint64_t total) {
+  uint64_t seen = 0;
+  while (seen < total) {
+    const std::size_t block_at = s_.pos();
+    s_.need(12, "an element block header");
+    const auto type = s_.get_unchecked<int32_t>();
+    const auto n = s_.get_unchecked<int32_t>();
+    const auto ntags = s_.get_unchecked<int32_t>();
+    if (n <= 0)
+      s_.fail_at(block_at, "element block: " + str(int64_t{n}) + " elements");
+    if (ntags < 0)
+      s_.fail_at(block_at, "element block: " + str(int64_t{ntags}) + " element tags");
+    if (static_cast<uint64_t>(n) > total - seen)
+      s_.fail_at(block_at, "the element blocks hold more elements than the " + str(total) +
+                               " the $Elements header announces");
+    const MshElementType *t = type > 0 ? msh_element_type(type) : nullptr;
+    const int degree = t ? t->complete_triangle_degree() : 0;
+    if (!t || (t->dimension >= 2 && degree == 0)) {
+      const std::size_t first_at = s_.pos();
+      reject_element(type, t, static_cast<uint64_t>(s_.get<int32_t>("an element tag")), first_at);
+    }
+    const auto nodes = static_cast<uint64_t>(t->nodes);
+    const uint64_t record = 4 * (1 + static_cast<uint64_t>(ntags) + nodes);
+    s_.check_count(static_cast<uint64_t>(n), record, "elements in the block", block_at);
+    s_.need(record * static_cast<uint64_t>(n), "the element block");
+    tags_.resize(nodes);
+    for (int32_t i = 0; i < n; ++i) {
+      const std::size_t element_at = s_.pos();
+      const auto tag = s_.get_unchecked<int32_t>();
+      if (tag <= 0)
+        s_.fail_at(element_at, "element tag " + str(int64_t{tag}) + " (tags are positive)");
+      s_.seek(s_.pos() + 4 * static_cast<std::size_t>(ntags));
+      for (auto &node : tags_) {
+        const auto v = s_.get_unchecked<int32_t>();
+        node = v > 0 ? static_cast<uint64_t>(v) : 0; // 0: no such node (tags are positive)
+      }
+      if (degree == 0)
+        skip_element(static_cast<uint64_t>(tag));
+      else
+        add_triangle(static_cast<uint64_t>(tag), degree, element_at);
+    }
+    seen += static_cast<uint64_t>(n);
+  }
+  expect_end("$EndElements");
+  have_elements_ = true;
+}
+
+void MshReader::read_data(std::size_t at, DataKind kind) {
+  const std::string section = section_of(kind);
   if (!have_nodes_)
-    s_.fail_at(at, "$NodeData before any $Nodes section: the nodes must come first");
+    s_.fail_at(at, section + " before any $Nodes section: the nodes must come first");
+  if (kind != DataKind::Node && !have_elements_)
+    s_.fail_at(at, section + " before any $Elements section: the elements must come first");
   // The header is ascii in binary files too: counts and tags one per line.
   auto count = [&](const char *what, const char *items) {
     const std::size_t count_at = (s_.skip_space(), s_.pos());
@@ -576,8 +717,10 @@ void MshReader::read_node_data(std::size_t at) {
     s_.check_count(n, 2, items, count_at);
     return n;
   };
+  DataBlock b;
+  b.kind = kind;
+  b.at = at;
   const uint64_t nstrings = count("the number of string tags", "string tags");
-  std::string name;
   for (uint64_t i = 0; i < nstrings; ++i) {
     if (!s_.skip_space())
       s_.fail("unexpected end of file: expected a string tag");
@@ -589,17 +732,22 @@ void MshReader::read_node_data(std::size_t at) {
       t = t.substr(1, t.size() - 2);
     }
     if (i == 0)
-      name = t;
+      b.name = t;
   }
   const uint64_t nreals = count("the number of real tags", "real tags");
   for (uint64_t i = 0; i < nreals; ++i) {
-    s_.real_number("a real tag (time)", true);
+    const std::size_t time_at = (s_.skip_space(), s_.pos());
+    const double v = s_.real_number("a real tag (time)", true);
     s_.end_line("a real tag");
+    if (i == 0 && !std::isfinite(v))
+      s_.fail_at(time_at, section + " '" + b.name + "': the time " + str(v) + " is not finite");
+    if (i == 0)
+      b.time = v;
   }
   const std::size_t ints_at = (s_.skip_space(), s_.pos());
   const uint64_t nints = count("the number of integer tags", "integer tags");
   if (nints < 3)
-    s_.fail_at(ints_at, "$NodeData '" + name + "' has " + str(nints) +
+    s_.fail_at(ints_at, section + " '" + b.name + "' has " + str(nints) +
                             " integer tags; it needs 3 (time step, number of components, number "
                             "of values)");
   std::array<int64_t, 3> ints{};
@@ -611,97 +759,355 @@ void MshReader::read_node_data(std::size_t at) {
   }
   const auto [step, components, values] = ints;
   if (components < 1 || components > 9)
-    s_.fail_at(ints_at, "$NodeData '" + name + "' has " + str(components) + " components");
+    s_.fail_at(ints_at, section + " '" + b.name + "' has " + str(components) + " components");
   if (values < 0)
-    s_.fail_at(ints_at, "$NodeData '" + name + "' has " + str(values) + " values");
+    s_.fail_at(ints_at, section + " '" + b.name + "' has " + str(values) + " values");
+  b.step = step;
+  b.components = components;
+  b.count = static_cast<uint64_t>(values);
   const auto comps = static_cast<uint64_t>(components);
-  const auto n = static_cast<uint64_t>(values);
-  const uint64_t record = binary_ ? 4 + 8 * comps : 2 * (1 + comps);
-  s_.check_count(n, record, "values", ints_at);
+  // The smallest record: a tag (and a node count) and the components of one value.
+  const uint64_t record = kind == DataKind::ElementNode
+                              ? (binary_ ? 8 + 8 * comps : 2 * (2 + comps))
+                              : (binary_ ? 4 + 8 * comps : 2 * (1 + comps));
+  s_.check_count(b.count, record, "values", ints_at);
 
-  bool seen_name = false;
-  for (auto &v : views_)
-    if (v.first == name) {
-      v.second = components;
-      seen_name = true;
-    }
-  if (!seen_name)
-    views_.emplace_back(name, components);
-  const bool vector = field_.component != FieldSelection::kScalar;
-  const bool collect = !scalar_.empty() ? name == scalar_
-                       : have_chosen_   ? name == chosen_
-                                        : (vector ? components > 1 : components == 1) &&
-                                            !is_bookkeeping_array(std::string(name));
-  if (collect && !vector && components != 1)
-    s_.fail_at(at, "$NodeData '" + name + "' has " + str(components) +
-                       " components; a scalar field needs 1 (choose one with --component N, or "
-                       "--component magnitude)");
-  if (collect && vector && components == 1)
-    s_.fail_at(at, "--component: $NodeData '" + name + "' has one component");
-  if (collect && field_.component >= components)
-    s_.fail_at(at, "--component " + str(int64_t{field_.component}) + ": $NodeData '" + name +
-                       "' has " + str(components) + " components (0 to " + str(components - 1) +
-                       ")");
+  auto view =
+      std::find_if(views_.begin(), views_.end(), [&](const View &v) { return v.name == b.name; });
+  if (view == views_.end()) {
+    views_.push_back(View{b.name, kind, components, at, {}});
+    view = views_.end() - 1;
+  } else if (view->kind != kind) {
+    s_.fail_at(at, section + " '" + b.name + "': the file gives a view of this name as " +
+                       section_of(view->kind) + " too");
+  }
+  view->components = components;
+  if (std::none_of(view->steps.begin(), view->steps.end(),
+                   [&](const FileFieldStep &s) { return s.tag == step; }))
+    view->steps.push_back(FileFieldStep{step, b.time});
+  b.values_at = s_.pos();
+  scan_values(b, false);
+  blocks_.push_back(std::move(b));
+  expect_end(kind == DataKind::Node          ? "$EndNodeData"
+             : kind == DataKind::ElementNode ? "$EndElementNodeData"
+                                             : "$EndElementData");
+}
+
+// One value of a node of element `element` (tag): the first is kept, the lowest and highest are
+// remembered to check continuity.
+void MshReader::merge_value(std::size_t node, double v, uint64_t element) {
+  if (std::isnan(values_[node])) {
+    values_[node] = lo_[node] = hi_[node] = v;
+    lo_element_[node] = hi_element_[node] = element;
+    return;
+  }
+  if (v < lo_[node]) {
+    lo_[node] = v;
+    lo_element_[node] = element;
+  }
+  if (v > hi_[node]) {
+    hi_[node] = v;
+    hi_element_[node] = element;
+  }
+}
+
+void MshReader::scan_values(const DataBlock &b, bool collect) {
+  const std::string what = std::string(section_of(b.kind)) + " '" + b.name + "'";
+  const auto comps = static_cast<uint64_t>(b.components);
+  const uint64_t n = b.count;
   // The value a node's components give: the one, the chosen component, or the magnitude.
   double comp[9];
-  const int64_t ncomp = components; // (a structured binding: lambdas capture a copy)
+  const bool vector = field_.component != FieldSelection::kScalar;
   auto combined = [&]() {
     if (field_.component >= 0)
       return comp[field_.component];
     if (!vector)
       return comp[0];
     double sum = 0;
-    for (int64_t k = 0; k < ncomp; ++k)
+    for (uint64_t k = 0; k < comps; ++k)
       sum += comp[k] * comp[k];
     return std::sqrt(sum);
   };
-  if (collect) {
-    if (!have_chosen_ || step != chosen_step_)
-      values_.assign(points_.size(), kNoValue); // a later time step replaces the earlier
-    else
-      values_.resize(points_.size(), kNoValue); // another partition of the same time step
-    have_chosen_ = true;
-    chosen_ = name;
-    chosen_step_ = step;
-    chosen_at_ = at;
-  }
-
-  auto store = [&](uint64_t tag, double v, std::size_t value_at) {
+  auto finite = [&](double v, const std::string &whose, std::size_t value_at) {
     if (!std::isfinite(v))
-      s_.fail_at(value_at, "$NodeData '" + name + "': node " + str(tag) +
-                               " has a non-finite value (" + str(v) + ")");
-    const int64_t node = node_index_.find(tag);
-    if (node != TagIndex::none)
-      values_[static_cast<std::size_t>(node)] = v;
+      s_.fail_at(value_at, what + ": " + whose + " has a non-finite value (" + str(v) + ")");
+    return v;
   };
-  if (binary_) {
-    s_.need(record * n, "the $NodeData values");
-    if (!collect) {
-      s_.skip(record * n, "the $NodeData values");
-    } else {
+
+  if (b.kind == DataKind::Node) {
+    auto store = [&](uint64_t tag, double v, std::size_t value_at) {
+      finite(v, "node " + str(tag), value_at);
+      const int64_t node = node_index_.find(tag);
+      if (node != TagIndex::none)
+        values_[static_cast<std::size_t>(node)] = v;
+    };
+    const uint64_t record = binary_ ? 4 + 8 * comps : 0;
+    if (binary_) {
+      s_.need(record * n, "the $NodeData values");
+      if (!collect) {
+        s_.skip(record * n, "the $NodeData values");
+        return;
+      }
       for (uint64_t i = 0; i < n; ++i) {
         const std::size_t tag_at = s_.pos();
         const auto tag = s_.get_unchecked<int32_t>();
         if (tag <= 0)
-          s_.fail_at(tag_at, "$NodeData '" + name + "': node tag " + str(int64_t{tag}) +
-                                 " is not positive");
+          s_.fail_at(tag_at, what + ": node tag " + str(int64_t{tag}) + " is not positive");
         for (uint64_t k = 0; k < comps; ++k)
           comp[k] = s_.get_unchecked<double>();
         store(static_cast<uint64_t>(tag), combined(), tag_at + 4);
       }
+    } else {
+      for (uint64_t i = 0; i < n; ++i) {
+        const uint64_t tag = s_.unsigned_number("a node tag", true);
+        const std::size_t value_at = (s_.line_ends(), s_.pos());
+        for (uint64_t k = 0; k < comps; ++k)
+          comp[k] = s_.real_number("a value");
+        s_.end_line(comps == 1 ? "the node's value" : "the node's values");
+        if (collect)
+          store(tag, combined(), value_at);
+      }
     }
-  } else {
+    return;
+  }
+
+  if (b.kind == DataKind::Element) { // never collected: parsed and dropped
+    if (binary_) {
+      s_.skip((4 + 8 * comps) * n, "the $ElementData values");
+      return;
+    }
     for (uint64_t i = 0; i < n; ++i) {
-      const uint64_t tag = s_.unsigned_number("a node tag", true);
-      const std::size_t value_at = (s_.line_ends(), s_.pos());
+      s_.unsigned_number("an element tag", true);
       for (uint64_t k = 0; k < comps; ++k)
-        comp[k] = s_.real_number("a value");
-      s_.end_line(comps == 1 ? "the node's value" : "the node's values");
-      if (collect)
-        store(tag, combined(), value_at);
+        s_.real_number("a value");
+      s_.end_line(comps == 1 ? "the element's value" : "the element's values");
+    }
+    return;
+  }
+
+  // $ElementNodeData: per element, its tag, its number of nodes and the values at its nodes
+  // (in Gmsh's order of the element's nodes).
+  for (uint64_t i = 0; i < n; ++i) {
+    const std::size_t element_at = binary_ ? s_.pos() : (s_.skip_space(), s_.pos());
+    uint64_t tag, nodes;
+    if (binary_) {
+      s_.need(8, "an element's tag and number of nodes");
+      const auto t = s_.get_unchecked<int32_t>();
+      const auto k = s_.get_unchecked<int32_t>();
+      if (t <= 0)
+        s_.fail_at(element_at, what + ": element tag " + str(int64_t{t}) + " is not positive");
+      if (k <= 0)
+        s_.fail_at(element_at,
+                   what + ": element " + str(int64_t{t}) + " has " + str(int64_t{k}) + " nodes");
+      tag = static_cast<uint64_t>(t);
+      nodes = static_cast<uint64_t>(k);
+    } else {
+      tag = s_.unsigned_number("an element tag", true);
+      nodes = s_.unsigned_number("the element's number of nodes");
+      if (nodes == 0)
+        s_.fail_at(element_at, what + ": element " + str(tag) + " has 0 nodes");
+    }
+    s_.check_count(nodes, binary_ ? 8 * comps : 2 * comps, "element nodes with values", element_at);
+    // The element's nodes (Gmsh order: gmsh_to_lattice maps them to the canonical order).
+    const int64_t *cell_nodes = nullptr;
+    const std::vector<int> *perm = nullptr;
+    if (collect) {
+      const int64_t cell = element_index_.find(tag);
+      if (cell == TagIndex::none) {
+        if (skipped_index_.find(tag) == TagIndex::none)
+          s_.fail_at(element_at, what + " gives values for element " + str(tag) +
+                                     ", which is not in $Elements");
+      } else {
+        const auto c = static_cast<std::size_t>(cell);
+        const int degree = cells_.cell_degree[c];
+        perm = &gmsh_to_lattice(degree);
+        if (nodes != perm->size())
+          s_.fail_at(element_at, what + ": element " + str(tag) + " (a triangle of degree " +
+                                     str(int64_t{degree}) + ") has " + str(uint64_t{perm->size()}) +
+                                     " nodes, the data give values at " + str(nodes));
+        cell_nodes = cells_.cell_nodes.data() + cells_.cell_offsets[c];
+      }
+    }
+    if (binary_) {
+      s_.need(8 * comps * nodes, "the element's values");
+      if (!cell_nodes) {
+        s_.skip(8 * comps * nodes, "the element's values");
+        continue;
+      }
+      for (uint64_t k = 0; k < nodes; ++k) {
+        const std::size_t value_at = s_.pos();
+        for (uint64_t c = 0; c < comps; ++c)
+          comp[c] = s_.get_unchecked<double>();
+        const auto node = static_cast<std::size_t>(cell_nodes[(*perm)[k]]);
+        merge_value(node, finite(combined(), "element " + str(tag), value_at), tag);
+      }
+    } else {
+      for (uint64_t k = 0; k < nodes; ++k) {
+        const std::size_t value_at = (s_.line_ends(), s_.pos());
+        for (uint64_t c = 0; c < comps; ++c)
+          comp[c] = s_.real_number("a value");
+        if (cell_nodes) {
+          const auto node = static_cast<std::size_t>(cell_nodes[(*perm)[k]]);
+          merge_value(node, finite(combined(), "element " + str(tag), value_at), tag);
+        }
+      }
+      s_.end_line("the element's values");
     }
   }
-  expect_end("$EndNodeData");
+}
+
+std::string MshReader::available() const {
+  std::string names;
+  for (const auto &v : views_) {
+    std::string notes;
+    if (v.components != 1)
+      notes = str(v.components) + " components";
+    if (v.kind != DataKind::Node)
+      notes += (notes.empty() ? "" : ", ") + std::string(section_of(v.kind));
+    names += (names.empty() ? "" : ", ") + v.name + (notes.empty() ? "" : " (" + notes + ")");
+  }
+  return names;
+}
+
+std::string MshReader::step_list(const View &v) {
+  std::string s = str(uint64_t{v.steps.size()}) + " time step" + (v.steps.size() == 1 ? "" : "s");
+  std::string times;
+  const std::size_t shown = std::min<std::size_t>(v.steps.size(), 12);
+  for (std::size_t i = 0; i < shown; ++i)
+    times += (i ? ", " : "") + (v.steps[i].time ? str(*v.steps[i].time) : std::string("none"));
+  if (shown < v.steps.size())
+    times += ", ...";
+  return s + " (times " + times + ")";
+}
+
+void MshReader::choose_view() {
+  const View *v = nullptr;
+  const bool vector = field_.component != FieldSelection::kScalar;
+  for (const auto &view : views_) {
+    const bool fits = !scalar_.empty()
+                          ? view.name == scalar_
+                          : view.kind != DataKind::Element &&
+                                (vector ? view.components > 1 : view.components == 1) &&
+                                !is_bookkeeping_array(view.name);
+    if (fits) {
+      v = &view;
+      break;
+    }
+  }
+  if (!v) {
+    if (views_.empty())
+      fail_file("the file has no node data: it holds a mesh but no $NodeData or $ElementNodeData "
+                "section with a scalar field (in Gmsh, add a view and write it after the mesh, "
+                "e.g. gmsh.view.write(view, file, append=True))");
+    if (!scalar_.empty())
+      fail_file("no $NodeData or $ElementNodeData named '" + scalar_ +
+                "' (available: " + available() + ")");
+    fail_file("no scalar $NodeData or $ElementNodeData (available: " + available() + ")");
+  }
+  const std::string what = std::string(section_of(v->kind)) + " '" + v->name + "'";
+  if (v->kind == DataKind::Element)
+    s_.fail_at(v->at, what + " holds one value per element: a piecewise-constant field has no "
+                             "contour tree of this kind (hoct needs values at the nodes: "
+                             "$NodeData, or $ElementNodeData of a continuous field)");
+
+  // The time step.
+  const std::size_t nsteps = v->steps.size();
+  std::size_t k = 0;
+  if (field_.time) {
+    const double t = *field_.time;
+    k = nsteps;
+    for (std::size_t i = 0; i < nsteps && k == nsteps; ++i)
+      if (v->steps[i].time && std::abs(*v->steps[i].time - t) <=
+                                  1e-9 * std::max(std::abs(*v->steps[i].time), std::abs(t)))
+        k = i;
+    if (k == nsteps)
+      fail_file("--time " + str(t) + ": " + what + " has no time step at that time (" +
+                step_list(*v) + ")");
+  } else {
+    const int64_t n = static_cast<int64_t>(nsteps);
+    const int64_t i = field_.step < 0 ? n + field_.step : field_.step;
+    if (i < 0 || i >= n)
+      fail_file("--step " + str(int64_t{field_.step}) + ": " + what + " has " + step_list(*v) +
+                ": steps 0 to " + str(n - 1) + ", or -" + str(n) + " to -1 from the end");
+    k = static_cast<std::size_t>(i);
+  }
+  const int64_t step = v->steps[k].tag;
+
+  values_.assign(points_.size(), kNoValue);
+  const bool element_nodes = v->kind == DataKind::ElementNode;
+  if (element_nodes) {
+    lo_.assign(points_.size(), 0);
+    hi_.assign(points_.size(), 0);
+    lo_element_.assign(points_.size(), 0);
+    hi_element_.assign(points_.size(), 0);
+  }
+  bool first = true;
+  for (const DataBlock &b : blocks_) {
+    if (b.name != v->name || b.step != step)
+      continue;
+    if (first)
+      chosen_at_ = b.at;
+    first = false;
+    if (!vector && b.components != 1)
+      s_.fail_at(b.at, what + " has " + str(b.components) +
+                           " components; a scalar field needs 1 (choose one with --component N, "
+                           "or --component magnitude)");
+    if (vector && b.components == 1)
+      s_.fail_at(b.at, "--component: " + what + " has one component");
+    if (field_.component >= b.components)
+      s_.fail_at(b.at, "--component " + str(int64_t{field_.component}) + ": " + what + " has " +
+                           str(b.components) + " components (0 to " + str(b.components - 1) + ")");
+    s_.seek(b.values_at);
+    scan_values(b, true);
+  }
+  if (element_nodes)
+    check_continuity(what);
+  chosen_ = v->name;
+  chosen_what_ = what;
+  if (nsteps > 1)
+    chosen_detail_ = "(step " + str(uint64_t{k}) + " of " + str(uint64_t{nsteps}) +
+                     (v->steps[k].time ? ", time " + str(*v->steps[k].time) : std::string()) + ")";
+}
+
+// $ElementNodeData gives each element its own values: where elements sharing a node disagree
+// by more than rounding (relative to the field's range), the field is discontinuous.
+void MshReader::check_continuity(const std::string &what) const {
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  std::size_t worst = 0;
+  double jump = -1;
+  for (std::size_t i = 0; i < values_.size(); ++i) {
+    if (std::isnan(values_[i]))
+      continue;
+    lo = std::min(lo, lo_[i]);
+    hi = std::max(hi, hi_[i]);
+    if (hi_[i] - lo_[i] > jump) {
+      jump = hi_[i] - lo_[i];
+      worst = i;
+    }
+  }
+  if (jump < 0)
+    return;
+  const double range = hi - lo;
+  const double tolerance = 1e-9 * range + 8 * std::numeric_limits<double>::epsilon() *
+                                              std::max(std::abs(lo), std::abs(hi));
+  if (jump > tolerance)
+    s_.fail_at(chosen_at_, what + ": node " + str(node_tags_[worst]) + " has values " +
+                               str(lo_[worst]) + " (element " + str(lo_element_[worst]) + ") and " +
+                               str(hi_[worst]) + " (element " + str(hi_element_[worst]) +
+                               "): the field is discontinuous there (largest jump " + str(jump) +
+                               " of a range " + str(range) + "); hoct needs a continuous field");
+}
+
+void MshReader::fill_contents() const {
+  if (!contents_)
+    return;
+  contents_->fields.clear();
+  for (const auto &v : views_)
+    contents_->fields.push_back(FileField{v.name,
+                                          v.kind == DataKind::Node          ? "node data"
+                                          : v.kind == DataKind::ElementNode ? "element-node data"
+                                                                            : "element data",
+                                          v.components, v.steps});
 }
 
 MeshInput MshReader::finish() {
@@ -712,19 +1118,8 @@ MeshInput MshReader::finish() {
   if (cells_.num_cells() == 0)
     fail_file("no triangles in $Elements (" + str(skipped_elements_) +
               " point and line elements skipped)");
-  if (!have_chosen_) {
-    if (views_.empty())
-      fail_file("the file has no node data: it holds a mesh but no $NodeData section with a "
-                "scalar field (in Gmsh, add a view and write it after the mesh, e.g. "
-                "gmsh.view.write(view, file, append=True))");
-    std::string names;
-    for (const auto &v : views_)
-      names += (names.empty() ? "" : ", ") + v.first +
-               (v.second == 1 ? "" : " (" + str(v.second) + " components)");
-    if (!scalar_.empty())
-      fail_file("no $NodeData named '" + scalar_ + "' (available: " + names + ")");
-    fail_file("no scalar $NodeData (available: " + names + ")");
-  }
+  fill_contents();
+  choose_view();
 
   // Every node of every triangle needs a value; the nodes used are kept, in file order.
   values_.resize(points_.size(), kNoValue);
@@ -733,9 +1128,8 @@ MeshInput MshReader::finish() {
     for (auto k = cells_.cell_offsets[c]; k < cells_.cell_offsets[c + 1]; ++k) {
       const auto node = static_cast<std::size_t>(cells_.cell_nodes[static_cast<std::size_t>(k)]);
       if (std::isnan(values_[node]))
-        s_.fail_at(chosen_at_, "$NodeData '" + chosen_ + "' has no value for node " +
-                                   str(node_tags_[node]) + " (of element " + str(cell_tags_[c]) +
-                                   ")");
+        s_.fail_at(chosen_at_, chosen_what_ + " has no value for node " + str(node_tags_[node]) +
+                                   " (of element " + str(cell_tags_[c]) + ")");
       renumber[node] = 0;
     }
   std::size_t kept = 0;
@@ -755,22 +1149,21 @@ MeshInput MshReader::finish() {
   m.points = std::move(points_);
   m.values = std::move(values_);
   m.field_name = field_.describe(chosen_);
+  m.field_detail = chosen_detail_;
   m.source = s_.path();
   return m;
 }
 
 } // namespace
 
-MeshInput read_msh(const std::string &path, const FieldSelection &field, const ReadLimits &limits) {
-  if (!field.default_step())
-    throw InputError(path + ": --step / --time: choosing a time step of a Gmsh view is not "
-                            "supported yet (the last step of the view is read)");
-  return MshReader(path, read_whole_file(path), field, limits).read();
+MeshInput read_msh(const std::string &path, const FieldSelection &field, const ReadLimits &limits,
+                   FileContents *contents) {
+  return MshReader(path, read_whole_file(path), field, limits, contents).read();
 }
 
 MeshInput read_msh_buffer(std::string bytes, const std::string &name, const FieldSelection &field,
-                          const ReadLimits &limits) {
-  return MshReader(name, std::move(bytes), field, limits).read();
+                          const ReadLimits &limits, FileContents *contents) {
+  return MshReader(name, std::move(bytes), field, limits, contents).read();
 }
 
 } // namespace hoct

@@ -2,6 +2,7 @@
 
 #include "io/file_bytes.hpp"
 #include "io/msh_reader.hpp"
+#include "io/pos_reader.hpp"
 #include "io/vtu_reader.hpp"
 #include "util/error.hpp"
 
@@ -10,8 +11,8 @@
 
 namespace hoct {
 
-MeshInput read_mesh(const std::string &path, const FieldSelection &field,
-                    const ReadLimits &limits) {
+MeshInput read_mesh(const std::string &path, const FieldSelection &field, const ReadLimits &limits,
+                    FileContents *contents) {
   if (const std::string what = special_file(path); !what.empty())
     throw InputError(path + ": " + what);
   std::string ext = std::filesystem::path(path).extension().string();
@@ -20,9 +21,12 @@ MeshInput read_mesh(const std::string &path, const FieldSelection &field,
   if (ext == ".vtu")
     return read_vtu(path, field, limits);
   if (ext == ".msh")
-    return read_msh(path, field, limits);
-  throw InputError(path + ": unknown file type '" + ext +
-                   "' (supported: .vtu VTK XML UnstructuredGrid, .msh Gmsh 4.1 or 2.2 ascii)");
+    return read_msh(path, field, limits, contents);
+  if (ext == ".pos")
+    return read_pos(path, field, limits, contents);
+  throw InputError(
+      path + ": unknown file type '" + ext +
+      "' (supported: .vtu VTK XML UnstructuredGrid, .msh Gmsh 4.1 or 2.2, .pos Gmsh parsed views)");
 }
 
 } // namespace hoct

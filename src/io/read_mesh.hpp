@@ -1,7 +1,8 @@
-// Reads a mesh file of any supported format, chosen by extension (.vtu, .msh).
+// Reads a mesh file of any supported format, chosen by extension (.vtu, .msh, .pos).
 #pragma once
 
 #include "io/field_selection.hpp"
+#include "io/file_contents.hpp"
 #include "io/read_limits.hpp"
 #include "mesh/mesh_input.hpp"
 
@@ -9,8 +10,10 @@
 
 namespace hoct {
 
-// field: the point-data array (VTU) or $NodeData view (MSH), see FieldSelection.
+// field: the point-data array (VTU) or $NodeData / $ElementNodeData view (MSH), see
+// FieldSelection. `contents`, if given, receives the fields the file offers where the reader
+// lists them (Gmsh views with their time steps; empty for other formats).
 MeshInput read_mesh(const std::string &path, const FieldSelection &field = {},
-                    const ReadLimits &limits = {});
+                    const ReadLimits &limits = {}, FileContents *contents = nullptr);
 
 } // namespace hoct

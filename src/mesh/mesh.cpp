@@ -26,6 +26,7 @@ Mesh build(const MeshInput &input, MeshInput *consumed, const MeshBuildOptions &
   Mesh m;
   m.source = input.source;
   m.field_name = input.field_name;
+  m.field_detail = input.field_detail;
   m.num_points = static_cast<int64_t>(input.points.size());
   m.fingerprint = mesh_fingerprint(input);
   MeshBuildTimes &times = m.build_times;
@@ -55,6 +56,7 @@ Mesh build(const MeshInput &input, MeshInput *consumed, const MeshBuildOptions &
     MeshInput names;
     names.source = std::move(consumed->source);
     names.field_name = std::move(consumed->field_name);
+    names.field_detail = std::move(consumed->field_detail);
     *consumed = std::move(names);
   }
   throw_if_invalid(m, input, options);
@@ -76,6 +78,7 @@ Mesh build_mesh_from_samples(const MeshInput &input, const std::vector<CellSampl
   Mesh m;
   m.source = input.source;
   m.field_name = input.field_name;
+  m.field_detail = input.field_detail;
   m.num_points = static_cast<int64_t>(input.points.size());
   if (samples.size() != input.num_cells())
     m.problems.add(Problem::InconsistentArrays, std::to_string(samples.size()) +

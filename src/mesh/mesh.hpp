@@ -28,7 +28,7 @@ struct MeshBuildTimes {
 };
 
 struct Mesh {
-  std::string source, field_name;
+  std::string source, field_name, field_detail;
   int64_t num_points = 0;
   // Of the input it was built from (mesh/mesh_fingerprint.hpp), for the results to record; unset
   // for a mesh whose field does not come from the input's node values (build_mesh_from_samples).

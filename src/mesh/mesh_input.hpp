@@ -21,8 +21,9 @@ struct MeshInput {
   // Every node of the mesh (corner and higher-order nodes), with its 3D position and field value.
   PooledVector<Vec3> points;
   PooledVector<double> values;
-  std::string field_name; // name of the scalar array, for reports
-  std::string source;     // file name or generator description, for messages
+  std::string field_name;   // name of the scalar array, for reports
+  std::string field_detail; // which of several time steps, e.g. "(step 2 of 3, time 0.2)"
+  std::string source;       // file name or generator description, for messages
   // The rounding unit of the stored coordinates relative to their magnitude: 2^-24 for float32
   // files, 0 for doubles. Straight cells of a float32 file are straight within it (Geometry).
   double coordinate_precision = 0;

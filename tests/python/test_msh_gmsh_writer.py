@@ -1,5 +1,5 @@
 """MSH files written by Gmsh itself (python3-gmsh) and read by hoct: MSH 4.1 ascii and binary and
-MSH 2.2 ascii, triangles of orders 1 to 10, with $NodeData views appended by gmsh.view.write.
+MSH 2.2 ascii and binary, triangles of orders 1 to 10, with $NodeData views appended by gmsh.view.write.
 
 Checked through the hoct CLI (HOCT_BIN), against Gmsh's own data:
  - the number of triangles and their degree;
@@ -153,7 +153,7 @@ def guarded(label, check, *args):
         stop()
 
 
-FORMATS = [(4.1, 0), (4.1, 1), (2.2, 0)]
+FORMATS = [(4.1, 0), (4.1, 1), (2.2, 0), (2.2, 1)]
 
 
 def square(tmp, order, version, binary):
@@ -215,7 +215,7 @@ def views(tmp, version, binary):
     check_nodes(label + " last time step", path, "temperature", f, xyz, element, etags, enodes)
     r = run("info", path, "--scalar", "nope", check=False)
     R.check(r.returncode != 0
-            and "no $NodeData named 'nope' (available: pressure, temperature)" in r.stderr,
+            and "no $NodeData or $ElementNodeData named 'nope' (available: pressure, temperature)" in r.stderr,
             f"{label}: unknown view: {r.stderr.strip()}")
 
 
