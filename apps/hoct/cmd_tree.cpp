@@ -90,7 +90,7 @@ void run_tree(const TreeOptions &o) {
                    std::filesystem::path(o.file).filename().string() + ": " + tree.method +
                        " contour tree, " + std::to_string(tree.nodes.size()) + " nodes");
   if (!o.quiet)
-    print_tree_summary(o.file, lm.mesh, tree, total.seconds());
+    print_tree_summary(o.file, lm.mesh, tree, total.seconds(), lm.time_step_detail);
   if (o.branches)
     print_branches(tree);
 }
@@ -101,7 +101,7 @@ void register_tree(CLI::App &app) {
   auto o = std::make_shared<TreeOptions>();
   auto *sub = app.add_subcommand(
       "tree", "Compute the contour tree of a field: exact (default) or piecewise-linear");
-  sub->add_option("file", o->file, "Input file (.vtu, .msh)")->required();
+  sub->add_option("file", o->file, "Input file (.vtu, .pvtu, .pvd, .msh)")->required();
   add_field_options(sub, o->field);
   sub->add_flag("--linear", o->linear,
                 "Piecewise-linear tree of the input's nodes (each cell split into linear "

@@ -20,6 +20,7 @@ LoadedMesh load_mesh(const std::string &path, const FieldSelection &field, bool 
   r.input = read_mesh(path, field, limits);
   for (const std::string &w : r.input.warnings)
     std::fprintf(stderr, "hoct: warning: %s\n", w.c_str());
+  r.time_step_detail = r.input.time_step_detail;
   if (merge_tolerance >= 0) {
     const MergeReport m = merge_duplicate_points(r.input, merge_tolerance, thread_count(threads));
     if (m.merged_points > 0)

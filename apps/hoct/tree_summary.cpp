@@ -7,14 +7,16 @@
 namespace hoct::cli {
 
 void print_tree_summary(const std::string &file, const Mesh &mesh, const TreeResult &tree,
-                        double total_seconds) {
+                        double total_seconds, const std::string &time_step_detail) {
   const auto counts = tree.type_counts();
   std::map<std::string, int64_t> loc;
   for (const auto &n : tree.nodes)
     ++loc[to_string(n.location)];
-  std::printf("%s: field '%s', %lld cells (max degree %d), %s tree\n", file.c_str(),
-              mesh.field_name.c_str(), static_cast<long long>(mesh.topology.num_cells()),
-              mesh.field.max_degree(), tree.method.c_str());
+  const std::string step = time_step_detail.empty() ? "" : " (" + time_step_detail + ")";
+  std::printf("%s: field '%s'%s, %lld cells (max degree %d), %s tree\n", file.c_str(),
+              mesh.field_name.c_str(), step.c_str(),
+              static_cast<long long>(mesh.topology.num_cells()), mesh.field.max_degree(),
+              tree.method.c_str());
   std::printf("  nodes: %zu (minima %lld, maxima %lld, saddles %lld", tree.nodes.size(),
               static_cast<long long>(counts[0]), static_cast<long long>(counts[1]),
               static_cast<long long>(counts[2]));

@@ -2,6 +2,7 @@
 
 #include "io/file_bytes.hpp"
 #include "io/msh_reader.hpp"
+#include "io/pvd_reader.hpp"
 #include "io/pvtu_reader.hpp"
 #include "io/vtu_reader.hpp"
 #include "util/error.hpp"
@@ -22,11 +23,13 @@ MeshInput read_mesh(const std::string &path, const FieldSelection &field,
     return read_vtu(path, field, limits);
   if (ext == ".pvtu")
     return read_pvtu(path, field, limits);
+  if (ext == ".pvd")
+    return read_pvd(path, field, limits);
   if (ext == ".msh")
     return read_msh(path, field, limits);
-  throw InputError(
-      path + ": unknown file type '" + ext +
-      "' (supported: .vtu VTK XML UnstructuredGrid, .pvtu its pieces, .msh Gmsh 4.1 or 2.2 ascii)");
+  throw InputError(path + ": unknown file type '" + ext +
+                   "' (supported: .vtu VTK XML UnstructuredGrid, .pvtu its pieces, .pvd a "
+                   "collection of them, .msh Gmsh 4.1 or 2.2 ascii)");
 }
 
 } // namespace hoct

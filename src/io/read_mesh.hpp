@@ -1,4 +1,4 @@
-// Reads a mesh file of any supported format, chosen by extension (.vtu, .msh).
+// Reads a mesh file of any supported format, chosen by extension (.vtu, .pvtu, .pvd, .msh).
 #pragma once
 
 #include "io/field_selection.hpp"
@@ -9,7 +9,8 @@
 
 namespace hoct {
 
-// field: the point-data array (VTU) or $NodeData view (MSH), see FieldSelection.
+// field: the point-data array (VTU) or $NodeData view (MSH) and the time step (.pvd, MSH), see
+// FieldSelection.
 MeshInput read_mesh(const std::string &path, const FieldSelection &field = {},
                     const ReadLimits &limits = {});
 
