@@ -106,7 +106,14 @@ int run_info(const InfoOptions &o) {
   if (!steps.empty()) {
     std::printf("steps:       %zu (by default the last; choose with --step N or --time T)\n",
                 steps.size());
+    // A long series: its first and last steps (--json lists all).
+    constexpr std::size_t kShown = 20;
     for (std::size_t i = 0; i < steps.size(); ++i) {
+      if (steps.size() > 2 * kShown && i == kShown) {
+        std::printf("  ... (%zu more)\n", steps.size() - 2 * kShown);
+        i = steps.size() - kShown - 1;
+        continue;
+      }
       std::string files;
       for (const std::string &f : steps[i].listed)
         files += (files.empty() ? "" : ", ") + f;

@@ -32,11 +32,12 @@ MeshInput join_pieces(std::vector<MeshPiece> pieces, const std::string &where, b
   out.source = where;
   out.cell_offsets.assign(1, 0);
   std::string field_file;
-  bool ids = by_ids, any = false;
+  bool ids = by_ids;
+  std::size_t filled = 0; // pieces that are not empty
   for (const MeshPiece &p : pieces) {
     if (p.input.num_cells() == 0 && p.input.points.empty())
       continue;
-    any = true;
+    ++filled;
     ids = ids && !p.arrays.global_ids.empty();
     if (field_file.empty()) {
       out.field_name = p.input.field_name;
@@ -46,7 +47,7 @@ MeshInput join_pieces(std::vector<MeshPiece> pieces, const std::string &where, b
            out.field_name + "' (name the field with --scalar)");
     }
   }
-  if (!any)
+  if (filled == 0)
     fail("every piece is empty (no points, no cells)");
   // The kept cells and points, piece after piece.
   std::vector<uint32_t> piece_of; // each point's piece
@@ -102,7 +103,10 @@ MeshInput join_pieces(std::vector<MeshPiece> pieces, const std::string &where, b
   // Ids join exactly: positions agree within the coordinates' own rounding too.
   const double position_tolerance =
       diagonal * std::max(kRelativeTolerance, 4 * out.coordinate_precision);
-  if (ids) {
+  if (filled == 1) { // nothing to merge with
+    for (std::size_t i = 0; i < n; ++i)
+      rep[i] = static_cast<int64_t>(i);
+  } else if (ids) {
     std::unordered_map<int64_t, int64_t> first;
     first.reserve(n);
     for (std::size_t i = 0; i < n; ++i) {
