@@ -236,6 +236,31 @@ TEST(VtuCollections, MalformedPvtuNamesTheFile) {
           {"piece 1 of 2: " + tmp.file("broken.vtu") + ": not valid XML"});
 }
 
+// The piece element of a piece's text.
+std::string piece_element(const std::string &text) {
+  const std::size_t begin = text.find("<Piece "), end = text.find("</Piece>") + 8;
+  return text.substr(begin, end - begin);
+}
+
+TEST(VtuCollections, GhostArraysOfSeveralPiecesInOneFile) {
+  TempDir tmp;
+  // A file of two <Piece>s, the second only with ghost levels: zeros for the first's cells.
+  const std::string two = piece({0});
+  const std::size_t at = two.find("</UnstructuredGrid>");
+  tmp.write("two.vtu",
+            two.substr(0, at) + piece_element(piece({0, 1}, {0})) + "\n" + two.substr(at));
+  const MeshInput m = read_mesh(tmp.write("two.pvtu", pvtu({"two.vtu"})));
+  EXPECT_EQ(m.num_cells(), 2u);  // the ghost cell dropped
+  EXPECT_EQ(m.num_points(), 6u); // its point 0 too; a file's own pieces are not merged
+  // A ghost flag that is none.
+  std::string bad = piece({0}, {0});
+  const std::string flag = "Name=\"vtkGhostType\" format=\"ascii\"> 1<";
+  bad.replace(bad.find(flag), flag.size(), "Name=\"vtkGhostType\" format=\"ascii\"> 300<");
+  tmp.write("bad.vtu", bad);
+  const std::string path = tmp.write("bad.pvtu", pvtu({"bad.vtu"}));
+  expect_error([&] { read_mesh(path); }, path, {"value 0 is 300, not a ghost flag (0 to 255)"});
+}
+
 TEST(VtuCollections, BudgetCoversAllPieces) {
   TempDir tmp;
   tmp.write("a.vtu", piece({0}));
