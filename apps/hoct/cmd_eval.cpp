@@ -131,7 +131,7 @@ void register_eval(CLI::App &app) {
   auto *sub = app.add_subcommand(
       "eval", "Evaluate the field and the geometry at parametric points: reads lines 'cell u v' "
               "(reference triangle (0,0),(1,0),(0,1)), prints 'cell u v x y z value'");
-  sub->add_option("file", o->file, "Input file (.vtu, .msh, .pos)")->required();
+  sub->add_option("file", o->file, "Input file (.vtu, .pvtu, .pvd, .msh, .pos)")->required();
   add_field_options(sub, o->field);
   sub->add_option("--points", o->points, "File of 'cell u v' lines, or - for stdin");
   sub->callback([o] { run_eval(*o); });

@@ -1,6 +1,8 @@
 // `hoct info FILE`: what the file holds and whether hoct can compute its contour tree.
 #include "commands.hpp"
 #include "field_options.hpp"
+#include "io/collection_xml.hpp"
+#include "io/pvd_reader.hpp"
 #include "load_mesh.hpp"
 
 #include <nlohmann/json.hpp>
@@ -32,6 +34,10 @@ std::string domain_kind(const Topology &t) {
 }
 
 int run_info(const InfoOptions &o) {
+  // A collection's steps, listed with the one read.
+  std::vector<PvdStep> steps;
+  if (lowercase_extension(o.file) == ".pvd")
+    steps = read_pvd_steps(o.file);
   const LoadedMesh lm =
       load_mesh(o.file, o.field.selection(), /*strict=*/false, o.merge.tolerance());
   const Mesh &m = lm.mesh;
@@ -61,6 +67,17 @@ int run_info(const InfoOptions &o) {
             {{"name", f.name}, {"kind", f.kind}, {"components", f.components}, {"steps", steps}});
       }
       j["views"] = views;
+    }
+    if (!steps.empty()) {
+      nlohmann::ordered_json list = nlohmann::ordered_json::array();
+      for (std::size_t i = 0; i < steps.size(); ++i) {
+        nlohmann::ordered_json s;
+        s["index"] = i;
+        s["time"] = steps[i].time ? nlohmann::ordered_json(*steps[i].time) : nullptr;
+        s["files"] = steps[i].listed;
+        list.push_back(s);
+      }
+      j["steps"] = list;
     }
     j["cells"] = m.complete ? m.topology.num_cells() : 0;
     j["points"] = m.num_points;
@@ -98,6 +115,25 @@ int run_info(const InfoOptions &o) {
   }
 
   std::printf("file:        %s\n", o.file.c_str());
+  if (!steps.empty()) {
+    std::printf("steps:       %zu (by default the last; choose with --step N or --time T)\n",
+                steps.size());
+    // A long series: its first and last steps (--json lists all).
+    constexpr std::size_t kShown = 20;
+    for (std::size_t i = 0; i < steps.size(); ++i) {
+      if (steps.size() > 2 * kShown && i == kShown) {
+        std::printf("  ... (%zu more)\n", steps.size() - 2 * kShown);
+        i = steps.size() - kShown - 1;
+        continue;
+      }
+      std::string files;
+      for (const std::string &f : steps[i].listed)
+        files += (files.empty() ? "" : ", ") + f;
+      std::printf("  step %zu: %s%s\n", i,
+                  steps[i].time ? ("time " + format_time(*steps[i].time) + ", ").c_str() : "",
+                  files.c_str());
+    }
+  }
   std::printf("field:       %s%s\n", m.field_name.c_str(),
               m.field_detail.empty() ? "" : (" " + m.field_detail).c_str());
   if (!lm.contents.fields.empty()) {
@@ -160,7 +196,7 @@ void register_info(CLI::App &app) {
   auto o = std::make_shared<InfoOptions>();
   auto *sub = app.add_subcommand("info", "Describe a mesh file: cells, degrees, topology, value "
                                          "range, geometry and any problems (exit 1 if invalid)");
-  sub->add_option("file", o->file, "Input file (.vtu, .msh, .pos)")->required();
+  sub->add_option("file", o->file, "Input file (.vtu, .pvtu, .pvd, .msh, .pos)")->required();
   add_field_options(sub, o->field);
   sub->add_flag("--json", o->json, "Print JSON instead of text");
   add_merge_option(sub, o->merge);

@@ -68,7 +68,7 @@ void register_render(CLI::App &app) {
   auto o = std::make_shared<RenderCmdOptions>();
   auto *sub = app.add_subcommand(
       "render", "Draw the field with exact isolines and its critical points (PNG or SVG)");
-  sub->add_option("file", o->file, "Input file (.vtu, .msh, .pos)")->required();
+  sub->add_option("file", o->file, "Input file (.vtu, .pvtu, .pvd, .msh, .pos)")->required();
   sub->add_option("-o,--output", o->output, "Picture to write (.png or .svg)");
   add_field_options(sub, o->field);
   sub->add_option("--tree", o->tree,

@@ -73,7 +73,7 @@ void register_study(CLI::App &app) {
   auto o = std::make_shared<StudyCmdOptions>();
   auto *sub = app.add_subcommand("study", "Case study (thesis 5.5): the exact tree against the "
                                           "PL trees of uniform refinements");
-  sub->add_option("file", o->file, "Input file (.vtu, .msh, .pos)")->required();
+  sub->add_option("file", o->file, "Input file (.vtu, .pvtu, .pvd, .msh, .pos)")->required();
   add_field_options(sub, o->field);
   sub->add_option("--refine", o->levels, "Refinement levels, e.g. 1,2,4,8,16")->delimiter(',');
   sub->add_option("--threshold", o->threshold,

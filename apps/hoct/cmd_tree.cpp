@@ -101,7 +101,7 @@ void register_tree(CLI::App &app) {
   auto o = std::make_shared<TreeOptions>();
   auto *sub = app.add_subcommand(
       "tree", "Compute the contour tree of a field: exact (default) or piecewise-linear");
-  sub->add_option("file", o->file, "Input file (.vtu, .msh, .pos)")->required();
+  sub->add_option("file", o->file, "Input file (.vtu, .pvtu, .pvd, .msh, .pos)")->required();
   add_field_options(sub, o->field);
   sub->add_flag("--linear", o->linear,
                 "Piecewise-linear tree of the input's nodes (each cell split into linear "

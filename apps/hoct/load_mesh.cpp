@@ -19,6 +19,8 @@ LoadedMesh load_mesh(const std::string &path, const FieldSelection &field, bool 
   ReadLimits limits = read_limits();
   limits.threads = thread_count(threads);
   r.input = read_mesh(path, field, limits, &r.contents);
+  for (const std::string &w : r.input.warnings)
+    std::fprintf(stderr, "hoct: warning: %s\n", w.c_str());
   if (merge_tolerance >= 0) {
     const MergeReport m = merge_duplicate_points(r.input, merge_tolerance, thread_count(threads));
     if (m.merged_points > 0)

@@ -20,7 +20,8 @@ struct LoadedMesh {
   double read_seconds = 0, build_seconds = 0;
 };
 
-// Reads `path` (any supported format) and builds the mesh. With strict = true, any error-level
+// Reads `path` (any supported format) and builds the mesh. The reader's warnings are printed
+// on stderr ("hoct: warning: ..."). With strict = true, any error-level
 // problem throws hoct::Error listing them. With merge_tolerance >= 0, points closer than that
 // (relative to the bounding-box diagonal) are merged first (mesh/duplicate_points.hpp).
 // `threads` (0: all cores) converts the cells to Bernstein form in parallel. Without

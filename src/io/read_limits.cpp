@@ -49,12 +49,19 @@ void check_memory(const ReadLimits &limits, uint64_t points, uint64_t cells, uin
                   const std::string &where) {
   if (limits.max_memory_bytes == 0)
     return;
+  const bool prior = limits.prior_points || limits.prior_cells || limits.prior_cell_nodes;
+  // Saturating: the sums come from untrusted headers too.
+  auto add = [](uint64_t a, uint64_t b) { return a > UINT64_MAX - b ? UINT64_MAX : a + b; };
+  points = add(points, limits.prior_points);
+  cells = add(cells, limits.prior_cells);
+  cell_nodes = add(cell_nodes, limits.prior_cell_nodes);
   const uint64_t need = estimate_memory_bytes(points, cells, cell_nodes);
   if (need > limits.max_memory_bytes)
-    throw InputError(where + ": " + std::to_string(points) + " points and " +
-                     std::to_string(cells) + " cells need ~" + format_bytes(need) + ", limit " +
-                     format_bytes(limits.max_memory_bytes) +
-                     " (raise it with --max-memory, e.g. --max-memory 90%)");
+    throw InputError(
+        where + ": " + std::to_string(points) + " points and " + std::to_string(cells) + " cells" +
+        (prior ? std::string(" (with the pieces read before)") : std::string()) + " need ~" +
+        format_bytes(need) + ", limit " + format_bytes(limits.max_memory_bytes) +
+        " (raise it with --max-memory, e.g. --max-memory 90%)");
 }
 
 uint64_t parse_memory_size(const std::string &text, uint64_t physical_bytes) {

@@ -19,6 +19,9 @@ struct ReadLimits {
   // Threads that read such arrays from the file, each a part (0 = all hardware threads): copying
   // from the page cache and mapping the destination's fresh pages scale with them.
   int threads = 1;
+  // What a collection reader (.pvtu, .pvd) has read before this file, its earlier pieces:
+  // counted in the budget with the file's own counts.
+  uint64_t prior_points = 0, prior_cells = 0, prior_cell_nodes = 0;
 };
 
 // Estimated peak bytes to read, build and compute the exact tree of a mesh with `points` nodes,
@@ -26,7 +29,7 @@ struct ReadLimits {
 uint64_t estimate_memory_bytes(uint64_t points, uint64_t cells, uint64_t cell_nodes);
 
 // Throws InputError "<where>: <what> needs ~X GiB, limit Y GiB (...)" if the estimate exceeds
-// the limit.
+// the limit. The limits' prior counts are added to the ones given.
 void check_memory(const ReadLimits &limits, uint64_t points, uint64_t cells, uint64_t cell_nodes,
                   const std::string &where);
 

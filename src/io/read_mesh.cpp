@@ -3,6 +3,8 @@
 #include "io/file_bytes.hpp"
 #include "io/msh_reader.hpp"
 #include "io/pos_reader.hpp"
+#include "io/pvd_reader.hpp"
+#include "io/pvtu_reader.hpp"
 #include "io/vtu_reader.hpp"
 #include "util/error.hpp"
 
@@ -20,13 +22,17 @@ MeshInput read_mesh(const std::string &path, const FieldSelection &field, const 
                  [](unsigned char c) { return std::tolower(c); });
   if (ext == ".vtu")
     return read_vtu(path, field, limits);
+  if (ext == ".pvtu")
+    return read_pvtu(path, field, limits);
+  if (ext == ".pvd")
+    return read_pvd(path, field, limits);
   if (ext == ".msh")
     return read_msh(path, field, limits, contents);
   if (ext == ".pos")
     return read_pos(path, field, limits, contents);
-  throw InputError(
-      path + ": unknown file type '" + ext +
-      "' (supported: .vtu VTK XML UnstructuredGrid, .msh Gmsh 4.1 or 2.2, .pos Gmsh parsed views)");
+  throw InputError(path + ": unknown file type '" + ext +
+                   "' (supported: .vtu VTK XML UnstructuredGrid, .pvtu its pieces, .pvd a "
+                   "collection of them, .msh Gmsh 4.1 or 2.2, .pos Gmsh parsed views)");
 }
 
 } // namespace hoct

@@ -1,4 +1,5 @@
-// Reads a mesh file of any supported format, chosen by extension (.vtu, .msh, .pos).
+// Reads a mesh file of any supported format, chosen by extension (.vtu, .pvtu, .pvd, .msh,
+// .pos).
 #pragma once
 
 #include "io/field_selection.hpp"
@@ -10,9 +11,10 @@
 
 namespace hoct {
 
-// field: the point-data array (VTU) or $NodeData / $ElementNodeData view (MSH), see
-// FieldSelection. `contents`, if given, receives the fields the file offers where the reader
-// lists them (Gmsh views with their time steps; empty for other formats).
+// field: the point-data array (VTU) or $NodeData / $ElementNodeData view (MSH) and the time
+// step (.pvd, MSH), see FieldSelection. `contents`, if given, receives the fields the file
+// offers where the reader lists them (Gmsh views with their time steps; empty for other
+// formats).
 MeshInput read_mesh(const std::string &path, const FieldSelection &field = {},
                     const ReadLimits &limits = {}, FileContents *contents = nullptr);
 

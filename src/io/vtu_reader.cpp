@@ -2,6 +2,7 @@
 
 #include "io/base64.hpp"
 #include "io/file_bytes.hpp"
+#include "io/pvtu_reader.hpp"
 #include "io/vtk_cells.hpp"
 #include "util/error.hpp"
 #include "util/page_pool.hpp"
@@ -55,8 +56,10 @@ struct Payload {
 
 class VtuFile {
 public:
-  VtuFile(std::string path, FieldSelection field, const ReadLimits &limits)
-      : path_(std::move(path)), field_(std::move(field)), limits_(limits) {}
+  VtuFile(std::string path, FieldSelection field, const ReadLimits &limits,
+          VtuPieceRequest request = {})
+      : path_(std::move(path)), field_(std::move(field)), limits_(limits),
+        request_(std::move(request)) {}
   VtuFile(const VtuFile &) = delete;
   VtuFile &operator=(const VtuFile &) = delete;
   ~VtuFile() {
@@ -71,6 +74,8 @@ public:
     file_size_ = bytes_.size();
   }
   MeshInput read();
+  // The bookkeeping arrays read() found (ghost levels, global ids).
+  VtuPieceArrays &arrays() { return arrays_; }
 
 private:
   [[noreturn]] void fail(const std::string &what) const { throw InputError(path_ + ": " + what); }
@@ -116,11 +121,20 @@ private:
   PooledVector<int64_t> read_ints(const pugi::xml_node &a, std::size_t expected) const;
   template <class T>
   PooledVector<T> read_array(const pugi::xml_node &a, std::size_t expected) const;
+  // A piece's vtkGhostType array in `data` (PointData or CellData), `n` flags (empty if none).
+  std::vector<uint8_t> read_ghost(const pugi::xml_node &data, std::size_t n,
+                                  const std::string &where) const;
+  // The bookkeeping arrays of a piece of np points whose first point is `base`.
+  void read_point_arrays(const pugi::xml_node &pd, int64_t base, std::size_t np,
+                         const std::string &where);
 
   std::string path_;
   FieldSelection field_;
   ReadLimits limits_;
-  FileBytes bytes_; // the file (unless streamed)
+  VtuPieceRequest request_;
+  VtuPieceArrays arrays_;
+  bool ids_incomplete_ = false; // a piece of the file has no global ids
+  FileBytes bytes_;             // the file (unless streamed)
   uint64_t file_size_ = 0;
   int fd_ = -1;                  // the open file, when streamed
   bool streamed_ = false;        // the appended payload stays in the file:
@@ -892,6 +906,59 @@ long long parse_count(const pugi::xml_attribute &a) {
   return v;
 }
 
+std::vector<uint8_t> VtuFile::read_ghost(const pugi::xml_node &data, std::size_t n,
+                                         const std::string &where) const {
+  const pugi::xml_node a = named_array(data, "vtkGhostType");
+  std::vector<uint8_t> flags;
+  if (!a)
+    return flags;
+  if (a.attribute("NumberOfComponents").as_int(1) != 1)
+    fail(where + ": " + describe(a) + " has " + a.attribute("NumberOfComponents").as_string() +
+         " components (a ghost level has 1)");
+  const PooledVector<int64_t> v = read_ints(a, n);
+  flags.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (v[i] < 0 || v[i] > 255)
+      fail(where + ": " + describe(a) + ": value " + std::to_string(i) + " is " +
+           std::to_string(v[i]) + ", not a ghost flag (0 to 255)");
+    flags[i] = static_cast<uint8_t>(v[i]);
+  }
+  return flags;
+}
+
+void VtuFile::read_point_arrays(const pugi::xml_node &pd, int64_t base, std::size_t np,
+                                const std::string &where) {
+  const std::size_t before = static_cast<std::size_t>(base);
+  const std::vector<uint8_t> ghost = read_ghost(pd, np, where);
+  if (!ghost.empty() || !arrays_.point_ghost.empty()) {
+    arrays_.point_ghost.resize(before, 0); // zeros for earlier pieces without one
+    if (ghost.empty())
+      arrays_.point_ghost.resize(before + np, 0);
+    for (const uint8_t g : ghost) {
+      arrays_.point_ghost.push_back(g);
+      arrays_.ghost_points += (g & kDuplicateGhost) != 0;
+    }
+  }
+  std::string name = request_.global_ids_name;
+  if (name.empty())
+    name = pd.attribute("GlobalIds").as_string();
+  if (name.empty())
+    name = "GlobalIds";
+  // Ids of every piece or of none: ids of some pieces only cannot join them.
+  const pugi::xml_node a = named_array(pd, name);
+  const bool usable = a && a.attribute("NumberOfComponents").as_int(1) == 1;
+  const bool first = before == 0, earlier = !arrays_.global_ids.empty();
+  if (usable != (first || earlier)) {
+    ids_incomplete_ = ids_incomplete_ || !first;
+    return;
+  }
+  if (!usable)
+    return;
+  const PooledVector<int64_t> ids = read_ints(a, np);
+  arrays_.global_ids.insert(arrays_.global_ids.end(), ids.begin(), ids.end());
+  arrays_.global_ids_name = name;
+}
+
 MeshInput VtuFile::read() {
   load();
   const pugi::xml_node grid = single_child(doc_.child("VTKFile"), "UnstructuredGrid");
@@ -972,6 +1039,7 @@ MeshInput VtuFile::read() {
     for (long long i = 0; i < np; ++i)
       if (!std::isfinite(vals[i]))
         fail(where + ": point " + std::to_string(i) + " has a non-finite value of '" + field + "'");
+    read_point_arrays(pd, base, static_cast<std::size_t>(np), where);
     if (m.values.empty())
       m.values = std::move(vals);
     else
@@ -984,6 +1052,11 @@ MeshInput VtuFile::read() {
       fail(where + ": <Cells> needs the DataArrays connectivity, offsets and types");
     const PooledVector<int64_t> offsets = read_ints(oa, static_cast<std::size_t>(nc));
     const PooledVector<int64_t> types = read_ints(ta, static_cast<std::size_t>(nc));
+    // vtkGhostType of the cells (kept for the triangles only, as the cells are).
+    const std::vector<uint8_t> cell_ghost =
+        read_ghost(single_child(piece, "CellData"), static_cast<std::size_t>(nc), where);
+    if (!cell_ghost.empty())
+      arrays_.cell_ghost.resize(m.num_cells(), 0); // zeros for earlier pieces without one
     const int64_t nconn = nc ? offsets.back() : 0;
     if (nconn < 0 || static_cast<unsigned long long>(nconn) > file_size_)
       fail(where + ": the last cell offset " + std::to_string(nconn) + " is invalid");
@@ -1027,6 +1100,12 @@ MeshInput VtuFile::read() {
       write += n;
       m.cell_offsets.push_back(static_cast<int64_t>(start) + write);
       m.cell_degree.push_back(static_cast<uint8_t>(degree));
+      if (!cell_ghost.empty()) {
+        arrays_.cell_ghost.push_back(cell_ghost[c]);
+        arrays_.ghost_cells += (cell_ghost[c] & kDuplicateGhost) != 0;
+      } else if (!arrays_.cell_ghost.empty()) {
+        arrays_.cell_ghost.push_back(0);
+      }
     }
     m.cell_nodes.resize(start + static_cast<std::size_t>(write));
     ++piece_index;
@@ -1034,6 +1113,12 @@ MeshInput VtuFile::read() {
   }
   if (piece_index == 0)
     fail("no <Piece> in <UnstructuredGrid>");
+  if (ids_incomplete_) { // ids of some pieces only: no use for joining them
+    arrays_.global_ids.clear();
+    arrays_.global_ids_name.clear();
+  }
+  if (m.num_cells() == 0 && m.points.empty() && skipped == 0 && request_.allow_empty)
+    return m;
   if (m.num_cells() == 0)
     fail(skipped ? "the file has no triangle cells (only " + std::to_string(skipped) +
                        " vertex or line cells)"
@@ -1048,7 +1133,24 @@ MeshInput read_vtu(const std::string &path, const FieldSelection &field, const R
     throw InputError(path + ": --step / --time: a .vtu file holds one time step");
   VtuFile f(path, field, limits);
   f.read_file();
-  return f.read();
+  MeshInput m = f.read();
+  const VtuPieceArrays &a = f.arrays();
+  if (a.ghost_cells > 0 || a.ghost_points > 0)
+    m.warnings.push_back(lone_piece_warning(path, a.ghost_cells, a.ghost_points));
+  return m;
+}
+
+MeshInput read_vtu_piece(const std::string &path, const FieldSelection &field,
+                         const ReadLimits &limits, const VtuPieceRequest &request,
+                         VtuPieceArrays &arrays) {
+  FieldSelection one_step = field;
+  one_step.step = -1;
+  one_step.time.reset();
+  VtuFile f(path, one_step, limits, request);
+  f.read_file();
+  MeshInput m = f.read();
+  arrays = std::move(f.arrays());
+  return m;
 }
 
 MeshInput read_vtu_buffer(std::string bytes, const std::string &name, const FieldSelection &field,

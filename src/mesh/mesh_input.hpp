@@ -21,9 +21,14 @@ struct MeshInput {
   // Every node of the mesh (corner and higher-order nodes), with its 3D position and field value.
   PooledVector<Vec3> points;
   PooledVector<double> values;
-  std::string field_name;   // name of the scalar array, for reports
-  std::string field_detail; // which of several time steps, e.g. "(step 2 of 3, time 0.2)"
-  std::string source;       // file name or generator description, for messages
+  std::string field_name; // name of the scalar array, for reports
+  std::string source;     // file name or generator description, for messages
+  // Which time step of a file holding several was read ("(step 2 of 3, time 0.2)", "(step 4 of 5,
+  // time 0.4: F_4.pvtu)"), for the summaries; empty for a file of one.
+  std::string field_detail;
+  // What the reader found worth telling but read anyway (one piece of a partitioned output read
+  // alone, ...): complete sentences, which the front ends print as warnings.
+  std::vector<std::string> warnings;
   // The rounding unit of the stored coordinates relative to their magnitude: 2^-24 for float32
   // files, 0 for doubles. Straight cells of a float32 file are straight within it (Geometry).
   double coordinate_precision = 0;

@@ -1,0 +1,31 @@
+// The pieces of a partitioned output (a .pvtu's, the parts of a .pvd's step) joined into one
+// mesh: each piece's ghost cells dropped, and the points the pieces share merged.
+#pragma once
+
+#include "io/vtu_reader.hpp"
+#include "mesh/mesh_input.hpp"
+
+#include <string>
+#include <vector>
+
+namespace hoct {
+
+struct MeshPiece {
+  MeshInput input;
+  VtuPieceArrays arrays; // its ghost levels and global ids (none for a part joined already)
+  std::string file;      // the piece's file, for messages
+};
+
+// One mesh of the pieces, consumed piece by piece. Of each piece, the cells with vtkGhostType's
+// DUPLICATECELL bit are dropped (another piece owns them), then the points no kept cell uses
+// that are ghost points (DUPLICATEPOINT) or were used by ghost cells only. The points the pieces
+// share are merged: by global id when `by_ids` and every piece has ids (their positions must
+// agree), else by position (within 1e-9 of the bounding-box diagonal, a point with the points of
+// other pieces only: a crack inside a piece stays one). Merged points must have the same value
+// (within 1e-9 of the largest magnitude). Every piece must have the same field. Throws
+// InputError "<where>: ..." naming the piece files for anything else. Empty pieces (an idle
+// rank's) are skipped; no cell at all is an error.
+MeshInput join_pieces(std::vector<MeshPiece> pieces, const std::string &where, bool by_ids,
+                      int threads = 1);
+
+} // namespace hoct
