@@ -47,8 +47,9 @@ TEST(InterpolationError, BoundsTheSampledErrorOnRandomPolynomials) {
           sampled = std::max(sampled, std::abs(p(x, y) - (r * pa + s * pb + t * pc)));
         }
       EXPECT_LE(sampled, bound.on(a, b, c)) << "degree " << d << " trial " << trial;
-      if (d == 1)
+      if (d == 1) {
         EXPECT_LT(bound.on(a, b, c), 1e-14);
+      }
     }
 }
 
