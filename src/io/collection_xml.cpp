@@ -1,6 +1,7 @@
 #include "io/collection_xml.hpp"
 
 #include "io/file_bytes.hpp"
+#include "io/xml_structure.hpp"
 #include "util/error.hpp"
 
 #include <algorithm>
@@ -34,29 +35,11 @@ void load_collection_xml(const std::string &path, const char *type, CollectionXm
   const pugi::xml_parse_result r = xml.doc.load_buffer(bytes.data(), bytes.size());
   if (!r)
     fail(std::string("not valid XML: ") + r.description() + " at byte " + std::to_string(r.offset));
-  pugi::xml_node root;
-  for (const pugi::xml_node n : xml.doc.children()) {
-    if (n.type() != pugi::node_element)
-      continue;
-    if (root)
-      fail(std::string("a second root element <") + n.name() + "> after <" + root.name() +
-           ">: an XML file has one");
-    root = n;
-  }
-  // Every attribute once (pugixml keeps both of a pair, and the first would win).
-  std::vector<pugi::xml_node> todo(1, root);
-  while (!todo.empty()) {
-    const pugi::xml_node e = todo.back();
-    todo.pop_back();
-    for (pugi::xml_attribute a = e.first_attribute(); a; a = a.next_attribute())
-      for (pugi::xml_attribute b = a.next_attribute(); b; b = b.next_attribute())
-        if (std::strcmp(a.name(), b.name()) == 0)
-          fail("<" + std::string(e.name()) + "> has the attribute " + a.name() + " twice ('" +
-               a.value() + "' and '" + b.value() + "'): not well-formed XML");
-    for (const pugi::xml_node c : e.children())
-      if (c.type() == pugi::node_element)
-        todo.push_back(c);
-  }
+  if (const std::string problem = xml_structure_problem(
+          xml.doc, [](const pugi::xml_node &e) { return "<" + std::string(e.name()) + ">"; });
+      !problem.empty())
+    fail(problem);
+  const pugi::xml_node root = xml.doc.document_element();
   if (std::strcmp(root.name(), "VTKFile") != 0)
     fail("not a VTK XML file (no <VTKFile> element)");
   const std::string file_type = root.attribute("type").as_string();

@@ -16,6 +16,16 @@ std::string FieldSelection::describe(const std::string &chosen_name) const {
   return chosen_name;
 }
 
+std::string step_description(std::size_t step, std::size_t steps, std::optional<double> time) {
+  std::string s = "step " + std::to_string(step) + " of " + std::to_string(steps);
+  if (time) {
+    char buf[32];
+    const auto r = std::to_chars(buf, buf + sizeof buf, *time);
+    s.append(", time ").append(buf, r.ptr);
+  }
+  return s;
+}
+
 int parse_component(const std::string &text) {
   std::string t = text;
   std::transform(t.begin(), t.end(), t.begin(), [](unsigned char c) { return std::tolower(c); });

@@ -35,6 +35,10 @@ struct FieldSelection {
   std::string describe(const std::string &chosen_name) const;
 };
 
+// "step 2 of 3, time 0.2" (the time only if there is one; the shortest text that reads back as
+// it): which time step a reader read, for MeshInput::field_detail.
+std::string step_description(std::size_t step, std::size_t steps, std::optional<double> time);
+
 // Parses --component: a non-negative integer, x / y / z (0, 1, 2) or "magnitude". Throws
 // hoct::Error for anything else.
 int parse_component(const std::string &text);

@@ -1065,8 +1065,7 @@ void MshReader::choose_view() {
   chosen_ = v->name;
   chosen_what_ = what;
   if (nsteps > 1)
-    chosen_detail_ = "(step " + str(uint64_t{k}) + " of " + str(uint64_t{nsteps}) +
-                     (v->steps[k].time ? ", time " + str(*v->steps[k].time) : std::string()) + ")";
+    chosen_detail_ = "(" + step_description(k, nsteps, v->steps[k].time) + ")";
 }
 
 // $ElementNodeData gives each element its own values: where elements sharing a node disagree

@@ -481,11 +481,13 @@ MeshInput PosReader::build(const PosView &v) {
   }
   m.field_name = v.name;
   if (nsteps > 1)
-    m.field_detail = "(step " + std::to_string(step) + " of " + std::to_string(nsteps) +
-                     (static_cast<std::size_t>(step) < v.times.size()
-                          ? ", time " + str(v.times[static_cast<std::size_t>(step)])
-                          : std::string()) +
-                     ")";
+    m.field_detail =
+        "(" +
+        step_description(static_cast<std::size_t>(step), static_cast<std::size_t>(nsteps),
+                         static_cast<std::size_t>(step) < v.times.size()
+                             ? std::optional<double>(v.times[static_cast<std::size_t>(step)])
+                             : std::nullopt) +
+        ")";
   m.source = s_.path();
   return m;
 }

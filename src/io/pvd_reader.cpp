@@ -136,11 +136,9 @@ MeshInput read_pvd(const std::string &path, const FieldSelection &field, const R
   const std::vector<PvdStep> steps = read_pvd_steps(path);
   const std::size_t chosen = choose_pvd_step(path, steps, field);
   const PvdStep &step = steps[chosen];
-  std::string detail = "step " + std::to_string(chosen) + " of " + std::to_string(steps.size());
-  if (step.time)
-    detail += ", time " + format_time(*step.time);
-  detail += ": " + (step.listed.size() == 1 ? step.listed.front()
-                                            : std::to_string(step.listed.size()) + " parts");
+  std::string detail = step_description(chosen, steps.size(), step.time) + ": " +
+                       (step.listed.size() == 1 ? step.listed.front()
+                                                : std::to_string(step.listed.size()) + " parts");
   // The parts hold one step each: the choice is made.
   FieldSelection one_step = field;
   one_step.step = -1;

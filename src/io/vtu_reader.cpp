@@ -4,6 +4,7 @@
 #include "io/file_bytes.hpp"
 #include "io/pvtu_reader.hpp"
 #include "io/vtk_cells.hpp"
+#include "io/xml_structure.hpp"
 #include "util/error.hpp"
 #include "util/page_pool.hpp"
 #include "util/parallel_for.hpp"
@@ -316,32 +317,10 @@ std::string VtuFile::line_of(const pugi::xml_node &n) const {
 }
 
 void VtuFile::check_structure() const {
-  pugi::xml_node first;
-  for (const pugi::xml_node n : doc_.children()) {
-    if (n.type() != pugi::node_element)
-      continue;
-    if (first)
-      fail("a second root element " + line_of(n) + " after <" + first.name() +
-           ">: an XML file has one (a VTK file's is <VTKFile>)");
-    first = n;
-  }
-  // Every element's attributes, once each (depth first; the elements are few: the arrays' data
-  // are text, not elements).
-  std::vector<pugi::xml_node> todo(1, first);
-  while (!todo.empty()) {
-    const pugi::xml_node e = todo.back();
-    todo.pop_back();
-    if (!e)
-      continue;
-    for (pugi::xml_attribute a = e.first_attribute(); a; a = a.next_attribute())
-      for (pugi::xml_attribute b = a.next_attribute(); b; b = b.next_attribute())
-        if (std::strcmp(a.name(), b.name()) == 0)
-          fail(line_of(e) + " has the attribute " + a.name() + " twice ('" + a.value() + "' and '" +
-               b.value() + "'): not well-formed XML (an attribute is given once)");
-    for (const pugi::xml_node c : e.children())
-      if (c.type() == pugi::node_element)
-        todo.push_back(c);
-  }
+  const std::string problem =
+      xml_structure_problem(doc_, [this](const pugi::xml_node &e) { return line_of(e); });
+  if (!problem.empty())
+    fail(problem);
 }
 
 pugi::xml_node VtuFile::single_child(const pugi::xml_node &parent, const char *name) const {
