@@ -8,6 +8,8 @@
 #include "io/vtu_reader.hpp"
 #include "util/error.hpp"
 
+#include "test_temp_dir.hpp"
+
 #include <gtest/gtest.h>
 
 #include <unistd.h>
@@ -25,20 +27,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-class TempDir {
-public:
-  TempDir() : path_(fs::temp_directory_path() / ("hoct-pvd-" + std::to_string(::getpid()))) {
-    fs::create_directories(path_ / "sub");
-  }
-  ~TempDir() { fs::remove_all(path_); }
-  std::string file(const std::string &name) const { return (path_ / name).string(); }
-  std::string write(const std::string &name, const std::string &content) const {
-    std::ofstream(file(name), std::ios::binary) << content;
-    return file(name);
-  }
-
-private:
-  fs::path path_;
+struct TempDir : testing::TempDir {
+  TempDir() : testing::TempDir("hoct-pvd", "sub") {}
 };
 
 // The unit square as two linear triangles, T = x + 2y + k; a piece holds some of them.

@@ -8,6 +8,8 @@
 #include "test_meshes.hpp"
 #include "util/error.hpp"
 
+#include "test_temp_dir.hpp"
+
 #include <gtest/gtest.h>
 #include <zlib.h>
 
@@ -21,20 +23,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-class TempDir {
-public:
-  TempDir() : path_(fs::temp_directory_path() / ("hoct-vtu-" + std::to_string(::getpid()))) {
-    fs::create_directories(path_);
-  }
-  ~TempDir() { fs::remove_all(path_); }
-  std::string file(const std::string &name) const { return (path_ / name).string(); }
-  std::string write(const std::string &name, const std::string &content) const {
-    std::ofstream(file(name), std::ios::binary) << content;
-    return file(name);
-  }
-
-private:
-  fs::path path_;
+struct TempDir : testing::TempDir {
+  TempDir() : testing::TempDir("hoct-vtu") {}
 };
 
 TEST(Base64, RoundTripAndConcatenatedStreams) {
