@@ -137,7 +137,7 @@ int run_info(const InfoOptions &o) {
   std::printf("field:       %s%s\n", m.field_name.c_str(),
               m.field_detail.empty() ? "" : (" " + m.field_detail).c_str());
   if (!lm.contents.fields.empty()) {
-    std::printf("views:\n");
+    std::printf("fields:\n");
     for (const FileField &f : lm.contents.fields) {
       std::string times;
       for (std::size_t i = 0; i < f.steps.size(); ++i) {

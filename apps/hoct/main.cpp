@@ -3,6 +3,9 @@
 #include "memory_guard.hpp"
 #include "util/error.hpp"
 #include "util/page_pool.hpp"
+#ifdef HOCT_WITH_VTK
+#include "vtkio/vtk_file_reader.hpp"
+#endif
 
 #include <cerrno>
 #include <cstdio>
@@ -39,6 +42,9 @@ int finish_standard_output() {
 int main(int argc, char **argv) {
   // An interrupted run (Ctrl-C, kill) removes its temporary files: no partial output is left.
   hoct::install_interrupt_cleanup();
+#ifdef HOCT_WITH_VTK
+  hoct::vtkio::register_vtk_reader(); // legacy .vtk, XDMF, Exodus II, LZ4/LZMA .vtu
+#endif
   CLI::App app{"hoct: exact contour trees of piecewise-polynomial fields on triangle meshes"};
   app.require_subcommand(1);
   app.set_version_flag("--version", "hoct 0.1.0");

@@ -48,11 +48,24 @@ int parse_component(const std::string &text) {
 bool is_bookkeeping_array(const std::string &name) {
   if (name.rfind("vtk", 0) == 0) // vtkOriginalPointIds, vtkGhostType, vtkValidPointMask, ...
     return true;
-  static const char *const kNames[] = {
-      "GlobalIds",        "GlobalPointIds", "GlobalCellIds", "GlobalNodeIds",
-      "GlobalElementIds", "PedigreeIds",    "ids",           "Ids",
-      "original_ids",     "mask",           "ghost",         "GhostLevels",
-      "ObjectId",         "BlockId"};
+  static const char *const kNames[] = {"GlobalIds",
+                                       "GlobalPointIds",
+                                       "GlobalCellIds",
+                                       "GlobalNodeIds",
+                                       "GlobalElementIds",
+                                       "PedigreeIds",
+                                       "ids",
+                                       "Ids",
+                                       "original_ids",
+                                       "mask",
+                                       "ghost",
+                                       "GhostLevels",
+                                       "ObjectId",
+                                       "BlockId",
+                                       "GlobalNodeId",
+                                       "PedigreeNodeId",
+                                       "GlobalElementId",
+                                       "PedigreeElementId"};
   return std::find(std::begin(kNames), std::end(kNames), name) != std::end(kNames);
 }
 

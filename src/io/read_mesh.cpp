@@ -1,5 +1,6 @@
 #include "io/read_mesh.hpp"
 
+#include "io/external_reader.hpp"
 #include "io/file_bytes.hpp"
 #include "io/msh_reader.hpp"
 #include "io/pos_reader.hpp"
@@ -30,9 +31,17 @@ MeshInput read_mesh(const std::string &path, const FieldSelection &field, const 
     return read_msh(path, field, limits, contents);
   if (ext == ".pos")
     return read_pos(path, field, limits, contents);
+  const ExternalReader *external = external_reader();
+  if (external && std::find(external->extensions.begin(), external->extensions.end(), ext) !=
+                      external->extensions.end())
+    return external->read(path, field, limits, contents);
   throw InputError(path + ": unknown file type '" + ext +
                    "' (supported: .vtu VTK XML UnstructuredGrid, .pvtu its pieces, .pvd a "
-                   "collection of them, .msh Gmsh 4.1 or 2.2, .pos Gmsh parsed views)");
+                   "collection of them, .msh Gmsh 4.1 or 2.2, .pos Gmsh parsed views" +
+                   (external ? "; through " + external->name + ": " + external->formats
+                             : std::string("; this hoct was built without VTK, whose readers "
+                                           "read legacy .vtk, XDMF and Exodus II")) +
+                   ")");
 }
 
 } // namespace hoct

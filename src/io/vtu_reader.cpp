@@ -1,5 +1,7 @@
 #include "io/vtu_reader.hpp"
 
+#include "io/external_reader.hpp"
+
 #include "io/base64.hpp"
 #include "io/file_bytes.hpp"
 #include "io/pvtu_reader.hpp"
@@ -442,7 +444,9 @@ void VtuFile::load() {
   if (comp == "vtkZLibDataCompressor")
     compressed_ = true;
   else if (!comp.empty())
-    fail("unsupported compressor '" + comp + "' (only vtkZLibDataCompressor is supported)");
+    throw VtuCompressorError(path_ + ": unsupported compressor '" + comp +
+                             "' (hoct's reader reads vtkZLibDataCompressor; this hoct was built "
+                             "without VTK, whose reader reads the others)");
 }
 
 const TypeInfo &VtuFile::type_of(const pugi::xml_node &a) const {
@@ -1110,10 +1114,8 @@ MeshInput VtuFile::read() {
 MeshInput read_vtu(const std::string &path, const FieldSelection &field, const ReadLimits &limits) {
   if (!field.default_step())
     throw InputError(path + ": --step / --time: a .vtu file holds one time step");
-  VtuFile f(path, field, limits);
-  f.read_file();
-  MeshInput m = f.read();
-  const VtuPieceArrays &a = f.arrays();
+  VtuPieceArrays a;
+  MeshInput m = read_vtu_piece(path, field, limits, {}, a);
   if (a.ghost_cells > 0 || a.ghost_points > 0)
     m.warnings.push_back(lone_piece_warning(path, a.ghost_cells, a.ghost_points));
   return m;
@@ -1125,11 +1127,18 @@ MeshInput read_vtu_piece(const std::string &path, const FieldSelection &field,
   FieldSelection one_step = field;
   one_step.step = -1;
   one_step.time.reset();
-  VtuFile f(path, one_step, limits, request);
-  f.read_file();
-  MeshInput m = f.read();
-  arrays = std::move(f.arrays());
-  return m;
+  try {
+    VtuFile f(path, one_step, limits, request);
+    f.read_file();
+    MeshInput m = f.read();
+    arrays = std::move(f.arrays());
+    return m;
+  } catch (const VtuCompressorError &) {
+    const ExternalReader *external = external_reader();
+    if (!external || !external->read_vtu_piece)
+      throw;
+    return external->read_vtu_piece(path, one_step, limits, request, arrays);
+  }
 }
 
 MeshInput read_vtu_buffer(std::string bytes, const std::string &name, const FieldSelection &field,

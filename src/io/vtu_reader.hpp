@@ -4,6 +4,7 @@
 #include "io/field_selection.hpp"
 #include "io/read_limits.hpp"
 #include "mesh/mesh_input.hpp"
+#include "util/error.hpp"
 
 #include <cstdint>
 #include <string>
@@ -27,6 +28,14 @@ MeshInput read_vtu(const std::string &path, const FieldSelection &field = {},
 // The same from the bytes of a file held in memory; `name` stands for the file in messages.
 MeshInput read_vtu_buffer(std::string bytes, const std::string &name,
                           const FieldSelection &field = {}, const ReadLimits &limits = {});
+
+// A .vtu compressed with a compressor hoct's reader lacks (LZ4, LZMA): read_vtu and
+// read_vtu_piece hand such a file to the external reader (io/external_reader.hpp) if one is
+// registered, else throw this.
+class VtuCompressorError : public InputError {
+public:
+  using InputError::InputError;
+};
 
 // vtkGhostType's bit of a point or cell that another piece owns (VTK's DUPLICATEPOINT and
 // DUPLICATECELL).

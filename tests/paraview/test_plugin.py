@@ -254,7 +254,8 @@ def check_default_scalar(path):
     # Nothing to default to, and a named array that is missing: errors that list the arrays.
     check_error("no one-component array",
                 arrays_source(tri, cells, [(vtkDoubleArray, "vec", 3, [0, 1, 2])]),
-                "no one-component point array to default to (point arrays: vec (3 components))")
+                "no scalar (one-component) point array that is not an id, ghost or mask array "
+                "(point arrays: vec (3 components))")
     check_error("missing array", grid_source(tri, cells, [0, 1, 2]),
                 "no point array named 'nope' (point arrays: f)", Scalars=["POINTS", "nope"])
 

@@ -1,7 +1,7 @@
 #include "hoct_vtk_convert.h"
 
-#include "io/vtk_cells.hpp"
 #include "util/error.hpp"
+#include "vtkio/grid_input.hpp"
 
 #include <vtkAbstractArray.h>
 #include <vtkCellArray.h>
@@ -55,25 +55,6 @@ vtkNew<vtkCellArray> make_verts(std::size_t count) {
   return v;
 }
 
-// One of VTK's bookkeeping arrays, never a field: vtkGhostType, vtkOriginalPointIds, ...
-bool bookkeeping(vtkPointData *pd, vtkDataArray *a) {
-  const char *name = a->GetName();
-  return (name && std::string(name).rfind("vtk", 0) == 0) || a == pd->GetGlobalIds() ||
-         a == pd->GetPedigreeIds();
-}
-
-// "a, b (3 components), c" for the messages.
-std::string point_arrays(vtkPointData *pd) {
-  std::string list;
-  for (int i = 0; i < pd->GetNumberOfArrays(); ++i) {
-    vtkAbstractArray *a = pd->GetAbstractArray(i);
-    list += (list.empty() ? "" : ", ") + std::string(a->GetName() ? a->GetName() : "(unnamed)");
-    if (a->GetNumberOfComponents() != 1)
-      list += " (" + std::to_string(a->GetNumberOfComponents()) + " components)";
-  }
-  return list.empty() ? "the grid has no point data" : "point arrays: " + list;
-}
-
 } // namespace
 
 vtkDataArray *point_scalar(vtkUnstructuredGrid *grid, vtkDataArray *selected,
@@ -83,69 +64,24 @@ vtkDataArray *point_scalar(vtkUnstructuredGrid *grid, vtkDataArray *selected,
     return selected;
   vtkPointData *pd = grid->GetPointData();
   if (!requested.empty())
-    fail("no point array named '" + requested + "' (" + point_arrays(pd) + ")");
+    fail("no point array named '" + requested + "' (point arrays: " + vtkio::list_point_arrays(pd) +
+         ")");
   *by_default = true;
-  vtkDataArray *active = pd->GetScalars();
-  if (active && active->GetNumberOfComponents() == 1 && !bookkeeping(pd, active))
-    return active;
-  vtkDataArray *other = nullptr;
-  for (int i = 0; i < pd->GetNumberOfArrays(); ++i) {
-    vtkDataArray *a = pd->GetArray(i); // null for string arrays
-    if (!a || a->GetNumberOfComponents() != 1 || bookkeeping(pd, a))
-      continue;
-    if (a->GetDataType() == VTK_FLOAT || a->GetDataType() == VTK_DOUBLE)
-      return a;
-    if (!other)
-      other = a;
-  }
-  if (!other)
-    fail("no point scalar array selected and no one-component point array to default to (" +
-         point_arrays(pd) + ")");
-  return other;
+  std::string problem;
+  vtkDataArray *a = vtkio::find_point_array(pd, FieldSelection{}, &problem);
+  if (!a)
+    fail("no point scalar array selected and " + problem);
+  return a;
 }
 
 MeshInput mesh_input_from_grid(vtkUnstructuredGrid *grid, vtkDataArray *scalar) {
-  const vtkIdType np = grid->GetNumberOfPoints(), nc = grid->GetNumberOfCells();
   if (!scalar)
     fail("no point scalar array selected");
-  const std::string name = scalar->GetName() ? scalar->GetName() : "(unnamed)";
-  if (scalar->GetNumberOfComponents() != 1)
-    fail("point array '" + name + "' has " + std::to_string(scalar->GetNumberOfComponents()) +
-         " components; a scalar field needs 1");
-  if (scalar->GetNumberOfTuples() != np)
-    fail("array '" + name + "' has " + std::to_string(scalar->GetNumberOfTuples()) +
-         " values for " + std::to_string(np) + " points (select a point array)");
-  MeshInput m;
-  m.source = "the input grid";
-  m.field_name = name;
-  m.points.resize(static_cast<std::size_t>(np));
-  m.values.resize(static_cast<std::size_t>(np));
-  for (vtkIdType i = 0; i < np; ++i) {
-    double p[3];
-    grid->GetPoint(i, p);
-    if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
-      fail("point " + std::to_string(i) + " has a NaN or infinite coordinate");
-    const double v = scalar->GetTuple1(i);
-    if (!std::isfinite(v))
-      fail("point " + std::to_string(i) + " has a non-finite value of '" + name + "'");
-    m.points[static_cast<std::size_t>(i)] = {p[0], p[1], p[2]};
-    m.values[static_cast<std::size_t>(i)] = v;
-  }
-  std::vector<int64_t> ids;
-  std::string problem;
-  for (vtkIdType c = 0; c < nc; ++c) {
-    vtkIdType n = 0;
-    const vtkIdType *pts = nullptr;
-    grid->GetCellPoints(c, n, pts);
-    ids.assign(pts, pts + n);
-    if (add_vtk_cell(m, grid->GetCellType(c), ids.data(), n, np, 0, &problem) ==
-        VtkCellResult::Invalid)
-      fail("cell " + std::to_string(c) + problem);
-  }
-  if (m.num_cells() == 0)
+  MeshPiece piece = vtkio::grid_piece(grid, scalar, FieldSelection::kScalar, "the input grid");
+  if (piece.input.num_cells() == 0)
     fail("no triangle cells (VTK_TRIANGLE 5, VTK_QUADRATIC_TRIANGLE 22 or VTK_LAGRANGE_TRIANGLE "
          "69)");
-  return m;
+  return std::move(piece.input);
 }
 
 int ttk_critical_type(NodeType type) {
