@@ -6,6 +6,7 @@
 #include "util/error.hpp"
 #include "vtkio/grid_input.hpp"
 
+#include <pugixml.hpp>
 #include <vtkAlgorithm.h>
 #include <vtkCommand.h>
 #include <vtkCompositeDataIterator.h>
@@ -16,6 +17,7 @@
 #include <vtkDataSetReader.h>
 #include <vtkExodusIIReader.h>
 #include <vtkInformation.h>
+#include <vtkLogger.h>
 #include <vtkNew.h>
 #include <vtkObjectFactory.h>
 #include <vtkOutputWindow.h>
@@ -118,16 +120,24 @@ vtkStandardNewMacro(MessageCollector);
 // Installs a collector as VTK's output window for its lifetime (one read at a time).
 class CollectMessages {
 public:
-  CollectMessages() : previous_(vtkOutputWindow::GetInstance()) {
+  // VTK's logger prints errors on stderr too (besides the output window): off meanwhile.
+  CollectMessages()
+      : previous_(vtkOutputWindow::GetInstance()),
+        verbosity_(vtkLogger::GetCurrentVerbosityCutoff()) {
     vtkOutputWindow::SetInstance(collector_);
+    vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
   }
-  ~CollectMessages() { vtkOutputWindow::SetInstance(previous_); }
+  ~CollectMessages() {
+    vtkOutputWindow::SetInstance(previous_);
+    vtkLogger::SetStderrVerbosity(verbosity_);
+  }
   CollectMessages(const CollectMessages &) = delete;
   CollectMessages &operator=(const CollectMessages &) = delete;
   MessageCollector &messages() { return *collector_; }
 
 private:
   vtkSmartPointer<vtkOutputWindow> previous_;
+  vtkLogger::Verbosity verbosity_;
   vtkNew<MessageCollector> collector_;
 };
 
@@ -234,6 +244,29 @@ void check_file(const std::string &path, Kind kind) {
   }
 }
 
+// The HDF5 files an XDMF file's heavy data sit in must be there: the HDF5 library prints its own
+// error stack for a missing one, and the Xdmf library then fails on what it did not read.
+void check_xdmf_heavy_data(const std::string &path) {
+  pugi::xml_document doc;
+  const pugi::xml_parse_result parsed = doc.load_file(path.c_str());
+  if (!parsed)
+    throw InputError(path + ": not valid XML: " + parsed.description() + " at byte " +
+                     std::to_string(parsed.offset));
+  const std::filesystem::path dir = std::filesystem::path(path).parent_path();
+  for (const pugi::xpath_node &x : doc.select_nodes("//DataItem[@Format='HDF']")) {
+    std::string text = x.node().text().as_string();
+    text.erase(0, text.find_first_not_of(" \t\r\n"));
+    const std::string file = text.substr(0, text.find(':'));
+    if (file.empty())
+      throw InputError(path + ": a DataItem of Format HDF names no file");
+    const std::filesystem::path full =
+        std::filesystem::path(file).is_absolute() ? std::filesystem::path(file) : dir / file;
+    if (!std::filesystem::is_regular_file(full))
+      throw InputError(path + ": its HDF5 file '" + file + "' is missing (looked for " +
+                       full.string() + ")");
+  }
+}
+
 vtkSmartPointer<vtkAlgorithm> make_reader(const std::string &path, Kind kind) {
   switch (kind) {
   case Kind::Legacy: {
@@ -289,10 +322,16 @@ struct VtkRead {
 VtkRead read_pieces(const std::string &path, Kind kind, const FieldSelection &field,
                     FileContents *contents) {
   check_file(path, kind);
+  if (kind == Kind::Xdmf)
+    check_xdmf_heavy_data(path);
   CollectMessages collect;
   MessageCollector &m = collect.messages();
   vtkSmartPointer<vtkAlgorithm> reader = make_reader(path, kind);
-  reader->UpdateInformation();
+  try {
+    reader->UpdateInformation();
+  } catch (const std::exception &e) { // the Xdmf library throws XdmfError
+    throw InputError(path + ": " + vtk_name() + " could not read it: " + e.what());
+  }
   if (!m.errors.empty())
     fail_with(path, m, "");
   if (auto *exodus = vtkExodusIIReader::SafeDownCast(reader)) {
@@ -307,14 +346,20 @@ VtkRead read_pieces(const std::string &path, Kind kind, const FieldSelection &fi
     times.assign(t, t + n);
   }
   VtkRead r;
-  if (times.size() > 1 || (!field.default_step() && !times.empty())) {
-    const std::size_t step = choose_step(path, times, field);
-    reader->UpdateTimeStep(times[step]);
-    r.detail = step_description(step, times.size(), times[step]);
-  } else if (!field.default_step()) {
-    throw InputError(path + ": --step / --time: the file holds one time step");
-  } else {
-    reader->Update();
+  try {
+    if (times.size() > 1 || (!field.default_step() && !times.empty())) {
+      const std::size_t step = choose_step(path, times, field);
+      reader->UpdateTimeStep(times[step]);
+      r.detail = step_description(step, times.size(), times[step]);
+    } else if (!field.default_step()) {
+      throw InputError(path + ": --step / --time: the file holds one time step");
+    } else {
+      reader->Update();
+    }
+  } catch (const InputError &) {
+    throw;
+  } catch (const std::exception &e) { // the Xdmf library throws XdmfError
+    throw InputError(path + ": " + vtk_name() + " could not read it: " + e.what());
   }
   vtkDataObject *out = reader->GetOutputDataObject(0);
   if (!m.errors.empty() || !out)
