@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cctype>
 #include <charconv>
+#include <cmath>
 
 namespace hoct {
 
@@ -24,6 +25,45 @@ std::string step_description(std::size_t step, std::size_t steps, std::optional<
     s.append(", time ").append(buf, r.ptr);
   }
   return s;
+}
+
+std::string format_time(double t) {
+  char buf[64];
+  const auto r = std::to_chars(buf, buf + sizeof buf, t);
+  return std::string(buf, r.ptr);
+}
+
+std::size_t choose_step(const std::string &where, const std::vector<std::optional<double>> &times,
+                        const FieldSelection &field, const std::string &holder) {
+  const int64_t n = static_cast<int64_t>(times.size());
+  if (field.time) {
+    const double t = *field.time;
+    double scale = std::abs(t);
+    for (const std::optional<double> &s : times)
+      scale = std::max(scale, std::abs(s.value_or(0)));
+    for (std::size_t i = 0; i < times.size(); ++i)
+      if (times[i] && std::abs(*times[i] - t) <= 1e-9 * scale)
+        return i;
+    std::string listed;
+    constexpr std::size_t kShown = 20;
+    auto text = [](const std::optional<double> &s) { return s ? format_time(*s) : "none"; };
+    for (std::size_t i = 0; i < times.size(); ++i) {
+      if (i == kShown && times.size() > kShown + 1) {
+        listed +=
+            ", ... (" + std::to_string(times.size() - kShown - 1) + " more), " + text(times.back());
+        break;
+      }
+      listed += (i ? ", " : "") + text(times[i]);
+    }
+    throw InputError(where + ": --time " + format_time(t) + ": no step at that time (the " +
+                     std::to_string(n) + " steps' times: " + listed + ")");
+  }
+  const int64_t i = field.step < 0 ? n + field.step : field.step;
+  if (i < 0 || i >= n)
+    throw InputError(where + ": --step " + std::to_string(field.step) + ": " + holder + " has " +
+                     std::to_string(n) + " step" + (n == 1 ? "" : "s") + " (0 to " +
+                     std::to_string(n - 1) + ", or -" + std::to_string(n) + " to -1 from the end)");
+  return static_cast<std::size_t>(i);
 }
 
 int parse_component(const std::string &text) {

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace hoct {
 
@@ -38,6 +39,16 @@ struct FieldSelection {
 // "step 2 of 3, time 0.2" (the time only if there is one; the shortest text that reads back as
 // it): which time step a reader read, for MeshInput::field_detail.
 std::string step_description(std::size_t step, std::size_t steps, std::optional<double> time);
+
+// A time as the summaries write it: the shortest text that reads back to it ("0.1").
+std::string format_time(double t);
+
+// The step `field` chooses among steps at `times` (a file's or a collection's, in order): by
+// --time (equal within 1e-9 of the largest time's magnitude; every step must have a time) or by
+// --step (from 0, negative from the end). Throws InputError "<where>: --time T: no step at that
+// time (the N steps' times: ...)" or "<where>: --step S: <holder> has N steps (0 to N-1, ...)".
+std::size_t choose_step(const std::string &where, const std::vector<std::optional<double>> &times,
+                        const FieldSelection &field, const std::string &holder);
 
 // Parses --component: a non-negative integer, x / y / z (0, 1, 2) or "magnitude". Throws
 // hoct::Error for anything else.

@@ -16,9 +16,6 @@ namespace hoct {
 
 namespace {
 
-// Times are equal within this fraction of the largest magnitude among them.
-constexpr double kTimeTolerance = 1e-9;
-
 std::optional<double> parse_time(const std::string &path, const pugi::xml_attribute &a,
                                  std::size_t index) {
   if (!a)
@@ -37,27 +34,7 @@ std::optional<double> parse_time(const std::string &path, const pugi::xml_attrib
   return t;
 }
 
-std::string times_listed(const std::vector<PvdStep> &steps) {
-  std::string s;
-  constexpr std::size_t kShown = 20;
-  for (std::size_t i = 0; i < steps.size(); ++i) {
-    if (i == kShown && steps.size() > kShown + 1) {
-      s += ", ... (" + std::to_string(steps.size() - kShown - 1) + " more), " +
-           format_time(*steps.back().time);
-      break;
-    }
-    s += (i ? ", " : "") + format_time(*steps[i].time);
-  }
-  return s;
-}
-
 } // namespace
-
-std::string format_time(double t) {
-  char buf[64];
-  const auto r = std::to_chars(buf, buf + sizeof buf, t);
-  return std::string(buf, r.ptr);
-}
 
 std::vector<PvdStep> read_pvd_steps(const std::string &path) {
   CollectionXml xml;
@@ -109,27 +86,13 @@ std::vector<PvdStep> read_pvd_steps(const std::string &path) {
 
 std::size_t choose_pvd_step(const std::string &path, const std::vector<PvdStep> &steps,
                             const FieldSelection &field) {
-  const int64_t n = static_cast<int64_t>(steps.size());
-  if (field.time) {
-    const double t = *field.time;
-    if (!steps.front().time)
-      throw InputError(path + ": --time " + format_time(t) +
-                       ": the collection's data sets have no timestep (choose with --step)");
-    double scale = std::abs(t);
-    for (const PvdStep &s : steps)
-      scale = std::max(scale, std::abs(*s.time));
-    for (std::size_t i = 0; i < steps.size(); ++i)
-      if (std::abs(*steps[i].time - t) <= kTimeTolerance * scale)
-        return i;
-    throw InputError(path + ": --time " + format_time(t) + ": no step at that time (the " +
-                     std::to_string(n) + " steps' times: " + times_listed(steps) + ")");
-  }
-  const int64_t i = field.step < 0 ? n + field.step : field.step;
-  if (i < 0 || i >= n)
-    throw InputError(path + ": --step " + std::to_string(field.step) + ": the collection has " +
-                     std::to_string(n) + " step" + (n == 1 ? "" : "s") + " (0 to " +
-                     std::to_string(n - 1) + ", or -" + std::to_string(n) + " to -1 from the end)");
-  return static_cast<std::size_t>(i);
+  if (field.time && !steps.front().time)
+    throw InputError(path + ": --time " + format_time(*field.time) +
+                     ": the collection's data sets have no timestep (choose with --step)");
+  std::vector<std::optional<double>> times;
+  for (const PvdStep &s : steps)
+    times.push_back(s.time);
+  return choose_step(path, times, field, "the collection");
 }
 
 MeshInput read_pvd(const std::string &path, const FieldSelection &field, const ReadLimits &limits) {

@@ -37,7 +37,4 @@ std::size_t choose_pvd_step(const std::string &path, const std::vector<PvdStep> 
 MeshInput read_pvd(const std::string &path, const FieldSelection &field = {},
                    const ReadLimits &limits = {});
 
-// A time as the summaries write it: the shortest text that reads back to it ("0.1").
-std::string format_time(double t);
-
 } // namespace hoct

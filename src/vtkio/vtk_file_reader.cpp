@@ -171,44 +171,6 @@ std::vector<Block> blocks_of(vtkDataObject *out) {
   return blocks;
 }
 
-std::string format_double(double v) {
-  char buf[32];
-  const auto r = std::to_chars(buf, buf + sizeof buf, v);
-  return std::string(buf, r.ptr);
-}
-
-// The time step `field` asks for among `times` (VTK's TIME_STEPS), as the collection readers
-// choose: --time within 1e-9 of the largest time, --step from 0 or from the end.
-std::size_t choose_step(const std::string &path, const std::vector<double> &times,
-                        const FieldSelection &field) {
-  const int64_t n = static_cast<int64_t>(times.size());
-  auto listed = [&] {
-    std::string s;
-    for (std::size_t i = 0; i < times.size() && i < 12; ++i)
-      s += (i ? ", " : "") + format_double(times[i]);
-    if (times.size() > 12)
-      s += ", ..., " + format_double(times.back());
-    return s;
-  };
-  if (field.time) {
-    double scale = std::abs(*field.time);
-    for (double t : times)
-      scale = std::max(scale, std::abs(t));
-    for (std::size_t i = 0; i < times.size(); ++i)
-      if (std::abs(times[i] - *field.time) <= 1e-9 * scale)
-        return i;
-    throw InputError(path + ": --time " + format_double(*field.time) +
-                     ": no step at that time (the " + std::to_string(n) +
-                     " steps' times: " + listed() + ")");
-  }
-  const int64_t i = field.step < 0 ? n + field.step : field.step;
-  if (i < 0 || i >= n)
-    throw InputError(path + ": --step " + std::to_string(field.step) + ": the file has " +
-                     std::to_string(n) + " time step" + (n == 1 ? "" : "s") + " (0 to " +
-                     std::to_string(n - 1) + ", or -" + std::to_string(n) + " to -1 from the end)");
-  return static_cast<std::size_t>(i);
-}
-
 // The first bytes of the file, to refuse what is not the format before VTK's readers, some of
 // which crash on arbitrary bytes or print only.
 void check_file(const std::string &path, Kind kind) {
@@ -348,7 +310,7 @@ VtkRead read_pieces(const std::string &path, Kind kind, const FieldSelection &fi
   VtkRead r;
   try {
     if (times.size() > 1 || (!field.default_step() && !times.empty())) {
-      const std::size_t step = choose_step(path, times, field);
+      const std::size_t step = choose_step(path, {times.begin(), times.end()}, field, "the file");
       reader->UpdateTimeStep(times[step]);
       r.detail = step_description(step, times.size(), times[step]);
     } else if (!field.default_step()) {
@@ -414,69 +376,6 @@ VtkRead read_pieces(const std::string &path, Kind kind, const FieldSelection &fi
   return r;
 }
 
-MeshInput read_file(const std::string &path, const FieldSelection &field, const ReadLimits &limits,
-                    FileContents *contents) {
-  const std::optional<Kind> kind = kind_of(path);
-  if (!kind)
-    throw InputError(path + ": not a format read through VTK");
-  VtkRead r = read_pieces(path, *kind, field, contents);
-  std::size_t cells = 0, points = 0, nodes = 0;
-  for (const MeshPiece &p : r.pieces) {
-    cells += p.input.num_cells();
-    points += p.input.num_points();
-    nodes += p.input.cell_nodes.size();
-  }
-  check_memory(limits, points, cells, nodes, path);
-  if (cells == 0)
-    throw InputError(path +
-                     ": no triangle cells (VTK_TRIANGLE 5, VTK_QUADRATIC_TRIANGLE 22 or "
-                     "VTK_LAGRANGE_TRIANGLE 69) in what " +
-                     vtk_name() + " read");
-  MeshInput m;
-  std::vector<std::string> warnings;
-  int64_t ghost_cells = 0, ghost_points = 0;
-  for (const MeshPiece &p : r.pieces) {
-    ghost_cells += p.arrays.ghost_cells;
-    ghost_points += p.arrays.ghost_points;
-  }
-  std::size_t filled = 0;
-  for (const MeshPiece &p : r.pieces)
-    filled += p.input.num_cells() > 0;
-  if (filled == 1 && r.pieces.size() == 1) {
-    m = std::move(r.pieces.front().input);
-    if (ghost_cells > 0 || ghost_points > 0)
-      warnings.push_back(lone_piece_warning(path, ghost_cells, ghost_points));
-  } else {
-    std::vector<MeshPiece> kept;
-    for (MeshPiece &p : r.pieces)
-      if (p.input.num_cells() > 0)
-        kept.push_back(std::move(p));
-    m = join_pieces(std::move(kept), path, true, limits.threads);
-  }
-  m.source = path;
-  m.field_detail = r.detail.empty() ? std::string() : "(" + r.detail + ")";
-  if (!r.skipped.empty()) {
-    std::string list;
-    for (std::size_t i = 0; i < r.skipped.size() && i < 6; ++i)
-      list += (i ? ", " : "") + r.skipped[i];
-    if (r.skipped.size() > 6)
-      list += " and " + std::to_string(r.skipped.size() - 6) + " more";
-    warnings.push_back(path + ": " + list + " ha" + (r.skipped.size() == 1 ? "s" : "ve") +
-                       " no point array '" + m.field_name + "' and " +
-                       (r.skipped.size() == 1 ? "is" : "are") + " left out");
-  }
-  if (*kind == Kind::Xdmf &&
-      std::all_of(m.cell_degree.begin(), m.cell_degree.end(), [](uint8_t d) { return d == 1; }))
-    warnings.push_back(
-        path + ": XDMF holds values at the mesh's nodes only, and this mesh is linear: the tree is "
-               "that of the piecewise-linear field. A higher-order function written with "
-               "XDMFFile was interpolated to the vertices first; write it with VTXWriter or "
-               "VTKFile (.pvd) to keep its degree.");
-  for (std::string &w : warnings)
-    m.warnings.push_back(std::move(w));
-  return m;
-}
-
 MeshInput read_piece(const std::string &path, const FieldSelection &field, const ReadLimits &limits,
                      const VtuPieceRequest &request, VtuPieceArrays &arrays) {
   VtkRead r = read_pieces(path, Kind::XmlGrid, field, nullptr);
@@ -494,6 +393,59 @@ MeshInput read_piece(const std::string &path, const FieldSelection &field, const
 
 } // namespace
 
+MeshInput read_vtk_file(const std::string &path, const FieldSelection &field,
+                        const ReadLimits &limits, FileContents *contents) {
+  const std::optional<Kind> kind = kind_of(path);
+  if (!kind)
+    throw InputError(path + ": not a format read through VTK");
+  VtkRead r = read_pieces(path, *kind, field, contents);
+  std::size_t cells = 0, points = 0, nodes = 0;
+  for (const MeshPiece &p : r.pieces) {
+    cells += p.input.num_cells();
+    points += p.input.num_points();
+    nodes += p.input.cell_nodes.size();
+  }
+  check_memory(limits, points, cells, nodes, path);
+  if (cells == 0)
+    throw InputError(path +
+                     ": no triangle cells (VTK_TRIANGLE 5, VTK_QUADRATIC_TRIANGLE 22 or "
+                     "VTK_LAGRANGE_TRIANGLE 69) in what " +
+                     vtk_name() + " read");
+  MeshInput m;
+  if (r.pieces.size() == 1) { // one grid: read as it is, ghost cells kept (a piece read alone)
+    const VtuPieceArrays &a = r.pieces.front().arrays;
+    m = std::move(r.pieces.front().input);
+    if (a.ghost_cells > 0 || a.ghost_points > 0)
+      m.warnings.push_back(lone_piece_warning(path, a.ghost_cells, a.ghost_points));
+  } else { // blocks: joined as pieces (ghost copies dropped, shared points merged)
+    std::vector<MeshPiece> kept;
+    for (MeshPiece &p : r.pieces)
+      if (p.input.num_cells() > 0)
+        kept.push_back(std::move(p));
+    m = join_pieces(std::move(kept), path, true, limits.threads);
+  }
+  m.source = path;
+  m.field_detail = r.detail.empty() ? std::string() : "(" + r.detail + ")";
+  if (!r.skipped.empty()) {
+    std::string list;
+    for (std::size_t i = 0; i < r.skipped.size() && i < 6; ++i)
+      list += (i ? ", " : "") + r.skipped[i];
+    if (r.skipped.size() > 6)
+      list += " and " + std::to_string(r.skipped.size() - 6) + " more";
+    m.warnings.push_back(path + ": " + list + " ha" + (r.skipped.size() == 1 ? "s" : "ve") +
+                         " no point array '" + m.field_name + "' and " +
+                         (r.skipped.size() == 1 ? "is" : "are") + " left out");
+  }
+  if (*kind == Kind::Xdmf &&
+      std::all_of(m.cell_degree.begin(), m.cell_degree.end(), [](uint8_t d) { return d == 1; }))
+    m.warnings.push_back(
+        path + ": XDMF holds values at the mesh's nodes only, and this mesh is linear: the tree is "
+               "that of the piecewise-linear field. A higher-order function written with "
+               "XDMFFile was interpolated to the vertices first; write it with VTXWriter or "
+               "VTKFile (.pvd) to keep its degree.");
+  return m;
+}
+
 const std::vector<VtkFormat> &vtk_formats() {
   static const std::vector<VtkFormat> f = [] {
     std::vector<VtkFormat> v;
@@ -502,16 +454,6 @@ const std::vector<VtkFormat> &vtk_formats() {
     return v;
   }();
   return f;
-}
-
-bool read_through_vtk(const std::string &path) {
-  const std::optional<Kind> k = kind_of(path);
-  return k && *k != Kind::XmlGrid;
-}
-
-MeshInput read_vtk_file(const std::string &path, const FieldSelection &field,
-                        const ReadLimits &limits, FileContents *contents) {
-  return read_file(path, field, limits, contents);
 }
 
 void register_vtk_reader() {
@@ -527,7 +469,7 @@ void register_vtk_reader() {
     listed += (listed.empty() ? "" : ", ") + exts + " " + f.description;
   }
   r.formats = listed + ", .vtu with LZ4 or LZMA compression";
-  r.read = read_file;
+  r.read = read_vtk_file;
   r.read_vtu_piece = read_piece;
   set_external_reader(std::move(r));
 }

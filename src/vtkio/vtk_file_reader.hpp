@@ -22,9 +22,6 @@ struct VtkFormat {
 // The formats read through VTK, in the order the help lists them.
 const std::vector<VtkFormat> &vtk_formats();
 
-// True if the file's extension is one of vtk_formats().
-bool read_through_vtk(const std::string &path);
-
 // Reads the file with VTK's reader for its extension (a .vtu through vtkXMLUnstructuredGridReader:
 // the compressors hoct's reader lacks). The field and time step follow `field`
 // (MeshInput::field_detail names the step of a file with several); `contents`, if given, receives

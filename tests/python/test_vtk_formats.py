@@ -164,7 +164,7 @@ with tempdir() as d:
         dst.write(src.read())
     expect_error("XDMF without HDF5", ["tree", p("alone/gauss1.xdmf")], "is missing")
     expect_error("--step on one step", ["tree", p("heater_Binary.vtk"), "--step", "3"],
-                 "--step 3: the file has 1 time step")
+                 "--step 3: the file has 1 step")
     expect_error("missing array", ["tree", p("heater_Binary.vtk"), "--scalar", "nope"],
                  "no numeric point array named 'nope'")
     # Truncations of the ascii legacy file: each read fails cleanly or reads a valid prefix
