@@ -80,6 +80,7 @@ Mesh build_mesh_from_samples(const MeshInput &input, const std::vector<CellSampl
   m.field_name = input.field_name;
   m.field_detail = input.field_detail;
   m.num_points = static_cast<int64_t>(input.points.size());
+  m.fingerprint = mesh_fingerprint(input); // of the file's data, as for every other mesh
   if (samples.size() != input.num_cells())
     m.problems.add(Problem::InconsistentArrays, std::to_string(samples.size()) +
                                                     " sample sets for " +

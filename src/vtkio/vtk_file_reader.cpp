@@ -5,8 +5,8 @@
 #include "io/pvtu_reader.hpp"
 #include "util/error.hpp"
 #include "vtkio/grid_input.hpp"
+#include "vtkio/xdmf_copy.hpp"
 
-#include <pugixml.hpp>
 #include <vtkAlgorithm.h>
 #include <vtkCommand.h>
 #include <vtkCompositeDataIterator.h>
@@ -206,29 +206,6 @@ void check_file(const std::string &path, Kind kind) {
   }
 }
 
-// The HDF5 files an XDMF file's heavy data sit in must be there: the HDF5 library prints its own
-// error stack for a missing one, and the Xdmf library then fails on what it did not read.
-void check_xdmf_heavy_data(const std::string &path) {
-  pugi::xml_document doc;
-  const pugi::xml_parse_result parsed = doc.load_file(path.c_str());
-  if (!parsed)
-    throw InputError(path + ": not valid XML: " + parsed.description() + " at byte " +
-                     std::to_string(parsed.offset));
-  const std::filesystem::path dir = std::filesystem::path(path).parent_path();
-  for (const pugi::xpath_node &x : doc.select_nodes("//DataItem[@Format='HDF']")) {
-    std::string text = x.node().text().as_string();
-    text.erase(0, text.find_first_not_of(" \t\r\n"));
-    const std::string file = text.substr(0, text.find(':'));
-    if (file.empty())
-      throw InputError(path + ": a DataItem of Format HDF names no file");
-    const std::filesystem::path full =
-        std::filesystem::path(file).is_absolute() ? std::filesystem::path(file) : dir / file;
-    if (!std::filesystem::is_regular_file(full))
-      throw InputError(path + ": its HDF5 file '" + file + "' is missing (looked for " +
-                       full.string() + ")");
-  }
-}
-
 vtkSmartPointer<vtkAlgorithm> make_reader(const std::string &path, Kind kind) {
   switch (kind) {
   case Kind::Legacy: {
@@ -251,9 +228,7 @@ vtkSmartPointer<vtkAlgorithm> make_reader(const std::string &path, Kind kind) {
   }
   case Kind::Xdmf: {
     auto r = vtkSmartPointer<vtkXdmf3Reader>::New();
-    // Xdmf resolves the HDF5 file next to the .xdmf wrongly for a name without a directory
-    // ("f.xdmff.h5"): an absolute path.
-    r->SetFileName(std::filesystem::absolute(path).string().c_str());
+    r->SetFileName(path.c_str()); // an XdmfForReading's path
     return r;
   }
   case Kind::Exodus: {
@@ -284,11 +259,12 @@ struct VtkRead {
 VtkRead read_pieces(const std::string &path, Kind kind, const FieldSelection &field,
                     FileContents *contents) {
   check_file(path, kind);
+  std::optional<XdmfForReading> xdmf;
   if (kind == Kind::Xdmf)
-    check_xdmf_heavy_data(path);
+    xdmf.emplace(path);
   CollectMessages collect;
   MessageCollector &m = collect.messages();
-  vtkSmartPointer<vtkAlgorithm> reader = make_reader(path, kind);
+  vtkSmartPointer<vtkAlgorithm> reader = make_reader(xdmf ? xdmf->path() : path, kind);
   try {
     reader->UpdateInformation();
   } catch (const std::exception &e) { // the Xdmf library throws XdmfError
@@ -309,10 +285,14 @@ VtkRead read_pieces(const std::string &path, Kind kind, const FieldSelection &fi
   }
   VtkRead r;
   try {
+    // A time is always requested where there are times: without one, the Xdmf reader gives an
+    // empty grid for a temporal collection of one step.
     if (times.size() > 1 || (!field.default_step() && !times.empty())) {
       const std::size_t step = choose_step(path, {times.begin(), times.end()}, field, "the file");
       reader->UpdateTimeStep(times[step]);
       r.detail = step_description(step, times.size(), times[step]);
+    } else if (!times.empty()) {
+      reader->UpdateTimeStep(times.front());
     } else if (!field.default_step()) {
       throw InputError(path + ": --step / --time: the file holds one time step");
     } else {
