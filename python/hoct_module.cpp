@@ -10,6 +10,9 @@
 #include "mesh/gll_nodes.hpp"
 #include "mesh/mesh.hpp"
 #include "pipeline/compute_tree.hpp"
+#ifdef HOCT_WITH_VTK
+#include "vtkio/vtk_file_reader.hpp"
+#endif
 #include "pipeline/domain_check.hpp"
 #include "poly/lagrange_node_order.hpp"
 #include "tree/merge_tree.hpp"
@@ -159,6 +162,9 @@ py::dict merge_tree_dict(const PyTree &t, bool join) {
 
 PYBIND11_MODULE(_hoct, m) {
   m.doc() = "hoct: exact contour trees of piecewise-polynomial fields (native part)";
+#ifdef HOCT_WITH_VTK
+  hoct::vtkio::register_vtk_reader(); // legacy .vtk, XDMF, Exodus II, LZ4/LZMA .vtu
+#endif
   // Messages quote file names and file contents: made a str with any NUL and invalid UTF-8
   // kept visible (PyErr_SetString would end it at a NUL, or fail on the bytes).
   static py::exception<Error> hoct_error(m, "HoctError", PyExc_ValueError);
@@ -402,12 +408,21 @@ PYBIND11_MODULE(_hoct, m) {
         field.step = step;
         field.time = time;
         MeshInput input = read_mesh(no_nul(path, "read: path"), field, limits);
+        // The reader's warnings and notes, for the package to raise as Python warnings.
+        std::vector<std::string> notes = input.warnings;
         if (merge_tolerance >= 0) // as `hoct tree --merge-duplicates=TOL`
           merge_duplicate_points(input, merge_tolerance, thread_count(threads));
         GllResampling gll = resample_gll_cells(input); // as the command line reads
-        if (gll.cells > 0)
-          return make_mesh_from_samples(std::move(input), gll.samples, threads);
-        return make_mesh(std::move(input), threads);
+        if (gll.cells > 0) {
+          notes.push_back(std::to_string(gll.cells) +
+                          " cell(s) have their nodes at Gauss-Lobatto-Legendre points (as "
+                          "DOLFINx writes degree >= 3), though VTK's Lagrange cells label them "
+                          "as equispaced: their values are read as samples at the nodes' true "
+                          "positions");
+          return std::make_pair(make_mesh_from_samples(std::move(input), gll.samples, threads),
+                                notes);
+        }
+        return std::make_pair(make_mesh(std::move(input), threads), notes);
       },
       py::arg("path"), py::arg("scalar"), py::arg("max_memory"), py::arg("threads"),
       py::arg("merge_tolerance"), py::arg("component") = "", py::arg("step") = -1,

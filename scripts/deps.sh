@@ -5,7 +5,7 @@ HOCT_PACKAGES=(
   build-essential cmake ninja-build
   libeigen3-dev libcli11-dev nlohmann-json3-dev libpugixml-dev zlib1g-dev
   libgtest-dev libgmock-dev libcairo2-dev pkg-config
-  python3 python3-dev python3-numpy python3-paraview python3-meshio python3-gmsh python3-networkx python3-pytest python3-matplotlib pybind11-dev
+  python3 python3-dev python3-numpy python3-paraview python3-meshio python3-netcdf4 python3-gmsh python3-networkx python3-pytest python3-matplotlib pybind11-dev
   python3-pip python3-venv python3-setuptools python3-wheel time
   # ParaView 5.11 for the plugin and its headless test (python3-paraview replaces python3-vtk9:
   # its vtkmodules serve as the independent VTK reader in the tests).

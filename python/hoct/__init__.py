@@ -12,12 +12,20 @@ The same library computes what the `hoct` command line prints: the results are i
 import math
 import numbers
 
+import os
+import warnings
+
 from . import _arguments as _args
 from . import _hoct
 from ._hoct import HoctError, Mesh, Tree
 
 __all__ = ["read", "from_arrays", "from_meshio", "generate", "contour_tree", "Mesh", "Tree",
-           "HoctError"]
+           "HoctError", "HoctWarning"]
+
+
+class HoctWarning(UserWarning):
+    """What a reader says about a file it read (a piece of a partitioned file read alone,
+    XDMF holding vertex values only, nodes at Gauss-Lobatto-Legendre points, ...)."""
 
 
 def read(path, scalar=None, max_memory=None, threads=None, merge_duplicates=None,
@@ -60,9 +68,14 @@ def read(path, scalar=None, max_memory=None, threads=None, merge_duplicates=None
         budget = _args.text(max_memory, "read: max_memory")
     nthreads = _args.threads(threads, "read")
     tolerance = _args.merge_tolerance(merge_duplicates, "read")
-    return _hoct.read(path, scalar, budget, nthreads, tolerance,
-                      _args.component(component, "read"), _args.step(step, "read"),
-                      _args.time(time, "read"))
+    mesh, notes = _hoct.read(path, scalar, budget, nthreads, tolerance,
+                             _args.component(component, "read"), _args.step(step, "read"),
+                             _args.time(time, "read"))
+    name = os.fsdecode(path)
+    for note in notes:  # what `hoct tree` prints as "hoct: warning:" / "hoct: note:"
+        warnings.warn(note if note.startswith(name) else f"{name}: {note}", HoctWarning,
+                      stacklevel=2)
+    return mesh
 
 
 _TRIANGLE_TYPES = {5: 1, 22: 2}  # VTK_TRIANGLE, VTK_QUADRATIC_TRIANGLE; 69 = any degree

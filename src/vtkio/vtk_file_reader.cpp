@@ -4,6 +4,7 @@
 #include "io/piece_join.hpp"
 #include "io/pvtu_reader.hpp"
 #include "util/error.hpp"
+#include "vtkio/exodus_blocks.hpp"
 #include "vtkio/grid_input.hpp"
 #include "vtkio/xdmf_copy.hpp"
 
@@ -262,6 +263,8 @@ VtkRead read_pieces(const std::string &path, Kind kind, const FieldSelection &fi
   std::optional<XdmfForReading> xdmf;
   if (kind == Kind::Xdmf)
     xdmf.emplace(path);
+  if (kind == Kind::Exodus) // before VTK reads it: what VTK would misread or read as zeros
+    check_exodus_blocks(path, exodus_element_blocks(path));
   CollectMessages collect;
   MessageCollector &m = collect.messages();
   vtkSmartPointer<vtkAlgorithm> reader = make_reader(xdmf ? xdmf->path() : path, kind);

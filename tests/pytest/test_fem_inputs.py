@@ -115,3 +115,40 @@ def test_read_takes_the_field_options(cubic):
         hoct.read(path, component="w")
     with pytest.raises(hoct.HoctError, match="time must be a finite number"):
         hoct.read(path, time=float("nan"))
+
+
+def test_read_through_vtk_and_its_warnings(tmp_path):
+    """hoct.read reads what `hoct tree` reads through VTK (here a legacy .vtk written by VTK),
+    to the same tree as the .vtu, and raises the reader's warnings as HoctWarning (a piece of a
+    partitioned file read alone)."""
+    from vtkmodules.util.numpy_support import numpy_to_vtk
+    from vtkmodules.vtkIOLegacy import vtkUnstructuredGridWriter
+    from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader, vtkXMLUnstructuredGridWriter
+
+    vtu = str(tmp_path / "heater.vtu")
+    subprocess.run([HOCT, "generate", "heater", "--cells", "600", "-o", vtu], check=True,
+                   capture_output=True)
+    reader = vtkXMLUnstructuredGridReader()
+    reader.SetFileName(vtu)
+    reader.Update()
+    grid = reader.GetOutput()
+    legacy = vtkUnstructuredGridWriter()
+    legacy.SetFileName(str(tmp_path / "heater.vtk"))
+    legacy.SetInputData(grid)
+    legacy.SetFileTypeToBinary()
+    assert legacy.Write() == 1
+    a = hoct.contour_tree(hoct.read(vtu))
+    b = hoct.contour_tree(hoct.read(tmp_path / "heater.vtk"))
+    assert sorted(a.values.tolist()) == sorted(b.values.tolist()) and len(a.values) > 2
+
+    ghosts = np.zeros(grid.GetNumberOfCells(), dtype=np.uint8)
+    ghosts[:5] = 1  # DUPLICATECELL
+    g = numpy_to_vtk(ghosts, deep=True)
+    g.SetName("vtkGhostType")
+    grid.GetCellData().AddArray(g)
+    piece = vtkXMLUnstructuredGridWriter()
+    piece.SetFileName(str(tmp_path / "piece.vtu"))
+    piece.SetInputData(grid)
+    assert piece.Write() == 1
+    with pytest.warns(hoct.HoctWarning, match="one piece of a partitioned output"):
+        hoct.read(tmp_path / "piece.vtu")

@@ -1,0 +1,136 @@
+"""Exodus II files (MOOSE's format), written by VTK's own vtkExodusIIWriter and by a netCDF
+writer laid out as the SEACAS library writes (exodus_writer.py: several time steps, double
+coordinates, TRI7), read by hoct through VTK's Exodus reader.
+
+`hoct generate gauss --degree 2` (quadratic triangles) is the reference, read from its .vtu:
+- written by vtkExodusIIWriter (TRI6 elements): the same tree (types, values; positions within
+  the float precision VTK's Exodus reader gives the coordinates);
+- written at two times (f, then 2 f): `hoct info` lists the steps, the default is the last (the
+  values doubled), --step 0 and --time give the reference tree exactly;
+- written as TRI7 (a bubble node per cell): refused with the reason (VTK reads such blocks as
+  3-node triangles and scrambles them), not a wrong tree;
+- truncated anywhere: exit status 1 and a message naming the file, never a crash.
+
+Run by ctest with /usr/bin/python3 and HOCT_BIN set to the hoct executable."""
+import json
+import os
+import subprocess
+import sys
+
+import numpy as np
+from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
+from vtkmodules.vtkCommonCore import vtkPoints
+from vtkmodules.vtkCommonDataModel import VTK_QUADRATIC_TRIANGLE, vtkUnstructuredGrid
+from vtkmodules.vtkIOExodus import vtkExodusIIWriter
+from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from hoct_testing import Results, run, tempdir  # noqa: E402
+
+r = Results()
+WRITER = os.path.join(os.path.dirname(os.path.abspath(__file__)), "exodus_writer.py")
+
+
+def write_exodus(path, points, cells, kind, fields, times=(0.0,)):
+    """exodus_writer.py in its own process (netCDF4's HDF5 and VTK's do not mix in one)."""
+    (name, values), = fields.items()
+    np.savez(path + ".npz", points=points, cells=cells, times=np.asarray(times, dtype=float),
+             name=name, values=np.asarray(values))
+    w = subprocess.run([sys.executable, WRITER, path + ".npz", path, kind], capture_output=True,
+                       text=True)
+    if w.returncode != 0:
+        raise RuntimeError(f"exodus_writer.py failed:\n{w.stderr[-2000:]}")
+
+
+def tree(path, *extra):
+    out = path + f".{len(extra)}.json"
+    res = run("tree", path, "--json", out, "--no-timings", *extra)
+    with open(out) as fh:
+        return json.load(fh), res
+
+
+def close(a, b, tol):
+    return abs(a - b) <= tol * max(1.0, abs(a), abs(b))
+
+
+def same_tree(name, j, k, value_tol, position_tol, scale=1.0):
+    key = lambda n: (n["type"], n["value"])  # noqa: E731
+    a, b = sorted(j["nodes"], key=key), sorted(k["nodes"], key=key)
+    ok = len(a) == len(b) and all(
+        x["type"] == y["type"] and close(x["value"], scale * y["value"], value_tol) and
+        all(abs(u - v) <= position_tol for u, v in zip(x["position"], y["position"]))
+        for x, y in zip(a, b))
+    r.check(ok, f"{name}: nodes differ ({len(a)} vs {len(b)} nodes)")
+    pa = sorted(p["persistence"] for p in j["pairs"])
+    pb = sorted(scale * p["persistence"] for p in k["pairs"])
+    r.check(len(pa) == len(pb) and all(close(x, y, value_tol) for x, y in zip(pa, pb)),
+            f"{name}: persistence pairs differ")
+
+
+with tempdir() as d:
+    p = lambda name: os.path.join(d, name)  # noqa: E731
+    run("generate", "gauss", "--degree", "2", "-o", p("g2.vtu"))
+    ref, _ = tree(p("g2.vtu"))
+    field = ref["input"]["field"]
+    reader = vtkXMLUnstructuredGridReader()
+    reader.SetFileName(p("g2.vtu"))
+    reader.Update()
+    grid = reader.GetOutput()
+    points = vtk_to_numpy(grid.GetPoints().GetData()).astype(np.float64)
+    cells = vtk_to_numpy(grid.GetCells().GetConnectivityArray()).reshape(-1, 6)
+    values = vtk_to_numpy(grid.GetPointData().GetArray(field)).astype(np.float64)
+    r.check(len(ref["nodes"]) > 5, f"reference tree too small: {len(ref['nodes'])} nodes")
+
+    # VTK's own writer, TRI6.
+    tri6 = vtkUnstructuredGrid()
+    pts = vtkPoints()
+    pts.SetData(numpy_to_vtk(points, deep=True))
+    tri6.SetPoints(pts)
+    for c in cells:
+        tri6.InsertNextCell(VTK_QUADRATIC_TRIANGLE, 6, [int(i) for i in c])
+    arr = numpy_to_vtk(values, deep=True)
+    arr.SetName(field)
+    tri6.GetPointData().AddArray(arr)
+    writer = vtkExodusIIWriter()
+    writer.SetFileName(p("vtk.e"))
+    writer.SetInputData(tri6)
+    r.check(writer.Write() == 1, "vtkExodusIIWriter failed")
+    j, res = tree(p("vtk.e"))
+    r.check(f"field '{field}'" in res.stdout, f"vtk.e: summary: {res.stdout[:300]}")
+    same_tree("vtkExodusIIWriter TRI6 vs .vtu", j, ref, 1e-12, 1e-6)
+
+    # Two time steps, double coordinates.
+    write_exodus(p("steps.exo"), points[:, :2], cells, "TRI6", {field: [values, 2 * values]},
+                 times=[0.5, 1.5])
+    info = run("info", p("steps.exo")).stdout
+    r.check("2 time steps (times 0.5, 1.5)" in info, f"steps.exo: info:\n{info[:600]}")
+    last, res = tree(p("steps.exo"))
+    r.check("step 1 of 2" in res.stdout, f"steps.exo: default step: {res.stdout[:300]}")
+    same_tree("Exodus last step vs 2 x .vtu", last, ref, 1e-12, 1e-6, scale=2.0)
+    for args in (["--step", "0"], ["--time", "0.5"], ["--step", "-2"]):
+        j, _ = tree(p("steps.exo"), *args)
+        same_tree(f"Exodus {' '.join(args)} vs .vtu", j, ref, 1e-12, 1e-6)
+    res = run("tree", p("steps.exo"), "--step", "2", check=False)
+    r.check(res.returncode == 1 and "the file has 2 steps" in res.stderr,
+            f"--step 2: {res.returncode} {res.stderr.strip()[:300]}")
+
+    # TRI7: refused with the reason.
+    centroids = points[cells[:, :3]].mean(axis=1)
+    tri7 = np.hstack([cells, np.arange(len(points), len(points) + len(cells))[:, None]])
+    vals7 = np.concatenate([values, values[cells[:, :3]].mean(axis=1)])
+    write_exodus(p("tri7.e"), np.vstack([points, centroids])[:, :2], tri7, "TRI7", {field: [vals7]})
+    res = run("tree", p("tri7.e"), check=False)
+    r.check(res.returncode == 1 and "7-node triangles" in res.stderr and "tri7.e" in res.stderr,
+            f"TRI7: {res.returncode} {res.stderr.strip()[:300]}")
+
+    # Truncated files: a clear error, never a crash.
+    data = open(p("steps.exo"), "rb").read()
+    for frac in (0.0, 0.001, 0.01, 0.05, 0.2, 0.4, 0.6, 0.8, 0.9, 0.95, 0.99, 0.999):
+        cut = p("cut.exo")
+        with open(cut, "wb") as fh:
+            fh.write(data[:int(len(data) * frac)])
+        res = run("tree", cut, check=False)
+        r.check(res.returncode == 1 and "cut.exo" in res.stderr,
+                f"truncated at {frac}: exit {res.returncode}: {res.stderr.strip()[-300:]}")
+
+r.finish()
