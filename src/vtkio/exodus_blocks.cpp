@@ -125,18 +125,4 @@ std::vector<ExodusBlock> exodus_element_blocks(const std::string &path) {
   return blocks;
 }
 
-void check_exodus_blocks(const std::string &path, const std::vector<ExodusBlock> &blocks) {
-  for (const ExodusBlock &b : blocks) {
-    std::string type = b.elem_type;
-    std::transform(type.begin(), type.end(), type.begin(),
-                   [](unsigned char c) { return std::toupper(c); });
-    if (type.rfind("TRI", 0) == 0 && b.nodes_per_element == 7 && b.elements > 0)
-      throw InputError(path + ": element block " + std::to_string(b.index) + " ('" + b.elem_type +
-                       "', " + std::to_string(b.elements) +
-                       " elements) has 7-node triangles (TRI7: quadratic with a bubble node); "
-                       "VTK's Exodus reader reads them as 3-node triangles and scrambles the "
-                       "mesh, so hoct does not read them: write TRI6 elements, or a .vtu");
-  }
-}
-
 } // namespace hoct

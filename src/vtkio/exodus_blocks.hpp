@@ -1,6 +1,8 @@
 // The element blocks of an Exodus II file as the file declares them (its netCDF header: each
-// connectivity variable's elem_type and nodes per element), read with the netCDF library VTK's
-// Exodus reader uses: to refuse the blocks that reader misreads without a word.
+// connectivity variable's elem_type and nodes per element), read with netCDF over a read-only
+// mapping of the file, which also checks that every variable ends inside the file: netCDF
+// reading a truncated classic file itself (as the Exodus library does) fills what is missing
+// with zeros.
 #pragma once
 
 #include <cstdint>
@@ -18,10 +20,5 @@ struct ExodusBlock {
 
 // Throws InputError for a file netCDF cannot open or that ends before its last variable does.
 std::vector<ExodusBlock> exodus_element_blocks(const std::string &path);
-
-// InputError if a block cannot be read right: VTK 9's Exodus reader takes a 7-node triangle
-// (TRI7: P2 and a cubic bubble, as MOOSE writes) for a 3-node one and walks its connectivity
-// three nodes at a time, which scrambles the mesh.
-void check_exodus_blocks(const std::string &path, const std::vector<ExodusBlock> &blocks);
 
 } // namespace hoct

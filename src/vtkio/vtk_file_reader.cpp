@@ -4,7 +4,7 @@
 #include "io/piece_join.hpp"
 #include "io/pvtu_reader.hpp"
 #include "util/error.hpp"
-#include "vtkio/exodus_blocks.hpp"
+#include "vtkio/exodus_reader.hpp"
 #include "vtkio/grid_input.hpp"
 #include "vtkio/xdmf_copy.hpp"
 
@@ -16,7 +16,6 @@
 #include <vtkDataObject.h>
 #include <vtkDataSet.h>
 #include <vtkDataSetReader.h>
-#include <vtkExodusIIReader.h>
 #include <vtkInformation.h>
 #include <vtkLogger.h>
 #include <vtkNew.h>
@@ -232,11 +231,8 @@ vtkSmartPointer<vtkAlgorithm> make_reader(const std::string &path, Kind kind) {
     r->SetFileName(path.c_str()); // an XdmfForReading's path
     return r;
   }
-  case Kind::Exodus: {
-    auto r = vtkSmartPointer<vtkExodusIIReader>::New();
-    r->SetFileName(path.c_str());
-    return r;
-  }
+  case Kind::Exodus: // read by exodus_reader
+    break;
   }
   return nullptr;
 }
@@ -263,8 +259,6 @@ VtkRead read_pieces(const std::string &path, Kind kind, const FieldSelection &fi
   std::optional<XdmfForReading> xdmf;
   if (kind == Kind::Xdmf)
     xdmf.emplace(path);
-  if (kind == Kind::Exodus) // before VTK reads it: what VTK would misread or read as zeros
-    check_exodus_blocks(path, exodus_element_blocks(path));
   CollectMessages collect;
   MessageCollector &m = collect.messages();
   vtkSmartPointer<vtkAlgorithm> reader = make_reader(xdmf ? xdmf->path() : path, kind);
@@ -275,10 +269,6 @@ VtkRead read_pieces(const std::string &path, Kind kind, const FieldSelection &fi
   }
   if (!m.errors.empty())
     fail_with(path, m, "");
-  if (auto *exodus = vtkExodusIIReader::SafeDownCast(reader)) {
-    exodus->SetAllArrayStatus(vtkExodusIIReader::NODAL, 1);
-    exodus->GenerateGlobalNodeIdArrayOn();
-  }
   std::vector<double> times;
   vtkInformation *info = reader->GetOutputInformation(0);
   if (info && info->Has(vtkStreamingDemandDrivenPipeline::TIME_STEPS())) {
@@ -381,6 +371,10 @@ MeshInput read_vtk_file(const std::string &path, const FieldSelection &field,
   const std::optional<Kind> kind = kind_of(path);
   if (!kind)
     throw InputError(path + ": not a format read through VTK");
+  if (*kind == Kind::Exodus) { // the Exodus library itself: doubles, TRI7
+    check_file(path, *kind);
+    return read_exodus(path, field, limits, contents);
+  }
   VtkRead r = read_pieces(path, *kind, field, contents);
   std::size_t cells = 0, points = 0, nodes = 0;
   for (const MeshPiece &p : r.pieces) {

@@ -1,14 +1,15 @@
 """Exodus II files (MOOSE's format), written by VTK's own vtkExodusIIWriter and by a netCDF
-writer laid out as the SEACAS library writes (exodus_writer.py: several time steps, double
-coordinates, TRI7), read by hoct through VTK's Exodus reader.
+writer laid out as the SEACAS library writes (exodus_writer.py: several time steps, TRI7), read
+by hoct with the Exodus library (coordinates and values as doubles).
 
 `hoct generate gauss --degree 2` (quadratic triangles) is the reference, read from its .vtu:
-- written by vtkExodusIIWriter (TRI6 elements): the same tree (types, values; positions within
-  the float precision VTK's Exodus reader gives the coordinates);
+- written by vtkExodusIIWriter (TRI6 elements): the same tree (types, values, positions);
 - written at two times (f, then 2 f): `hoct info` lists the steps, the default is the last (the
-  values doubled), --step 0 and --time give the reference tree exactly;
-- written as TRI7 (a bubble node per cell): refused with the reason (VTK reads such blocks as
-  3-node triangles and scrambles them), not a wrong tree;
+  values doubled), --step 0 and --time give the reference tree, a step that is not there is an
+  error;
+- written as TRI7 (P2 plus a cubic bubble per cell, read as cubic cells): with the quadratic
+  field's own centroid values, the reference tree; with bubbles added, `hoct eval` equals the
+  TRI7 interpolant computed here at 200 random points, and `hoct check` accepts the tree;
 - truncated anywhere: exit status 1 and a message naming the file, never a crash.
 
 Run by ctest with /usr/bin/python3 and HOCT_BIN set to the hoct executable."""
@@ -25,7 +26,7 @@ from vtkmodules.vtkIOExodus import vtkExodusIIWriter
 from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from hoct_testing import Results, run, tempdir  # noqa: E402
+from hoct_testing import Results, evaluate, run, tempdir  # noqa: E402
 
 r = Results()
 WRITER = os.path.join(os.path.dirname(os.path.abspath(__file__)), "exodus_writer.py")
@@ -97,7 +98,7 @@ with tempdir() as d:
     r.check(writer.Write() == 1, "vtkExodusIIWriter failed")
     j, res = tree(p("vtk.e"))
     r.check(f"field '{field}'" in res.stdout, f"vtk.e: summary: {res.stdout[:300]}")
-    same_tree("vtkExodusIIWriter TRI6 vs .vtu", j, ref, 1e-12, 1e-6)
+    same_tree("vtkExodusIIWriter TRI6 vs .vtu", j, ref, 1e-12, 1e-12)
 
     # Two time steps, double coordinates.
     write_exodus(p("steps.exo"), points[:, :2], cells, "TRI6", {field: [values, 2 * values]},
@@ -106,22 +107,52 @@ with tempdir() as d:
     r.check("2 time steps (times 0.5, 1.5)" in info, f"steps.exo: info:\n{info[:600]}")
     last, res = tree(p("steps.exo"))
     r.check("step 1 of 2" in res.stdout, f"steps.exo: default step: {res.stdout[:300]}")
-    same_tree("Exodus last step vs 2 x .vtu", last, ref, 1e-12, 1e-6, scale=2.0)
+    same_tree("Exodus last step vs 2 x .vtu", last, ref, 1e-12, 1e-12, scale=2.0)
     for args in (["--step", "0"], ["--time", "0.5"], ["--step", "-2"]):
         j, _ = tree(p("steps.exo"), *args)
-        same_tree(f"Exodus {' '.join(args)} vs .vtu", j, ref, 1e-12, 1e-6)
+        same_tree(f"Exodus {' '.join(args)} vs .vtu", j, ref, 1e-12, 1e-12)
     res = run("tree", p("steps.exo"), "--step", "2", check=False)
     r.check(res.returncode == 1 and "the file has 2 steps" in res.stderr,
             f"--step 2: {res.returncode} {res.stderr.strip()[:300]}")
 
-    # TRI7: refused with the reason.
-    centroids = points[cells[:, :3]].mean(axis=1)
+    # TRI7 (a bubble node per cell), read as cubic cells. With the centroid values of the
+    # quadratic field, the .vtu tree; with a bubble added per cell, the TRI7 interpolant
+    # (evaluated here independently) at random points, and a valid tree (`hoct check`).
+    tri = points[cells[:, :3]]
+    centroids = tri.mean(axis=1)
+    corner, mid = values[cells[:, :3]], values[cells[:, 3:]]
+    p2_centre = -corner.sum(axis=1) / 9 + 4 * mid.sum(axis=1) / 9
     tri7 = np.hstack([cells, np.arange(len(points), len(points) + len(cells))[:, None]])
-    vals7 = np.concatenate([values, values[cells[:, :3]].mean(axis=1)])
-    write_exodus(p("tri7.e"), np.vstack([points, centroids])[:, :2], tri7, "TRI7", {field: [vals7]})
-    res = run("tree", p("tri7.e"), check=False)
-    r.check(res.returncode == 1 and "7-node triangles" in res.stderr and "tri7.e" in res.stderr,
-            f"TRI7: {res.returncode} {res.stderr.strip()[:300]}")
+    xy7 = np.vstack([points, centroids])[:, :2]
+    write_exodus(p("tri7.e"), xy7, tri7, "TRI7", {field: [np.concatenate([values, p2_centre])]})
+    j, res = tree(p("tri7.e"))
+    same_tree("TRI7 without bubble vs .vtu", j, ref, 1e-12, 1e-9)
+    r.check("max degree 3" in res.stdout, f"TRI7: not read as cubic: {res.stdout[:200]}")
+    rng = np.random.default_rng(7)
+    span = values.max() - values.min()
+    bubble = rng.uniform(-0.05, 0.05, len(cells)) * span
+    write_exodus(p("bubble.e"), xy7, tri7, "TRI7",
+                 {field: [np.concatenate([values, p2_centre + bubble])]})
+    queries = [(int(c), float(u), float(v)) for c, u, v in zip(
+        rng.integers(0, len(cells), 200), rng.uniform(0, 0.5, 200), rng.uniform(0, 0.5, 200))]
+    got = evaluate(p("bubble.e"), queries)
+    worst = 0.0
+    for (c, u, v), row in zip(queries, got):
+        l0, l1, l2 = 1 - u - v, u, v
+        ui, uij = corner[c], mid[c]  # midpoints of edges 01, 12, 20
+        q = (sum(l * (2 * l - 1) * w for l, w in zip((l0, l1, l2), ui)) +
+             4 * (l0 * l1 * uij[0] + l1 * l2 * uij[1] + l2 * l0 * uij[2]))
+        expected = q + bubble[c] * 27 * l0 * l1 * l2
+        x = tri[c][0] * l0 + tri[c][1] * l1 + tri[c][2] * l2  # straight cells
+        worst = max(worst, abs(row[3] - expected) / span,
+                    np.abs(np.array(row[:2]) - x[:2]).max())
+    r.check(len(got) == len(queries) and worst < 1e-12,
+            f"TRI7 with bubbles: eval differs from the interpolant by {worst:.3g}")
+    res = run("tree", p("bubble.e"), "--json", p("bubble.json"), check=False)
+    chk = run("check", p("bubble.json"), p("bubble.e"), check=False)
+    r.check(res.returncode == 0 and chk.returncode == 0,
+            f"TRI7 with bubbles: tree {res.returncode}, check {chk.returncode}: "
+            f"{(res.stderr + chk.stdout + chk.stderr).strip()[-400:]}")
 
     # Truncated files: a clear error, never a crash.
     data = open(p("steps.exo"), "rb").read()
