@@ -1,4 +1,5 @@
 """Shared helpers for the Python tests that check hoct against independent tools."""
+import json
 import os
 import subprocess
 import sys
@@ -44,3 +45,37 @@ def evaluate(path, points, scalar=None):
 
 def tempdir():
     return tempfile.TemporaryDirectory(prefix="hoct-test-")
+
+
+def tree_json(path, *extra):
+    """`hoct tree PATH --json ... --no-timings EXTRA...`: (the JSON, the completed process)."""
+    out = f"{path}.{abs(hash(extra))}.json"
+    res = run("tree", path, "--json", out, "--no-timings", *extra)
+    with open(out) as f:
+        return json.load(f), res
+
+
+def close(a, b, tol):
+    return abs(a - b) <= tol * max(1.0, abs(a), abs(b))
+
+
+def compare_trees(results, name, j, k, tol=1e-12, position_tol=None, scale=1.0):
+    """Checks that trees j and k (JSON) have the same nodes (type, value, position) and pair
+    persistences: values within tol (relative), positions within position_tol (absolute; default
+    tol, relative), k's values multiplied by scale."""
+    key = lambda n: (n["type"], n["value"], n["position"])  # noqa: E731
+    a, b = sorted(j["nodes"], key=key), sorted(k["nodes"], key=key)
+
+    def same_position(x, y):
+        if position_tol is None:
+            return all(close(u, v, tol) for u, v in zip(x, y))
+        return all(abs(u - v) <= position_tol for u, v in zip(x, y))
+
+    ok = len(a) == len(b) and all(
+        x["type"] == y["type"] and close(x["value"], scale * y["value"], tol) and
+        same_position(x["position"], y["position"]) for x, y in zip(a, b))
+    results.check(ok, f"{name}: nodes differ ({len(a)} vs {len(b)} nodes)")
+    pa = sorted(p["persistence"] for p in j["pairs"])
+    pb = sorted(scale * p["persistence"] for p in k["pairs"])
+    results.check(len(pa) == len(pb) and all(close(x, y, tol) for x, y in zip(pa, pb)),
+                  f"{name}: persistence pairs differ")

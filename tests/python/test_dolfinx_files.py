@@ -30,7 +30,7 @@ import subprocess
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from hoct_testing import Results, run, tempdir  # noqa: E402
+from hoct_testing import Results, close, compare_trees, run, tempdir, tree_json  # noqa: E402
 
 try:
     import dolfinx  # noqa: F401
@@ -65,28 +65,8 @@ def write_files(d):
     return ranks
 
 
-def tree(path, *extra):
-    out = path + f".{len(extra)}.json"
-    res = run("tree", path, "--json", out, "--no-timings", *extra)
-    with open(out) as fh:
-        return json.load(fh), res
-
-
-def close(a, b, tol):
-    return abs(a - b) <= tol * max(1.0, abs(a), abs(b))
-
-
 def same_tree(name, j, k, tol=1e-12):
-    key = lambda n: (n["type"], n["value"], n["position"])  # noqa: E731
-    a, b = sorted(j["nodes"], key=key), sorted(k["nodes"], key=key)
-    ok = len(a) == len(b) and all(
-        x["type"] == y["type"] and close(x["value"], y["value"], tol) and
-        all(close(u, v, tol) for u, v in zip(x["position"], y["position"])) for x, y in zip(a, b))
-    r.check(ok, f"{name}: nodes differ ({len(a)} vs {len(b)} nodes)")
-    pa = sorted(p["persistence"] for p in j["pairs"])
-    pb = sorted(p["persistence"] for p in k["pairs"])
-    r.check(len(pa) == len(pb) and all(close(x, y, tol) for x, y in zip(pa, pb)),
-            f"{name}: persistence pairs differ")
+    compare_trees(r, name, j, k, tol)
 
 
 def analytic_tree(name, j, tol, scale=1.0):
@@ -128,7 +108,7 @@ with tempdir() as d:
         r.check(info.get("field") == "temperature", f"p{deg}.pvd: info's field {info.get('field')}")
     trees = {}
     for deg in (1, 2, 3):
-        j, res = tree(p(f"p{deg}.pvd"))
+        j, res = tree_json(p(f"p{deg}.pvd"))
         trees[deg] = j
         r.check(j["input"]["field"] == "temperature", f"P{deg}: JSON field {j['input']['field']}")
         r.check("field 'temperature'" in res.stdout, f"P{deg}: summary: {res.stdout[:300]}")
@@ -154,10 +134,10 @@ with tempdir() as d:
     info = run("info", p("p1.xdmf")).stdout
     r.check("2 time steps (times 0, 1)" in info, f"p1.xdmf: info does not list 2 steps:\n"
             f"{info[:600]}")
-    last, res = tree(p("p1.xdmf"))
+    last, res = tree_json(p("p1.xdmf"))
     r.check("step 1 of 2" in res.stdout, f"p1.xdmf: default step not stated: {res.stdout[:300]}")
-    first, _ = tree(p("p1.xdmf"), "--step", "0")
-    by_time, _ = tree(p("p1.xdmf"), "--time", "1")
+    first, _ = tree_json(p("p1.xdmf"), "--step", "0")
+    by_time, _ = tree_json(p("p1.xdmf"), "--time", "1")
     same_tree("XDMF P1 step 0 vs VTKFile P1", first, trees[1])
     same_tree("XDMF --time 1 vs default (last) step", by_time, last)
     r.check(len(last["nodes"]) == len(first["nodes"]) and all(
@@ -170,8 +150,8 @@ with tempdir() as d:
             "0, 1" in res.stderr, f"XDMF --time 0.5: {res.returncode} {res.stderr.strip()[:300]}")
 
     # P2 on a curved mesh: XDMF (Triangle_6) and VTKFile agree; the saddle is the analytic one.
-    curved_x, _ = tree(p("p2curved.xdmf"))
-    curved_v, _ = tree(p("p2curved.pvd"))
+    curved_x, _ = tree_json(p("p2curved.xdmf"))
+    curved_v, _ = tree_json(p("p2curved.pvd"))
     same_tree("curved P2: XDMF vs VTKFile", curved_x, curved_v, tol=1e-9)
     saddles = [n for n in curved_v["nodes"] if n["type"] == "saddle"]
     r.check(len(saddles) == 1 and abs(saddles[0]["value"]) < 1e-9 and
@@ -181,7 +161,7 @@ with tempdir() as d:
 
     # Partitioned over MPI ranks: the serial tree; one piece alone: a warning.
     for n in ranks:
-        j, res = tree(p(f"part{n}.pvd"))
+        j, res = tree_json(p(f"part{n}.pvd"))
         same_tree(f"P2 written on {n} ranks vs serial", j, trees[2], tol=1e-12)
         res = run("tree", p(f"part{n}_p0_000000.vtu"), check=False)
         r.check(res.returncode == 0 and f"part{n}000000.pvtu" in res.stderr,

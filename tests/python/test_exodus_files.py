@@ -13,7 +13,6 @@ by hoct with the Exodus library (coordinates and values as doubles).
 - truncated anywhere: exit status 1 and a message naming the file, never a crash.
 
 Run by ctest with /usr/bin/python3 and HOCT_BIN set to the hoct executable."""
-import json
 import os
 import subprocess
 import sys
@@ -26,7 +25,7 @@ from vtkmodules.vtkIOExodus import vtkExodusIIWriter
 from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from hoct_testing import Results, evaluate, run, tempdir  # noqa: E402
+from hoct_testing import Results, compare_trees, evaluate, run, tempdir, tree_json  # noqa: E402
 
 r = Results()
 WRITER = os.path.join(os.path.dirname(os.path.abspath(__file__)), "exodus_writer.py")
@@ -43,35 +42,14 @@ def write_exodus(path, points, cells, kind, fields, times=(0.0,)):
         raise RuntimeError(f"exodus_writer.py failed:\n{w.stderr[-2000:]}")
 
 
-def tree(path, *extra):
-    out = path + f".{len(extra)}.json"
-    res = run("tree", path, "--json", out, "--no-timings", *extra)
-    with open(out) as fh:
-        return json.load(fh), res
-
-
-def close(a, b, tol):
-    return abs(a - b) <= tol * max(1.0, abs(a), abs(b))
-
-
 def same_tree(name, j, k, value_tol, position_tol, scale=1.0):
-    key = lambda n: (n["type"], n["value"])  # noqa: E731
-    a, b = sorted(j["nodes"], key=key), sorted(k["nodes"], key=key)
-    ok = len(a) == len(b) and all(
-        x["type"] == y["type"] and close(x["value"], scale * y["value"], value_tol) and
-        all(abs(u - v) <= position_tol for u, v in zip(x["position"], y["position"]))
-        for x, y in zip(a, b))
-    r.check(ok, f"{name}: nodes differ ({len(a)} vs {len(b)} nodes)")
-    pa = sorted(p["persistence"] for p in j["pairs"])
-    pb = sorted(scale * p["persistence"] for p in k["pairs"])
-    r.check(len(pa) == len(pb) and all(close(x, y, value_tol) for x, y in zip(pa, pb)),
-            f"{name}: persistence pairs differ")
+    compare_trees(r, name, j, k, value_tol, position_tol, scale)
 
 
 with tempdir() as d:
     p = lambda name: os.path.join(d, name)  # noqa: E731
     run("generate", "gauss", "--degree", "2", "-o", p("g2.vtu"))
-    ref, _ = tree(p("g2.vtu"))
+    ref, _ = tree_json(p("g2.vtu"))
     field = ref["input"]["field"]
     reader = vtkXMLUnstructuredGridReader()
     reader.SetFileName(p("g2.vtu"))
@@ -96,7 +74,7 @@ with tempdir() as d:
     writer.SetFileName(p("vtk.e"))
     writer.SetInputData(tri6)
     r.check(writer.Write() == 1, "vtkExodusIIWriter failed")
-    j, res = tree(p("vtk.e"))
+    j, res = tree_json(p("vtk.e"))
     r.check(f"field '{field}'" in res.stdout, f"vtk.e: summary: {res.stdout[:300]}")
     same_tree("vtkExodusIIWriter TRI6 vs .vtu", j, ref, 1e-12, 1e-12)
 
@@ -105,11 +83,11 @@ with tempdir() as d:
                  times=[0.5, 1.5])
     info = run("info", p("steps.exo")).stdout
     r.check("2 time steps (times 0.5, 1.5)" in info, f"steps.exo: info:\n{info[:600]}")
-    last, res = tree(p("steps.exo"))
+    last, res = tree_json(p("steps.exo"))
     r.check("step 1 of 2" in res.stdout, f"steps.exo: default step: {res.stdout[:300]}")
     same_tree("Exodus last step vs 2 x .vtu", last, ref, 1e-12, 1e-12, scale=2.0)
     for args in (["--step", "0"], ["--time", "0.5"], ["--step", "-2"]):
-        j, _ = tree(p("steps.exo"), *args)
+        j, _ = tree_json(p("steps.exo"), *args)
         same_tree(f"Exodus {' '.join(args)} vs .vtu", j, ref, 1e-12, 1e-12)
     res = run("tree", p("steps.exo"), "--step", "2", check=False)
     r.check(res.returncode == 1 and "the file has 2 steps" in res.stderr,
@@ -125,7 +103,7 @@ with tempdir() as d:
     tri7 = np.hstack([cells, np.arange(len(points), len(points) + len(cells))[:, None]])
     xy7 = np.vstack([points, centroids])[:, :2]
     write_exodus(p("tri7.e"), xy7, tri7, "TRI7", {field: [np.concatenate([values, p2_centre])]})
-    j, res = tree(p("tri7.e"))
+    j, res = tree_json(p("tri7.e"))
     same_tree("TRI7 without bubble vs .vtu", j, ref, 1e-12, 1e-9)
     r.check("max degree 3" in res.stdout, f"TRI7: not read as cubic: {res.stdout[:200]}")
     rng = np.random.default_rng(7)

@@ -12,14 +12,13 @@ truncation of a legacy file on a grid of offsets, an XDMF file without its HDF5 
 .e, a step or array that is not there.
 
 Run by ctest with /usr/bin/python3 and HOCT_BIN set to the hoct executable."""
-import json
 import os
 import sys
 
 import vtk
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from hoct_testing import Results, run, tempdir  # noqa: E402
+from hoct_testing import Results, compare_trees, run, tempdir, tree_json  # noqa: E402
 
 r = Results()
 
@@ -31,35 +30,15 @@ def read_vtu(path):
     return reader.GetOutput()
 
 
-def tree(path, *extra):
-    out = path + ".json"
-    res = run("tree", path, "--json", out, "--no-timings", *extra)
-    with open(out) as f:
-        return json.load(f), res
-
-
-def close(a, b, tol):
-    return abs(a - b) <= tol * max(1.0, abs(a), abs(b))
-
-
 def same_tree(name, path, reference, *extra, tol=1e-12):
-    """The nodes (type, value, position) and pair persistences of the two trees agree within tol
-    (ascii files round their values)."""
+    """The tree of path (with extra options) against reference, within tol (ascii files round
+    their values)."""
     try:
-        j, res = tree(path, *extra)
+        j, res = tree_json(path, *extra)
     except RuntimeError as e:
         r.check(False, f"{name}: {e}")
         return None
-    key = lambda n: (n["type"], n["value"])  # noqa: E731
-    a, b = sorted(j["nodes"], key=key), sorted(reference["nodes"], key=key)
-    ok = len(a) == len(b) and all(
-        x["type"] == y["type"] and close(x["value"], y["value"], tol) and
-        all(close(u, v, tol) for u, v in zip(x["position"], y["position"])) for x, y in zip(a, b))
-    r.check(ok, f"{name}: nodes differ ({len(a)} vs {len(b)})")
-    pa = sorted(p["persistence"] for p in j["pairs"])
-    pb = sorted(p["persistence"] for p in reference["pairs"])
-    r.check(len(pa) == len(pb) and all(close(x, y, tol) for x, y in zip(pa, pb)),
-            f"{name}: pairs differ")
+    compare_trees(r, name, j, reference, tol)
     return res
 
 
@@ -80,8 +59,8 @@ with tempdir() as d:
     p = lambda name: os.path.join(d, name)  # noqa: E731
     run("generate", "heater", "-o", p("heater.vtu"))
     run("generate", "gauss", "--degree", "1", "-o", p("gauss1.vtu"))
-    heater, _ = tree(p("heater.vtu"))
-    gauss1, _ = tree(p("gauss1.vtu"))
+    heater, _ = tree_json(p("heater.vtu"))
+    gauss1, _ = tree_json(p("gauss1.vtu"))
     g = read_vtu(p("heater.vtu"))
     g1 = read_vtu(p("gauss1.vtu"))
 
