@@ -21,13 +21,15 @@
 //    relative) chooses one. The blocks of that step are merged (partitions). $ElementNodeData
 //    values are merged into node values where the elements sharing a node agree within 1e-9 of
 //    the view's range (plus rounding); else the file is refused naming the node, the elements and
-//    the largest jump. An $InterpolationScheme, if the view names one, is ignored: the values are
-//    taken as values at the element's nodes. $ElementData (one value per element) is listed, and
+//    the largest jump. A view whose blocks name an interpolation scheme (a second string tag;
+//    Gmsh names one for every high-order view) is read if the scheme's triangle basis is the
+//    Lagrange basis of the elements' nodes (its values are then node values), else refused.
+//    $ElementData (one value per element) is listed, and
 //    refused if chosen: a piecewise-constant field has no contour tree of this kind.
 //    All blocks are parsed (every view's syntax is checked) and only the chosen step's values are
 //    read and checked (finite) after the whole file, so views may come before or after a repeated
 //    mesh.
-//  - Every other section ($Entities, $PhysicalNames, $Periodic, $InterpolationScheme,
+//  - Every other section ($Entities, $PhysicalNames, $Periodic,
 //    $Comments, ...) is skipped up to its $End marker.
 // Gmsh's view.write(view, file, append=True) repeats the whole mesh before the view: a node or
 // triangle whose tag was seen before must be identical to it, and is then ignored.
@@ -46,6 +48,7 @@
 
 #include "io/field_selection.hpp"
 #include "io/msh_element_types.hpp"
+#include "io/msh_interpolation_scheme.hpp"
 #include "io/msh_scanner.hpp"
 #include "io/tag_index.hpp"
 #include "poly/lagrange_node_order.hpp"
@@ -124,6 +127,8 @@ private:
   }
   void read_data(std::size_t at, DataKind kind);
   void skip_section(std::string_view name, std::size_t at);
+  void read_interpolation_scheme(std::size_t at);
+  std::vector<MshInterpolationScheme> schemes_;
   void expect_end(const char *marker);
   // Reads the four counts of a 4.1 $Nodes or $Elements header.
   // `at` is set to where the counts start.
@@ -146,6 +151,7 @@ private:
     uint64_t count = 0;
     std::optional<double> time;
     std::size_t at = 0, values_at = 0;
+    std::string scheme; // the interpolation scheme an $ElementNodeData names (string tag 2)
   };
   // A view: the blocks of one name, with its time steps in file order.
   struct View {
@@ -154,6 +160,9 @@ private:
     int64_t components;
     std::size_t at; // its first block
     std::vector<FileFieldStep> steps;
+    std::string scheme;        // an interpolation scheme one of its blocks names
+    std::size_t scheme_at = 0; // that block
+    int64_t scheme_index = -1; // in schemes_: the scheme of that name defined before it
   };
   // Reads the values of a block (the scanner at its values_at): only checked for syntax and
   // skipped, or (collect) stored as the field.
@@ -238,6 +247,8 @@ MeshInput MshReader::read() {
       read_data(at, DataKind::ElementNode);
     else if (section == "ElementData")
       read_data(at, DataKind::Element);
+    else if (section == "InterpolationScheme")
+      read_interpolation_scheme(at);
     else
       skip_section(section, at);
   }
@@ -293,6 +304,60 @@ void MshReader::expect_end(const char *marker) {
     s_.fail_at(s_.pos() - t.size(),
                std::string("expected ") + marker + ", got " + MshScanner::quote(t) +
                    " (the section holds more than its counts announce, or its end is missing)");
+}
+
+// $InterpolationScheme: "name", the number of topologies, and for each its id (3: triangle), the
+// number of matrices and each matrix as "rows cols" and its values. Text in binary files too.
+void MshReader::read_interpolation_scheme(std::size_t at) {
+  MshInterpolationScheme scheme;
+  scheme.at = at;
+  if (!s_.skip_space())
+    s_.fail("unexpected end of file: expected the interpolation scheme's name");
+  std::string_view name = s_.rest_of_line();
+  if (name.size() >= 2 && name.front() == '"' && name.back() == '"')
+    name = name.substr(1, name.size() - 2);
+  scheme.name = name;
+  constexpr uint64_t kMaxSide = 1000; // a degree-43 triangle
+  const uint64_t topologies = s_.unsigned_number("the number of topologies", true);
+  if (topologies > 64)
+    s_.fail_at(at,
+               "$InterpolationScheme '" + scheme.name + "' has " + str(topologies) + " topologies");
+  for (uint64_t t = 0; t < topologies; ++t) {
+    const uint64_t topology = s_.unsigned_number("a topology", true);
+    const uint64_t matrices = s_.unsigned_number("the number of matrices", true);
+    if (matrices > 8)
+      s_.fail_at(at, "$InterpolationScheme '" + scheme.name + "' has " + str(matrices) +
+                         " matrices for a topology");
+    for (uint64_t m = 0; m < matrices; ++m) {
+      const std::size_t matrix_at = (s_.skip_space(), s_.pos());
+      const uint64_t rows = s_.unsigned_number("a matrix's rows", true);
+      const uint64_t cols = s_.unsigned_number("a matrix's columns", true);
+      if (rows > kMaxSide || cols > kMaxSide)
+        s_.fail_at(matrix_at, "$InterpolationScheme '" + scheme.name + "': a " + str(rows) + " x " +
+                                  str(cols) + " matrix (at most " + str(kMaxSide) + " x " +
+                                  str(kMaxSide) + ")");
+      std::vector<double> values(rows * cols);
+      for (double &v : values)
+        v = s_.real_number("a matrix entry", true);
+      if (topology != 3)
+        continue;
+      if (m == 0) {
+        scheme.rows = static_cast<int>(rows);
+        scheme.cols = static_cast<int>(cols);
+        scheme.coefficients = std::move(values);
+      } else if (m == 1) {
+        if (rows != static_cast<uint64_t>(scheme.cols))
+          s_.fail_at(matrix_at, "$InterpolationScheme '" + scheme.name + "': " + str(rows) +
+                                    " exponent rows for " +
+                                    str(static_cast<uint64_t>(scheme.cols)) + " monomials");
+        scheme.exponent_columns = static_cast<int>(cols);
+        scheme.exponents = std::move(values);
+      }
+    }
+  }
+  if (!s_.skip_space() || s_.word("$EndInterpolationScheme") != "$EndInterpolationScheme")
+    s_.fail_at(at, "$InterpolationScheme '" + scheme.name + "' has no $EndInterpolationScheme");
+  schemes_.push_back(std::move(scheme));
 }
 
 void MshReader::skip_section(std::string_view name, std::size_t at) {
@@ -733,6 +798,8 @@ void MshReader::read_data(std::size_t at, DataKind kind) {
     }
     if (i == 0)
       b.name = t;
+    else if (i == 1 && kind == DataKind::ElementNode)
+      b.scheme = t;
   }
   const uint64_t nreals = count("the number of real tags", "real tags");
   for (uint64_t i = 0; i < nreals; ++i) {
@@ -775,15 +842,26 @@ void MshReader::read_data(std::size_t at, DataKind kind) {
   auto view =
       std::find_if(views_.begin(), views_.end(), [&](const View &v) { return v.name == b.name; });
   if (view == views_.end()) {
-    views_.push_back(View{b.name, kind, components, at, {}});
+    views_.push_back(View{b.name, kind, components, at, {}, {}, 0, -1});
     view = views_.end() - 1;
   } else if (view->kind != kind) {
     s_.fail_at(at, section + " '" + b.name + "': the file gives a view of this name as " +
                        section_of(view->kind) + " too");
   }
   view->components = components;
+  if (!b.scheme.empty() && view->scheme.empty()) {
+    // Gmsh writes a view's scheme just before its data, under a name several views share: the
+    // last one of that name so far is this block's.
+    view->scheme = b.scheme;
+    view->scheme_at = at;
+    for (std::size_t i = schemes_.size(); i-- > 0;)
+      if (schemes_[i].name == b.scheme) {
+        view->scheme_index = static_cast<int64_t>(i);
+        break;
+      }
+  }
   if (std::none_of(view->steps.begin(), view->steps.end(),
-                   [&](const FileFieldStep &s) { return s.tag == step; }))
+                   [tag = step](const FileFieldStep &s) { return s.tag == tag; }))
     view->steps.push_back(FileFieldStep{step, b.time});
   b.values_at = s_.pos();
   scan_values(b, false);
@@ -1009,6 +1087,18 @@ void MshReader::choose_view() {
     s_.fail_at(v->at, what + " holds one value per element: a piecewise-constant field has no "
                              "contour tree of this kind (hoct needs values at the nodes: "
                              "$NodeData, or $ElementNodeData of a continuous field)");
+  if (!v->scheme.empty()) { // values at the nodes only in the elements' own Lagrange basis
+    std::string why = "the file defines no $InterpolationScheme of that name before it";
+    const int degree =
+        v->scheme_index < 0
+            ? -1
+            : nodal_lagrange_degree(schemes_[static_cast<std::size_t>(v->scheme_index)], &why);
+    if (degree < 0)
+      s_.fail_at(v->scheme_at, what + " names the interpolation scheme '" + v->scheme + "', and " +
+                                   why +
+                                   ": its values are coefficients of that basis, not values at "
+                                   "the elements' nodes, which hoct needs");
+  }
 
   // The time step.
   const std::size_t nsteps = v->steps.size();

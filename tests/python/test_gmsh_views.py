@@ -126,6 +126,33 @@ def element_node_data(tmp, order):
           "the field is discontinuous there (largest jump 0.01")
 
 
+def interpolation_scheme(tmp):
+    """A view with interpolation matrices (its values are coefficients of the scheme's basis):
+    refused, naming the scheme, though its values would pass as continuous node values; the same
+    values without a scheme are read."""
+    mesh(1)
+    plain = os.path.join(tmp, "plain.msh")
+    write_msh(plain, 4.1, 0, "ElementNodeData", [(0, continuous)])
+    schemed = os.path.join(tmp, "scheme.msh")
+    gmsh.option.setNumber("Mesh.MshFileVersion", 4.1)
+    gmsh.option.setNumber("Mesh.Binary", 0)
+    gmsh.write(schemed)
+    at = xyz()
+    etags, enodes = triangles()
+    v = gmsh.view.add("f")
+    gmsh.view.addModelData(v, 0, "sq", "ElementNodeData", etags,
+                           [[continuous(e, *at[n][:2]) for n in nodes]
+                            for e, nodes in zip(etags, enodes)])
+    # P1 in the monomial basis 1, u, v: coefficients from the values at the corners.
+    gmsh.view.setInterpolationMatrices(v, "Triangle", 3, [1, 0, 0, -1, 1, 0, -1, 0, 1],
+                                       [0, 0, 0, 1, 0, 0, 0, 1, 0])
+    gmsh.view.write(v, schemed, append=True)
+    gmsh.finalize()
+    t, r = tree(plain)
+    R.check(t is not None and len(t["nodes"]) > 2, f"no scheme: {r.stderr.strip()}")
+    fails("interpolation scheme", schemed, "names the interpolation scheme")
+
+
 def time_steps(tmp):
     mesh(2)
     path = os.path.join(tmp, "steps.msh")
@@ -234,6 +261,7 @@ with tempdir() as tmp:
     for order in (2, 3):
         element_node_data(tmp, order)
     time_steps(tmp)
+    interpolation_scheme(tmp)
     pos_files(tmp)
 
 R.finish()
