@@ -8,6 +8,7 @@
 
 #include "exact/exact_contour_tree.hpp"
 #include "io/msh_reader.hpp"
+#include "io/pos_reader.hpp"
 #include "io/vtu_reader.hpp"
 #include "mesh/mesh.hpp"
 #include "tree/union_find.hpp"
@@ -20,7 +21,7 @@
 
 namespace hoct::fuzz {
 
-enum class Target { Vtu, Msh41Ascii, Msh41Binary, Msh22 };
+enum class Target { Vtu, Msh41Ascii, Msh41Binary, Msh22, Pos };
 
 constexpr std::size_t kMaxTreeCells = 64;
 constexpr int kMaxTreeDegree = 5;
@@ -82,9 +83,12 @@ inline std::string run_one(Target target, std::string bytes) {
   const ReadLimits limits{.max_memory_bytes = kMemoryBudget};
   Mesh mesh;
   try {
-    input = target == Target::Vtu
-                ? read_vtu_buffer(std::move(bytes), "fuzz.vtu", "", limits)
-                : read_msh_buffer(msh_input(target, std::move(bytes)), "fuzz.msh", "", limits);
+    if (target == Target::Vtu)
+      input = read_vtu_buffer(std::move(bytes), "fuzz.vtu", "", limits);
+    else if (target == Target::Pos)
+      input = read_pos_buffer(std::move(bytes), "fuzz.pos", "", limits);
+    else
+      input = read_msh_buffer(msh_input(target, std::move(bytes)), "fuzz.msh", "", limits);
     mesh = build_mesh(input);
   } catch (const Error &) {
     return {};

@@ -8,7 +8,7 @@
 #include <cstdlib>
 
 #ifndef HOCT_FUZZ_TARGET
-#error "define HOCT_FUZZ_TARGET (Vtu, Msh41Ascii, Msh41Binary or Msh22)"
+#error "define HOCT_FUZZ_TARGET (Vtu, Msh41Ascii, Msh41Binary, Msh22 or Pos)"
 #endif
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, std::size_t size) {

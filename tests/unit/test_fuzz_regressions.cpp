@@ -62,5 +62,6 @@ TEST(FuzzRegressions, Vtu) { EXPECT_GT(replay("fuzz_vtu", Target::Vtu), 0); }
 TEST(FuzzRegressions, Msh41Ascii) { replay("fuzz_msh41_ascii", Target::Msh41Ascii); }
 TEST(FuzzRegressions, Msh41Binary) { replay("fuzz_msh41_binary", Target::Msh41Binary); }
 TEST(FuzzRegressions, Msh22) { replay("fuzz_msh22", Target::Msh22); }
+TEST(FuzzRegressions, Pos) { replay("fuzz_pos", Target::Pos); }
 
 } // namespace
