@@ -295,6 +295,11 @@ MeshInput read_exodus(const std::string &path, const FieldSelection &field,
       continue;
     const std::string type = upper(block.topology);
     const int64_t k = block.num_nodes_per_entry;
+    // Point and line blocks (boundary markers some meshers add) have no area: skipped, as the
+    // VTK readers skip vertex and line cells.
+    if (type.rfind("BAR", 0) == 0 || type.rfind("BEAM", 0) == 0 || type.rfind("TRUSS", 0) == 0 ||
+        type.rfind("EDGE", 0) == 0 || type.rfind("SPHERE", 0) == 0 || type.rfind("CIRCLE", 0) == 0)
+      continue;
     const bool triangle = type.rfind("TRI", 0) == 0;
     if (!triangle || (k != 3 && k != 6 && k != 7))
       throw InputError(where + ": not triangles of 3, 6 or 7 nodes (" + std::to_string(k) +
@@ -321,6 +326,9 @@ MeshInput read_exodus(const std::string &path, const FieldSelection &field,
         throw InputError(where + ": element " + std::to_string(e + 1) + problem);
     }
   }
+  if (m.num_cells() == 0)
+    throw InputError(path + ": no triangle elements in its " + std::to_string(ids.size()) +
+                     " element block(s)");
   drop_unused_points(m);
   return m;
 }

@@ -132,6 +132,13 @@ with tempdir() as d:
             f"TRI7 with bubbles: tree {res.returncode}, check {chk.returncode}: "
             f"{(res.stderr + chk.stdout + chk.stderr).strip()[-400:]}")
 
+    # Only a block of line elements (boundary markers): skipped, and then no triangles.
+    edges = np.array([[int(c[0]), int(c[1])] for c in cells])
+    write_exodus(p("bars.e"), points[:, :2], edges, "BAR2", {field: [values]})
+    res = run("tree", p("bars.e"), check=False)
+    r.check(res.returncode == 1 and "no triangle elements in its 1 element block" in res.stderr,
+            f"BAR2 only: {res.returncode} {res.stderr.strip()[:300]}")
+
     # Truncated files: a clear error, never a crash.
     data = open(p("steps.exo"), "rb").read()
     for frac in (0.0, 0.001, 0.01, 0.05, 0.2, 0.4, 0.6, 0.8, 0.9, 0.95, 0.99, 0.999):
