@@ -6,6 +6,7 @@
 #include "io/tree_json.hpp"
 #include "io/tree_svg_writer.hpp"
 #include "io/tree_vtp_writer.hpp"
+#include "io/vtk_cells.hpp"
 #include "mesh/duplicate_points.hpp"
 #include "mesh/gll_nodes.hpp"
 #include "mesh/mesh.hpp"
@@ -71,16 +72,22 @@ PyMesh make_mesh(MeshInput in, int threads = 0) {
 
 // Cells convert only safely (no forcecast): a float or uint64 array is refused, not truncated
 // or wrapped (hoct.from_arrays converts the arrays a .vtu file could hold, with messages).
-// `blocks`: one (cells, nodes per cell) array per cell degree or per block of a meshio mesh.
-// With merge_tolerance >= 0, points at the same position are merged first (--merge-duplicates).
+// `blocks`: one (cells, nodes per cell) array per node count or per block of a meshio mesh,
+// nodes in VTK order, with each cell's VTK type in `types` (one array per block; 0: a complete
+// Lagrange triangle of the node count). With merge_tolerance >= 0, points at the same position are
+// merged first
+// (--merge-duplicates).
 PyMesh from_arrays(py::array_t<double, py::array::c_style | py::array::forcecast> points,
                    const std::vector<py::array_t<int64_t, py::array::c_style>> &blocks,
+                   const std::vector<py::array_t<int64_t, py::array::c_style>> &types,
                    py::array_t<double, py::array::c_style | py::array::forcecast> values,
                    double merge_tolerance, const std::string &field_name, bool float32_points) {
   if (points.ndim() != 2 || (points.shape(1) != 2 && points.shape(1) != 3))
     throw Error("from_arrays: points must have shape (n, 2) or (n, 3)");
   if (values.ndim() != 1 || values.shape(0) != points.shape(0))
     throw Error("from_arrays: values must have one entry per point");
+  if (types.size() != blocks.size())
+    throw Error("from_arrays: one cell type per block of cells");
   MeshInput in;
   const auto p = points.unchecked<2>();
   for (py::ssize_t i = 0; i < points.shape(0); ++i)
@@ -89,25 +96,30 @@ PyMesh from_arrays(py::array_t<double, py::array::c_style | py::array::forcecast
   if (float32_points)
     in.coordinate_precision = 0x1p-24;
   int64_t first = 0; // the cell index of the block's first cell, for messages
-  for (const auto &cells : blocks) {
+  for (std::size_t b = 0; b < blocks.size(); ++b) {
+    const auto &cells = blocks[b];
     if (cells.ndim() != 2)
       throw Error("from_arrays: cells must have shape (cells, nodes per cell), nodes in VTK order");
-    const int degree = degree_from_node_count(cells.shape(1));
-    if (degree < 1)
-      throw Error("from_arrays: " + std::to_string(cells.shape(1)) +
-                  " nodes per cell is not a complete triangle (3, 6, 10, 15, ...)");
-    const auto &perm = node_order_to_lattice(NodeOrdering::Vtk, degree);
+    const int64_t n = cells.shape(1);
+    if (types[b].ndim() != 1 || types[b].shape(0) != cells.shape(0))
+      throw Error("from_arrays: one cell type per cell");
+    const auto t = types[b].unchecked<1>();
     const auto c = cells.unchecked<2>();
-    std::vector<int64_t> nodes(perm.size());
+    std::vector<int64_t> ids(static_cast<std::size_t>(n));
+    std::string problem;
     for (py::ssize_t k = 0; k < cells.shape(0); ++k) {
-      for (std::size_t i = 0; i < perm.size(); ++i) {
-        const int64_t id = c(k, static_cast<py::ssize_t>(i));
-        if (id < 0 || id >= points.shape(0))
-          throw Error("from_arrays: cell " + std::to_string(first + k) + " refers to point " +
-                      std::to_string(id) + ", but there are " + std::to_string(points.shape(0)));
-        nodes[perm[i]] = id;
+      int64_t type = t(k);
+      if (type == 0) {
+        if (degree_from_node_count(n) < 1)
+          throw Error("from_arrays: " + std::to_string(n) +
+                      " nodes per cell is not a complete triangle (3, 6, 10, 15, ...)");
+        type = n == 3 ? 5 : 69;
       }
-      in.add_cell(degree, nodes.data());
+      for (int64_t i = 0; i < n; ++i)
+        ids[static_cast<std::size_t>(i)] = c(k, static_cast<py::ssize_t>(i));
+      if (add_vtk_cell(in, type, ids.data(), n, points.shape(0), 0, &problem) !=
+          VtkCellResult::Added)
+        throw Error("from_arrays: cell " + std::to_string(first + k) + problem);
     }
     first += cells.shape(0);
   }

@@ -109,16 +109,25 @@ void run_eval(const EvalOptions &o) {
     if (!parse_point(line, c, u, v))
       throw Error(at + "expected 'cell u v' (an integer cell id and two numbers), got " +
                   quote_prefix(line));
-    if (c < 0 || c >= m.topology.num_cells())
+    const int64_t cells = m.origins.num_input_cells(m.topology.num_cells());
+    if (c < 0 || c >= cells)
       throw Error(at + "cell " + std::to_string(c) + " out of range (the mesh has " +
-                  std::to_string(m.topology.num_cells()) + " cells)");
-    if (u < -kSlack || v < -kSlack || u + v > 1 + kSlack)
+                  std::to_string(cells) + " cells)");
+    const bool quad = m.origins.quadrilateral(c);
+    if (quad && (u < -kSlack || v < -kSlack || u > 1 + kSlack || v > 1 + kSlack))
+      throw Error(at + "(s, t) = (" + std::to_string(u) + ", " + std::to_string(v) +
+                  ") is outside the unit square of quadrilateral " + std::to_string(c) +
+                  ": the field is not defined there");
+    if (!quad && (u < -kSlack || v < -kSlack || u + v > 1 + kSlack))
       throw Error(at + "(u, v) = (" + std::to_string(u) + ", " + std::to_string(v) +
                   ") is outside the reference triangle (0,0), (1,0), (0,1): the field is not "
                   "defined there");
-    const Vec3 p = m.geometry.position(c, u, v);
+    const CellPlace at_mesh = m.origins.to_mesh(c, {u, v});
+    const int64_t t = at_mesh.cell;
+    const double a = at_mesh.uv[0], b = at_mesh.uv[1];
+    const Vec3 p = m.geometry.position(t, a, b);
     std::printf("%lld %.17g %.17g %.17g %.17g %.17g %.17g\n", c, u, v, p[0], p[1], p[2],
-                m.field.value(c, u, v));
+                m.field.value(t, a, b));
   }
   if (in->bad())
     throw Error(where + ": read error");
@@ -130,7 +139,8 @@ void register_eval(CLI::App &app) {
   auto o = std::make_shared<EvalOptions>();
   auto *sub = app.add_subcommand(
       "eval", "Evaluate the field and the geometry at parametric points: reads lines 'cell u v' "
-              "(reference triangle (0,0),(1,0),(0,1)), prints 'cell u v x y z value'");
+              "(reference triangle (0,0),(1,0),(0,1); a quadrilateral's unit square (s, t), (0,0) "
+              "at its first corner), prints 'cell u v x y z value'");
   sub->add_option("file", o->file, "Input file (.vtu, .pvtu, .pvd, .msh, .pos)")->required();
   add_field_options(sub, o->field);
   sub->add_option("--points", o->points, "File of 'cell u v' lines, or - for stdin");

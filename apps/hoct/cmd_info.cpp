@@ -79,12 +79,18 @@ int run_info(const InfoOptions &o) {
       }
       j["steps"] = list;
     }
-    j["cells"] = m.complete ? m.topology.num_cells() : 0;
+    j["cells"] = m.complete ? m.num_input_cells() : 0;
     j["points"] = m.num_points;
     nlohmann::ordered_json deg = nlohmann::ordered_json::object();
     for (auto [d, n] : degrees)
       deg[std::to_string(d)] = n;
-    j["degrees"] = deg;
+    j["degrees"] = deg; // of the triangles the tree is computed on
+    nlohmann::ordered_json kinds = nlohmann::ordered_json::array();
+    for (const auto &[key, n] : m.input_cell_kinds)
+      kinds.push_back({{"kind", cell_kind_name(key.first)}, {"degree", key.second}, {"count", n}});
+    j["cell_kinds"] = kinds;
+    if (m.complete && !m.origins.identity())
+      j["triangles"] = m.topology.num_cells();
     if (m.complete) {
       j["vertices"] = m.topology.num_vertices();
       j["edges"] = m.topology.num_edges();
@@ -157,13 +163,17 @@ int run_info(const InfoOptions &o) {
     }
   }
   if (m.complete) {
-    std::printf("cells:       %lld (", static_cast<long long>(m.topology.num_cells()));
-    bool first = true;
-    for (auto [d, n] : degrees) {
-      std::printf("%sdegree %d: %lld", first ? "" : ", ", d, static_cast<long long>(n));
-      first = false;
+    std::printf("cells:       %lld (%s)\n", static_cast<long long>(m.num_input_cells()),
+                m.describe_input_cells().c_str());
+    if (!m.origins.identity()) {
+      std::string tris;
+      for (auto [d, n] : degrees)
+        tris += (tris.empty() ? "" : ", ") + std::string("degree ") + std::to_string(d) + ": " +
+                std::to_string(n);
+      std::printf("             computed on %lld triangles (%s): each quadrilateral of order p "
+                  "cut into two of degree 2p, exactly\n",
+                  static_cast<long long>(m.topology.num_cells()), tris.c_str());
     }
-    std::printf(")\n");
     std::printf("points:      %lld (vertices %lld, edges %lld, boundary edges %lld)\n",
                 static_cast<long long>(m.num_points),
                 static_cast<long long>(m.topology.num_vertices()),

@@ -13,10 +13,17 @@ void print_tree_summary(const std::string &file, const Mesh &mesh, const TreeRes
   for (const auto &n : tree.nodes)
     ++loc[to_string(n.location)];
   const std::string detail = mesh.field_detail.empty() ? "" : " " + mesh.field_detail;
-  std::printf("%s: field '%s'%s, %lld cells (max degree %d), %s tree\n", file.c_str(),
-              mesh.field_name.c_str(), detail.c_str(),
-              static_cast<long long>(mesh.topology.num_cells()), mesh.field.max_degree(),
-              tree.method.c_str());
+  if (mesh.origins.identity())
+    std::printf("%s: field '%s'%s, %lld cells (max degree %d), %s tree\n", file.c_str(),
+                mesh.field_name.c_str(), detail.c_str(),
+                static_cast<long long>(mesh.topology.num_cells()), mesh.field.max_degree(),
+                tree.method.c_str());
+  else
+    std::printf("%s: field '%s'%s, %lld cells (%s; as %lld triangles, max degree %d), %s tree\n",
+                file.c_str(), mesh.field_name.c_str(), detail.c_str(),
+                static_cast<long long>(mesh.num_input_cells()), mesh.describe_input_cells().c_str(),
+                static_cast<long long>(mesh.topology.num_cells()), mesh.field.max_degree(),
+                tree.method.c_str());
   std::printf("  nodes: %zu (minima %lld, maxima %lld, saddles %lld", tree.nodes.size(),
               static_cast<long long>(counts[0]), static_cast<long long>(counts[1]),
               static_cast<long long>(counts[2]));

@@ -78,15 +78,49 @@ def read(path, scalar=None, max_memory=None, threads=None, merge_duplicates=None
     return mesh
 
 
-_TRIANGLE_TYPES = {5: 1, 22: 2}  # VTK_TRIANGLE, VTK_QUADRATIC_TRIANGLE; 69 = any degree
+# VTK cell types from_arrays and from_meshio take: their node counts for a degree (or order) d.
+_CELL_NODES = {
+    5: lambda d: 3 if d == 1 else None, 22: lambda d: 6 if d == 2 else None,
+    69: lambda d: (d + 1) * (d + 2) // 2, 76: lambda d: (d + 1) * (d + 2) // 2,
+    9: lambda d: 4 if d == 1 else None, 28: lambda d: 9 if d == 2 else None,
+    23: lambda d: 8 if d == 2 else None, 70: lambda d: (d + 1) ** 2, 77: lambda d: (d + 1) ** 2,
+}
+
+
+def _triangle_degree(n):
+    d = 1
+    while (d + 1) * (d + 2) // 2 < n:
+        d += 1
+    return d if (d + 1) * (d + 2) // 2 == n else None
+
+
+def _quad_order(n):
+    p = int(round(math.sqrt(n))) - 1
+    return p if p >= 1 and (p + 1) ** 2 == n else None
+
+
+def _cell_type(n, what):
+    """The VTK type of n-node cells given without one: a complete triangle, else a
+    quadrilateral ((p+1)^2 nodes; 8: the serendipity VTK_QUADRATIC_QUAD)."""
+    if _triangle_degree(n):
+        return 5 if n == 3 else (22 if n == 6 else 69)
+    if _quad_order(n):
+        return 9 if n == 4 else 70
+    if n == 8:
+        return 23
+    raise HoctError("%s: %d nodes per cell is neither a complete triangle (3, 6, 10, 15, ...) nor "
+                    "a quadrilateral (4, 8, 9, 16, 25, ...)" % (what, n))
 
 
 def from_arrays(points, cells, values, degree=None, cell_types=None, merge_duplicates=None):
-    """A mesh from numpy arrays: points (n, 2|3), cells (cells, nodes) of complete Lagrange
-    triangles in VTK node order (3, 6, 10, 15, ... nodes per cell), values (n,). `degree`, if
-    given, must match the node count; `cell_types` (VTK codes 5, 22 or 69 per cell), if given,
-    are checked against it. The mesh is built on every hardware thread (the same mesh for any
-    number).
+    """A mesh from numpy arrays: points (n, 2|3), cells (cells, nodes) in VTK node order,
+    values (n,). Cells are complete Lagrange triangles (3, 6, 10, 15, ... nodes per cell) or
+    quadrilaterals of order (p, p) ((p+1)^2 nodes: 4, 9, 16, ...; 8: serendipity), unless
+    `cell_types` says otherwise: one VTK type for all cells or one per cell (5, 22, 69
+    triangles, 76 Bezier triangles, 9, 23, 28, 70 quadrilaterals, 77 Bezier quadrilaterals;
+    36 nodes are a degree-7 triangle unless typed 70). `degree`, if given, must match the node
+    count (a quadrilateral's order p). The mesh is built on every hardware thread (the same mesh
+    for any number).
 
     Cell indices follow the rules of a .vtu file's connectivity: an integer array, or floating
     point values that are all whole, finite and within int64 (1.5, nan, 1e20 are refused with
@@ -106,6 +140,8 @@ def _float32(a):
 
 
 def _from_arrays(points, cells, values, degree, cell_types, what, tolerance=-1.0, field="f"):
+    import numpy as np
+
     float32 = _float32(points)
     points = _args.real_array(points, what + ": points")
     values = _args.real_array(values, what + ": values")
@@ -115,16 +151,35 @@ def _from_arrays(points, cells, values, degree, cell_types, what, tolerance=-1.0
     n = cells.shape[1]
     if degree is not None:
         degree = _args.integer(degree, what + ": degree", 1, 1 << 20)
-    if degree is not None and (degree + 1) * (degree + 2) // 2 != n:
-        raise HoctError("%s: degree %d needs %d nodes per cell, cells have %d"
-                        % (what, degree, (degree + 1) * (degree + 2) // 2, n))
-    if cell_types is not None:
-        for i, t in enumerate(_args.index_array(cell_types, what + ": cell_types").ravel()):
-            if t not in (5, 22, 69) or (t in _TRIANGLE_TYPES and
-                                        (_TRIANGLE_TYPES[t] + 1) * (_TRIANGLE_TYPES[t] + 2) // 2 != n):
-                raise HoctError("%s: cell %d has VTK type %d, which does not match %d-node "
-                                "triangles" % (what, i, t, n))
-    return _hoct.from_arrays(points, [cells], values, tolerance, field, float32)
+    if cell_types is None and degree is not None:
+        tri, quad = (degree + 1) * (degree + 2) // 2, (degree + 1) ** 2
+        if n not in (tri, quad):
+            raise HoctError("%s: degree %d needs %d nodes per cell (a triangle) or %d (a "
+                            "quadrilateral), cells have %d" % (what, degree, tri, quad, n))
+        t = (5 if n == 3 else 69) if n == tri else (9 if n == 4 else 70)
+        types = np.full(cells.shape[0], t, dtype=np.int64)
+    elif cell_types is None:
+        types = np.full(cells.shape[0], _cell_type(n, what), dtype=np.int64)
+    else:
+        types = _args.index_array(cell_types, what + ": cell_types").ravel()
+        if types.size == 1:
+            types = np.full(cells.shape[0], types[0], dtype=np.int64)
+        elif types.size != cells.shape[0]:
+            raise HoctError("%s: %d cell_types for %d cells (give one type, or one per cell)"
+                            % (what, types.size, cells.shape[0]))
+    for i, t in enumerate(types):
+        t = int(t)
+        if t not in _CELL_NODES:
+            raise HoctError("%s: cell %d has VTK type %d (supported: %s)"
+                            % (what, i, t, ", ".join(map(str, sorted(_CELL_NODES)))))
+        d = degree
+        if d is None:
+            d = _triangle_degree(n) if t in (5, 22, 69, 76) else (2 if t == 23 else _quad_order(n))
+        if d is None or _CELL_NODES[t](d) != n:
+            raise HoctError("%s: cell %d has VTK type %d, which does not match %d-node cells%s"
+                            % (what, i, t, n, "" if degree is None else " of degree %d" % degree))
+    return _hoct.from_arrays(points, [cells], [types.astype(np.int64)], values, tolerance, field,
+                             float32)
 
 
 def generate(name, degree=0, cells=0, seed=1, frequency=1.0, plateau=0.0, scale=1.0, offset=0.0):
@@ -152,12 +207,16 @@ dataset_names = _hoct.dataset_names
 # meshio's cell types that are no part of a surface's field: skipped, as the file readers skip
 # vertex and line cells.
 _MESHIO_SKIPPED = ("vertex", "line", "VTK_LAGRANGE_CURVE")
+# meshio's surface cell types (VTK node order) as VTK types; "triangle..." blocks: by node count.
+_MESHIO_TYPES = {"VTK_LAGRANGE_TRIANGLE": 0, "quad": 9, "quad8": 23, "quad9": 28,
+                 "VTK_LAGRANGE_QUADRILATERAL": 70}
 
 
 def from_meshio(mesh, scalar=None, component=None, merge_duplicates=None):
     """A mesh from a meshio.Mesh: every triangle block (triangle, triangle6, triangle10, ...
-    and VTK_LAGRANGE_TRIANGLE of any degree, VTK node order; several blocks, e.g. a Gmsh
-    model's surfaces, together), vertex and line blocks skipped. The field is point data
+    and VTK_LAGRANGE_TRIANGLE of any degree) and quadrilateral block (quad, quad8, quad9,
+    VTK_LAGRANGE_QUADRILATERAL), VTK node order; several blocks, e.g. a Gmsh model's
+    surfaces, together; vertex and line blocks skipped. The field is point data
     `scalar`, else the first one-component floating-point array that is no id, ghost or mask
     array (as `read`); (n, 1) arrays are one-component; `component` takes one component of a
     vector array or its 'magnitude'. `merge_duplicates` as for `read`."""
@@ -166,15 +225,22 @@ def from_meshio(mesh, scalar=None, component=None, merge_duplicates=None):
     what = "from_meshio"
     tolerance = _args.merge_tolerance(merge_duplicates, what)
     blocks = []
+    types = []
     for i, block in enumerate(mesh.cells):
         kind = block.type
-        if kind.startswith("triangle") or kind == "VTK_LAGRANGE_TRIANGLE":
+        vtk = _MESHIO_TYPES.get(kind, 0 if kind.startswith("triangle") else None)
+        if vtk is not None:
             blocks.append(_args.index_array(block.data, "%s: cell block %d (%s)" % (what, i, kind)))
+            if blocks[-1].ndim != 2:
+                raise HoctError("%s: cell block %d (%s) is not a 2D array" % (what, i, kind))
+            types.append(np.full(blocks[-1].shape[0], vtk, dtype=np.int64))
         elif not kind.startswith(_MESHIO_SKIPPED):
             raise HoctError("%s: cell block %d is of type '%s': hoct reads triangles (triangle, "
-                            "triangle6, triangle10, ..., VTK_LAGRANGE_TRIANGLE)" % (what, i, kind))
+                            "triangle6, triangle10, ..., VTK_LAGRANGE_TRIANGLE) and "
+                            "quadrilaterals (quad, quad8, quad9, VTK_LAGRANGE_QUADRILATERAL)"
+                            % (what, i, kind))
     if not blocks:
-        raise HoctError("%s: no triangle blocks (blocks: %s)"
+        raise HoctError("%s: no triangle or quadrilateral blocks (blocks: %s)"
                         % (what, ", ".join(b.type for b in mesh.cells) or "none"))
     data = mesh.point_data
     if not data:
@@ -227,7 +293,7 @@ def from_meshio(mesh, scalar=None, component=None, merge_duplicates=None):
     float32 = _float32(mesh.points)
     points = _args.real_array(mesh.points, what + ": points")
     values = _args.real_array(values, what + ": values")
-    return _hoct.from_arrays(points, blocks, values, tolerance, label, float32)
+    return _hoct.from_arrays(points, blocks, types, values, tolerance, label, float32)
 
 
 def contour_tree(mesh, simplify=None, threads=None, method="exact", refine=4, keep_flat=False,

@@ -821,7 +821,18 @@ std::string TreeCheckReport::summary(std::size_t max_lines) const {
 
 TreeCheckReport check_tree(const TreeResult &tree, const Mesh &mesh,
                            const TreeCheckOptions &options) {
-  return Checker(tree, mesh, options).run();
+  if (mesh.origins.identity())
+    return Checker(tree, mesh, options).run();
+  // The tree names input cells (a quadrilateral as such); the checks look at the mesh's
+  // triangles (mesh/cell_split). A cell the input does not have stays out of range.
+  TreeResult local = tree;
+  for (TreeNode &n : local.nodes)
+    if (n.cell >= 0) {
+      const CellPlace p = mesh.origins.to_mesh(n.cell, n.uv);
+      n.cell = p.cell >= 0 ? p.cell : mesh.topology.num_cells();
+      n.uv = p.uv;
+    }
+  return Checker(local, mesh, options).run();
 }
 
 } // namespace hoct

@@ -105,7 +105,8 @@ bool is_bookkeeping_array(const std::string &name) {
                                        "GlobalNodeId",
                                        "PedigreeNodeId",
                                        "GlobalElementId",
-                                       "PedigreeElementId"};
+                                       "PedigreeElementId",
+                                       "RationalWeights"};
   return std::find(std::begin(kNames), std::end(kNames), name) != std::end(kNames);
 }
 

@@ -91,6 +91,7 @@ MeshInput join_pieces(std::vector<MeshPiece> pieces, const std::string &where, b
         out.cell_nodes.push_back(renumber[static_cast<std::size_t>(in.cell_nodes[i])]);
       out.cell_offsets.push_back(static_cast<int64_t>(out.cell_nodes.size()));
       out.cell_degree.push_back(in.cell_degree[c]);
+      out.set_kind(out.cell_degree.size() - 1, in.kind(c));
     }
     in = MeshInput(); // released before the next piece is appended
   }

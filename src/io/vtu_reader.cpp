@@ -125,6 +125,10 @@ private:
   template <class T>
   PooledVector<T> read_array(const pugi::xml_node &a, std::size_t expected) const;
   // A piece's vtkGhostType array in `data` (PointData or CellData), `n` flags (empty if none).
+  // Bezier cells (from cell `first_cell` on) of a piece whose PointData has RationalWeights:
+  // refused unless every weight they use is 1 (rational cells are not polynomials).
+  void check_rational_weights(const MeshInput &m, std::size_t first_cell, const pugi::xml_node &pd,
+                              std::size_t np, int64_t base, const std::string &where) const;
   std::vector<uint8_t> read_ghost(const pugi::xml_node &data, std::size_t n,
                                   const std::string &where) const;
   // The bookkeeping arrays of a piece of np points whose first point is `base`.
@@ -889,6 +893,34 @@ long long parse_count(const pugi::xml_attribute &a) {
   return v;
 }
 
+void VtuFile::check_rational_weights(const MeshInput &m, std::size_t first_cell,
+                                     const pugi::xml_node &pd, std::size_t np, int64_t base,
+                                     const std::string &where) const {
+  bool bezier = false;
+  for (std::size_t c = first_cell; c < m.num_cells() && !bezier; ++c)
+    bezier = is_bezier(m.kind(c));
+  if (!bezier || !pd)
+    return;
+  const char *named = pd.attribute("RationalWeights").as_string();
+  const pugi::xml_node a = named_array(pd, *named ? named : "RationalWeights");
+  if (!a)
+    return;
+  const PooledVector<double> w = read_doubles(a, np);
+  for (std::size_t c = first_cell; c < m.num_cells(); ++c) {
+    if (!is_bezier(m.kind(c)))
+      continue;
+    for (int64_t i = m.cell_offsets[c]; i < m.cell_offsets[c + 1]; ++i) {
+      const std::size_t local = static_cast<std::size_t>(m.cell_nodes[i] - base);
+      if (w[local] != 1.0)
+        fail(where + ": cell " + std::to_string(c - first_cell) +
+             " is a rational Bezier cell (RationalWeights at point " + std::to_string(local) +
+             " is " + std::to_string(w[local]) +
+             ", not 1): rational cells are not supported (their field is a ratio of two "
+             "polynomials, which hoct's Bernstein bounds do not certify)");
+    }
+  }
+}
+
 std::vector<uint8_t> VtuFile::read_ghost(const pugi::xml_node &data, std::size_t n,
                                          const std::string &where) const {
   const pugi::xml_node a = named_array(data, "vtkGhostType");
@@ -1049,6 +1081,7 @@ MeshInput VtuFile::read() {
     // lattice order and written back at the next free position (never after where they were
     // read: skipped cells only close gaps), so no second array of the connectivity's size.
     const std::size_t start = m.cell_nodes.size();
+    const std::size_t first_cell = m.num_cells();
     if (start == 0) {
       m.cell_nodes = read_ints(ca, static_cast<std::size_t>(nconn));
     } else {
@@ -1070,8 +1103,9 @@ MeshInput VtuFile::read() {
         fail(where + ": cell " + std::to_string(c) + ": offset " + std::to_string(end) +
              " is beyond the connectivity (" + std::to_string(nconn) + " values)");
       int degree = 0;
-      const VtkCellResult r =
-          vtk_cell_nodes(types[c], nodes + begin, end - begin, np, base, cell, &degree, &problem);
+      CellKind kind = CellKind::LagrangeTriangle;
+      const VtkCellResult r = vtk_cell_nodes(types[c], nodes + begin, end - begin, np, base, cell,
+                                             &degree, &kind, &problem);
       if (r == VtkCellResult::Invalid)
         fail(where + ": cell " + std::to_string(c) + problem);
       if (r == VtkCellResult::Skipped) {
@@ -1083,6 +1117,7 @@ MeshInput VtuFile::read() {
       write += n;
       m.cell_offsets.push_back(static_cast<int64_t>(start) + write);
       m.cell_degree.push_back(static_cast<uint8_t>(degree));
+      m.set_kind(m.cell_degree.size() - 1, kind);
       if (!cell_ghost.empty()) {
         arrays_.cell_ghost.push_back(cell_ghost[c]);
         arrays_.ghost_cells += (cell_ghost[c] & kDuplicateGhost) != 0;
@@ -1091,6 +1126,7 @@ MeshInput VtuFile::read() {
       }
     }
     m.cell_nodes.resize(start + static_cast<std::size_t>(write));
+    check_rational_weights(m, first_cell, pd, static_cast<std::size_t>(np), base, where);
     ++piece_index;
     ++read_pieces;
   }
@@ -1103,7 +1139,7 @@ MeshInput VtuFile::read() {
   if (m.num_cells() == 0 && m.points.empty() && skipped == 0 && request_.allow_empty)
     return m;
   if (m.num_cells() == 0)
-    fail(skipped ? "the file has no triangle cells (only " + std::to_string(skipped) +
+    fail(skipped ? "the file has no surface cells (only " + std::to_string(skipped) +
                        " vertex or line cells)"
                  : std::string("the file has no cells"));
   return m;

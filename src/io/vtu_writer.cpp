@@ -2,6 +2,9 @@
 
 #include "io/atomic_file.hpp"
 #include "poly/lagrange_node_order.hpp"
+#include "util/error.hpp"
+
+#include <string>
 
 namespace hoct {
 
@@ -15,12 +18,32 @@ void write_vtu(const std::string &path, const MeshInput &m, VtkEncoding encoding
   std::vector<uint8_t> types(nc);
   for (std::size_t c = 0; c < nc; ++c) {
     const int d = m.cell_degree[c];
-    const auto &perm = node_order_to_lattice(NodeOrdering::Vtk, d);
+    const CellKind kind = m.kind(c);
+    const std::vector<int> *perm = nullptr;
+    switch (kind) {
+    case CellKind::LagrangeTriangle:
+    case CellKind::BezierTriangle:
+      perm = &node_order_to_lattice(NodeOrdering::Vtk, d);
+      types[c] = kind == CellKind::BezierTriangle ? 76 : (d == 1 ? 5 : 69);
+      break;
+    case CellKind::LagrangeQuadrilateral:
+    case CellKind::BezierQuadrilateral:
+      perm = &quad_node_order_to_tensor(NodeOrdering::Vtk, d);
+      types[c] = kind == CellKind::BezierQuadrilateral ? 77 : (d == 1 ? 9 : 70);
+      break;
+    case CellKind::SerendipityQuadrilateral:
+      if (d != 2)
+        throw InputError(path + ": cell " + std::to_string(c) +
+                         " is a serendipity quadrilateral of order " + std::to_string(d) +
+                         ", which VTK has no cell type for (only order 2: VTK_QUADRATIC_QUAD)");
+      perm = &serendipity_node_order(NodeOrdering::Vtk, d);
+      types[c] = 23;
+      break;
+    }
     const int64_t base = m.cell_offsets[c];
-    for (std::size_t i = 0; i < perm.size(); ++i)
-      connectivity[base + i] = m.cell_nodes[base + perm[i]];
+    for (std::size_t i = 0; i < perm->size(); ++i)
+      connectivity[base + i] = m.cell_nodes[base + (*perm)[i]];
     offsets[c] = m.cell_offsets[c + 1];
-    types[c] = d == 1 ? 5 : 69;
   }
   VtkXmlArrays arrays(encoding);
   const std::string name = m.field_name.empty() ? "f" : m.field_name;

@@ -66,6 +66,8 @@ bool reference_position(const Vec3 &p0, const Vec3 &p1, const Vec3 &p2, const Ve
 
 GllResampling resample_gll_cells(MeshInput &in) {
   GllResampling r;
+  if (!in.lagrange_triangles_only())
+    return r; // GLL placement is recognised on meshes of Lagrange triangles only
   const std::size_t nc = in.num_cells();
   std::vector<char> gll(nc, 0);
   std::vector<std::vector<Vec2>> positions(nc);

@@ -2,6 +2,11 @@
 // built from a MeshInput, with every problem found recorded.
 #pragma once
 
+#include <map>
+#include <string>
+#include <utility>
+
+#include "mesh/cell_split.hpp"
 #include "mesh/field.hpp"
 #include "mesh/geometry.hpp"
 #include "mesh/mesh_fingerprint.hpp"
@@ -39,6 +44,17 @@ struct Mesh {
   ProblemLog problems;
   // False if the input was too broken to build topology, field and geometry.
   bool complete = false;
+  // Which input cell each cell comes from: the identity, unless the input had quadrilaterals
+  // (each is two cells here: mesh/cell_split). Results report input cells (compute_tree).
+  CellOrigins origins;
+  // Quadrilaterals and Bezier cells of the input (converted by mesh/cell_split).
+  int64_t input_quadrilaterals = 0, input_bezier_cells = 0;
+  // The input's cells by kind and degree (order, for a quadrilateral), for the reports: e.g.
+  // {(LagrangeQuadrilateral, 3): 9}; empty if the input was too broken to build.
+  std::map<std::pair<CellKind, int>, int64_t> input_cell_kinds;
+  int64_t num_input_cells() const { return origins.num_input_cells(topology.num_cells()); }
+  // "quadrilateral order 3: 9, triangle degree 2: 4" (or "degree 2: 4" for triangles only).
+  std::string describe_input_cells() const;
   MeshBuildTimes build_times;
 };
 

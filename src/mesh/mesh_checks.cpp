@@ -57,16 +57,27 @@ bool check_cell(const MeshInput &in, int64_t c, std::vector<int64_t> &seen, Prob
   const int64_t np = static_cast<int64_t>(in.points.size());
   const int d = in.cell_degree[c];
   const int64_t n = in.cell_offsets[c + 1] - in.cell_offsets[c];
-  if (d < 1 || n != lattice_size(d)) {
-    problems.add(Problem::BadCell, "cell " + std::to_string(c) + " has degree " +
-                                       std::to_string(d) + " but " + std::to_string(n) + " nodes");
+  const CellKind kind = in.kind(static_cast<std::size_t>(c));
+  if (static_cast<uint8_t>(kind) > static_cast<uint8_t>(CellKind::SerendipityQuadrilateral)) {
+    problems.add(Problem::BadCell, "cell " + std::to_string(c) + " has an unknown kind " +
+                                       std::to_string(static_cast<int>(kind)));
     return false;
   }
-  // The conversions to Bernstein form (and the per-edge buffers of Field) stop at kMaxDegree.
-  if (d > kMaxDegree) {
-    problems.add(Problem::UnsupportedDegree, "cell " + std::to_string(c) + " has degree " +
-                                                 std::to_string(d) + " (at most " +
-                                                 std::to_string(kMaxDegree) + " supported)");
+  const bool quad = is_quadrilateral(kind);
+  if (d < 1 || n != cell_node_count(kind, d) ||
+      (kind == CellKind::SerendipityQuadrilateral && d < 2)) {
+    problems.add(Problem::BadCell, "cell " + std::to_string(c) + " (" + cell_kind_name(kind) +
+                                       ") has degree " + std::to_string(d) + " but " +
+                                       std::to_string(n) + " nodes");
+    return false;
+  }
+  // The conversions to Bernstein form (and the per-edge buffers of Field) stop at kMaxDegree; a
+  // quadrilateral of bidegree (p, p) becomes triangles of degree 2p (mesh/cell_split).
+  if ((quad ? 2 * d : d) > kMaxDegree) {
+    problems.add(Problem::UnsupportedDegree,
+                 "cell " + std::to_string(c) + " has degree " + std::to_string(d) + " (at most " +
+                     std::to_string(quad ? kMaxDegree / 2 : kMaxDegree) + " supported for a " +
+                     cell_kind_name(kind) + ")");
     return false;
   }
   bool ok = true;
@@ -105,7 +116,7 @@ bool check_input(const MeshInput &in, ProblemLog &problems, int threads) {
     return false;
   }
   if (in.cell_degree.empty()) {
-    problems.add(Problem::EmptyMesh, "the mesh has no triangle cells");
+    problems.add(Problem::EmptyMesh, "the mesh has no cells");
     return false;
   }
   // Points, then cells, in fixed blocks on threads (problems appended in block order).

@@ -32,6 +32,15 @@ InputFingerprint mesh_fingerprint(const MeshInput &input) {
   }
   h.add(input.cell_nodes.size());
   h.add_words(input.cell_nodes.data(), input.cell_nodes.size());
+  // The kinds, where any cell is not a Lagrange triangle (a mesh of those alone keeps the
+  // fingerprint it always had).
+  if (!input.lagrange_triangles_only())
+    for (std::size_t c = 0; c < nd; c += 8) {
+      uint64_t w = 0;
+      for (std::size_t k = 0; k < 8 && c + k < nd; ++k)
+        w |= static_cast<uint64_t>(input.cell_kind[c + k]) << (8 * k);
+      h.add(w);
+    }
   InputFingerprint f;
   f.points = static_cast<int64_t>(input.points.size());
   f.cells = static_cast<int64_t>(input.cell_degree.size());

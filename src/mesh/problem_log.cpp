@@ -52,6 +52,12 @@ void ProblemLog::append(const ProblemLog &later) {
   }
 }
 
+void ProblemLog::rewrite_examples(const std::function<std::string(const std::string &)> &rewrite) {
+  for (auto &[kind, k] : kinds_)
+    for (std::string &e : k.examples)
+      e = rewrite(e);
+}
+
 bool ProblemLog::has_errors() const {
   for (const auto &[kind, k] : kinds_)
     if (k.severity == Severity::Error)

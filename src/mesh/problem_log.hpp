@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <string>
 #include <vector>
@@ -69,6 +70,8 @@ public:
   bool empty() const { return kinds_.empty(); }
   int64_t count(Problem kind) const;
   const std::map<Problem, ProblemRecord> &kinds() const { return kinds_; }
+  // Rewrites every kept message (e.g. to name the input's cells instead of the mesh's).
+  void rewrite_examples(const std::function<std::string(const std::string &)> &rewrite);
   // Multi-line human-readable summary ("error: 3 x non-manifold edge ..."), errors first.
   std::string summary() const;
 

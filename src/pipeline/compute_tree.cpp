@@ -52,6 +52,19 @@ TreeResult method_tree(const Mesh &mesh, const TreeRequest &rq, const MeshInput 
   return tree;
 }
 
+// The nodes' cells as the input's (a quadrilateral, not one of its two triangles: mesh/cell_split).
+// A tree of the input's own linear cells (the linear method) names them already.
+void to_input_cells(TreeResult &tree, const CellOrigins &origins) {
+  if (origins.identity())
+    return;
+  for (TreeNode &n : tree.nodes)
+    if (n.cell >= 0) {
+      const CellPlace p = origins.to_input(n.cell, n.uv);
+      n.cell = p.cell;
+      n.uv = p.uv;
+    }
+}
+
 } // namespace
 
 std::string method_name(const TreeRequest &rq) {
@@ -80,7 +93,8 @@ TreeOutcome compute_tree(const Mesh &mesh, const TreeRequest &rq, const MeshInpu
     decompose_branches(tree);
   tree.forced = out.warnings;
   tree.input = mesh.fingerprint;
-  tree.stats.input_cells = mesh.topology.num_cells();
+  tree.stats.input_cells =
+      mesh.origins.identity() ? mesh.topology.num_cells() : mesh.origins.num_input_cells();
   tree.stats.time.read = rq.read_seconds;
   tree.stats.time.check = rq.build_seconds;
   tree.stats.time.bernstein = mesh.build_times.field;
@@ -96,6 +110,11 @@ TreeOutcome compute_tree(const Mesh &mesh, const TreeRequest &rq, const MeshInpu
     compute_arc_paths(tree, threads);
   if (out.simplified && (rq.arcs == ArcGeometry::AllPaths || rq.arcs == ArcGeometry::Paths))
     compute_arc_paths(*out.simplified, threads);
+  if (rq.method != TreeMethod::Linear) {
+    to_input_cells(tree, mesh.origins);
+    if (out.simplified)
+      to_input_cells(*out.simplified, mesh.origins);
+  }
   out.tree = std::move(tree);
   return out;
 }

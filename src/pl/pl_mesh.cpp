@@ -1,5 +1,7 @@
 #include "pl/pl_mesh.hpp"
 
+#include "mesh/cell_split.hpp"
+
 #include "poly/lattice.hpp"
 
 namespace hoct {
@@ -28,7 +30,9 @@ MeshInput to_mesh_input(const PlMesh &pl) {
   return m;
 }
 
-PlMesh split_lagrange_cells(const MeshInput &in) {
+namespace {
+
+PlMesh split_nodal_cells(const MeshInput &in) {
   PlMesh m;
   m.points.assign(in.points.begin(), in.points.end());
   m.values.assign(in.values.begin(), in.values.end());
@@ -37,6 +41,21 @@ PlMesh split_lagrange_cells(const MeshInput &in) {
   for (std::size_t c = 0; c < in.num_cells(); ++c) {
     const int d = in.cell_degree[c];
     const int64_t *nodes = &in.cell_nodes[in.cell_offsets[c]];
+    if (in.kind(c) == CellKind::LagrangeQuadrilateral) {
+      // The tensor grid's d^2 squares, each cut along its (i, j)-(i+1, j+1) diagonal.
+      auto at = [&](int i, int j) { return nodes[i + (d + 1) * j]; };
+      for (int j = 0; j <= d; ++j)
+        for (int i = 0; i <= d; ++i) {
+          m.source_cell[at(i, j)] = static_cast<int64_t>(c);
+          m.source_uv[at(i, j)] = {static_cast<double>(i) / d, static_cast<double>(j) / d};
+        }
+      for (int j = 0; j < d; ++j)
+        for (int i = 0; i < d; ++i) {
+          m.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+          m.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+        }
+      continue;
+    }
     for (int i = 0; i < lattice_size(d); ++i) {
       const auto p = lattice_point(d, i);
       m.source_cell[nodes[i]] = static_cast<int64_t>(c);
@@ -53,6 +72,17 @@ PlMesh split_lagrange_cells(const MeshInput &in) {
       }
   }
   return m;
+}
+
+} // namespace
+
+PlMesh split_lagrange_cells(const MeshInput &in) {
+  if (in.lagrange_triangles_only())
+    return split_nodal_cells(in);
+  // Bezier cells through their values at the nodes' places, serendipity cells with their
+  // interior nodes interpolated (mesh/cell_split); the build reported any inconsistency.
+  ProblemLog ignored;
+  return split_nodal_cells(nodal_cells(in, ignored));
 }
 
 } // namespace hoct

@@ -33,7 +33,10 @@ struct PlMesh {
 MeshInput to_mesh_input(const PlMesh &pl);
 
 // Each Lagrange cell of degree d split into d^2 linear triangles through its nodes (the "linear
-// interpretation" of the input's nodes).
+// interpretation" of the input's nodes); a quadrilateral of bidegree (d, d) into 2 d^2, each
+// square of its node grid cut along the diagonal from its (i, j) node to its (i+1, j+1) node
+// (Bezier and serendipity cells through nodal_cells: mesh/cell_split.hpp). Vertices name the
+// input cell and their (u, v) or (s, t) in it.
 PlMesh split_lagrange_cells(const MeshInput &input);
 
 } // namespace hoct

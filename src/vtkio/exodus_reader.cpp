@@ -126,9 +126,10 @@ public:
     vtk[9] = n[6];
     int64_t lattice[kMaxVtkCellNodes];
     int degree = 0;
+    CellKind kind = CellKind::LagrangeTriangle;
     std::string problem;
     vtk_cell_nodes(69, vtk.data(), 10, static_cast<int64_t>(m_.points.size()), 0, lattice, &degree,
-                   &problem);
+                   &kind, &problem);
     m_.add_cell(3, lattice);
   }
 
@@ -300,14 +301,18 @@ MeshInput read_exodus(const std::string &path, const FieldSelection &field,
     if (type.rfind("BAR", 0) == 0 || type.rfind("BEAM", 0) == 0 || type.rfind("TRUSS", 0) == 0 ||
         type.rfind("EDGE", 0) == 0 || type.rfind("SPHERE", 0) == 0 || type.rfind("CIRCLE", 0) == 0)
       continue;
+    // Exodus numbers TRI3/TRI6 and QUAD4/QUAD8/QUAD9 nodes as VTK does its types 5, 22, 9, 23
+    // and 28 (corners, then edge midpoints from edge 1-2 on, then the centre).
     const bool triangle = type.rfind("TRI", 0) == 0;
-    if (!triangle || (k != 3 && k != 6 && k != 7))
-      throw InputError(where + ": not triangles of 3, 6 or 7 nodes (" + std::to_string(k) +
-                       " nodes per element); hoct reads triangle meshes");
+    const bool quad = type.rfind("QUAD", 0) == 0 || type.rfind("SHELL", 0) == 0;
+    if (!(triangle && (k == 3 || k == 6 || k == 7)) && !(quad && (k == 4 || k == 8 || k == 9)))
+      throw InputError(where + ": not triangles of 3, 6 or 7 nodes or quadrilaterals of 4, 8 or " +
+                       "9 nodes (" + std::to_string(k) + " nodes per element)");
+    const int vtk_type = triangle ? (k == 3 ? 5 : 22) : (k == 4 ? 9 : (k == 8 ? 23 : 28));
     node_ids.assign(static_cast<std::size_t>(block.num_entry * k), 0);
     check(ex_get_conn(f.id, EX_ELEM_BLOCK, ids[bi], node_ids.data(), nullptr, nullptr), where,
           "connectivity");
-    int64_t cell[7];
+    int64_t cell[9];
     for (int64_t e = 0; e < block.num_entry; ++e) {
       for (int64_t j = 0; j < k; ++j) {
         const int64_t id = node_ids[static_cast<std::size_t>(e * k + j)] - 1;
@@ -322,13 +327,13 @@ MeshInput read_exodus(const std::string &path, const FieldSelection &field,
         continue;
       }
       std::string problem;
-      if (add_vtk_cell(m, k == 3 ? 5 : 22, cell, k, nodes, 0, &problem) != VtkCellResult::Added)
+      if (add_vtk_cell(m, vtk_type, cell, k, nodes, 0, &problem) != VtkCellResult::Added)
         throw InputError(where + ": element " + std::to_string(e + 1) + problem);
     }
   }
   if (m.num_cells() == 0)
-    throw InputError(path + ": no triangle elements in its " + std::to_string(ids.size()) +
-                     " element block(s)");
+    throw InputError(path + ": no triangle or quadrilateral elements in its " +
+                     std::to_string(ids.size()) + " element block(s)");
   drop_unused_points(m);
   return m;
 }

@@ -3,6 +3,7 @@
 #include "io/external_reader.hpp"
 #include "io/piece_join.hpp"
 #include "io/pvtu_reader.hpp"
+#include "io/vtk_cells.hpp"
 #include "util/error.hpp"
 #include "vtkio/exodus_reader.hpp"
 #include "vtkio/grid_input.hpp"
@@ -357,8 +358,7 @@ MeshInput read_piece(const std::string &path, const FieldSelection &field, const
   MeshPiece &p = r.pieces.front();
   check_memory(limits, p.input.num_points(), p.input.num_cells(), p.input.cell_nodes.size(), path);
   if (p.input.num_cells() == 0 && !(request.allow_empty && p.input.points.empty()))
-    throw InputError(path + ": no triangle cells (VTK_TRIANGLE 5, VTK_QUADRATIC_TRIANGLE 22 or "
-                            "VTK_LAGRANGE_TRIANGLE 69)");
+    throw InputError(path + ": " + kVtkSurfaceCells);
   arrays = std::move(p.arrays);
   p.input.source = path;
   return std::move(p.input);
@@ -384,10 +384,7 @@ MeshInput read_vtk_file(const std::string &path, const FieldSelection &field,
   }
   check_memory(limits, points, cells, nodes, path);
   if (cells == 0)
-    throw InputError(path +
-                     ": no triangle cells (VTK_TRIANGLE 5, VTK_QUADRATIC_TRIANGLE 22 or "
-                     "VTK_LAGRANGE_TRIANGLE 69) in what " +
-                     vtk_name() + " read");
+    throw InputError(path + ": " + kVtkSurfaceCells + " in what " + vtk_name() + " read");
   MeshInput m;
   if (r.pieces.size() == 1) { // one grid: read as it is, ghost cells kept (a piece read alone)
     const VtuPieceArrays &a = r.pieces.front().arrays;

@@ -26,7 +26,7 @@ const std::vector<VtkFormat> &vtk_formats();
 // the compressors hoct's reader lacks). The field and time step follow `field`
 // (MeshInput::field_detail names the step of a file with several); `contents`, if given, receives
 // the point arrays and time steps. VTK's errors become hoct::InputError "<path>: ..." with VTK's
-// message; a file with no triangle cells, or no point array to read, is an error that says what
+// message; a file with no surface cells, or no point array to read, is an error that says what
 // the file holds.
 MeshInput read_vtk_file(const std::string &path, const FieldSelection &field = {},
                         const ReadLimits &limits = {}, FileContents *contents = nullptr);

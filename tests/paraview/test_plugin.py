@@ -378,11 +378,11 @@ def main():
     check(reasons is not None and reasons.GetNumberOfValues() == len(tree["forced_reasons"]) and
           "separate components" in reasons.GetValue(0), "two components, Force: ForcedReasons")
     pv.Delete(f)
-    check_error("quad", grid_source(tri + [(1, 1, 0)], [(9, [0, 1, 3, 2])], [0, 1, 2, 3]),
-                "cell 0 has VTK cell type 9, which is not a triangle")
+    check_error("tetrahedron", grid_source(tri + [(0, 0, 1)], [(10, [0, 1, 2, 3])], [0, 1, 2, 3]),
+                "cell 0 has VTK cell type 10, which is not a supported surface cell")
     check_error("NaN", grid_source(tri, [(5, [0, 1, 2])], [0, float("nan"), 2]),
                 "point 1 has a non-finite value of 'f'")
-    check_error("no triangles", grid_source(tri, [(3, [0, 1])], [0, 1, 2]), "no triangle cells")
+    check_error("no triangles", grid_source(tri, [(3, [0, 1])], [0, 1, 2]), "no surface cells")
     check_default_scalar(data["gauss"][0])
     check_empty()
 

@@ -48,10 +48,10 @@ def test_several_triangle_blocks_and_skipped_lines(cubic):
                                  ("VTK_LAGRANGE_TRIANGLE", cells[half:])],
                       point_data=m.point_data)
     assert same_tree(hoct.contour_tree(hoct.from_meshio(two)), tree)
-    quads = meshio.Mesh(m.points, [("quad", cells[:3, :4])], point_data=m.point_data)
-    with pytest.raises(hoct.HoctError, match="cell block 0 is of type 'quad': hoct reads triangles"):
-        hoct.from_meshio(quads)
-    with pytest.raises(hoct.HoctError, match="no triangle blocks"):
+    tets = meshio.Mesh(m.points, [("tetra", cells[:3, :4])], point_data=m.point_data)
+    with pytest.raises(hoct.HoctError, match="cell block 0 is of type 'tetra': hoct reads triangles"):
+        hoct.from_meshio(tets)
+    with pytest.raises(hoct.HoctError, match="no triangle or quadrilateral blocks"):
         hoct.from_meshio(meshio.Mesh(m.points, [("line", cells[:5, :2])], point_data=m.point_data))
 
 

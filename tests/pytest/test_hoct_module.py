@@ -107,7 +107,7 @@ def test_numpy_and_meshio_input(tmp):
 
 @pytest.mark.parametrize("call,phrase", [
     (lambda: hoct.read("/nonexistent/x.vtu"), "cannot open"),
-    (lambda: hoct.from_arrays(np.zeros((3, 2)), [[0, 1]], np.zeros(3)), "not a complete triangle"),
+    (lambda: hoct.from_arrays(np.zeros((3, 2)), [[0, 1]], np.zeros(3)), "neither a complete triangle"),
     (lambda: hoct.from_arrays(np.zeros((3, 2)), [[0, 1, 7]], np.zeros(3)), "refers to point 7"),
     (lambda: hoct.from_arrays(np.zeros((3, 2)), [[0, 1, 2]], np.zeros(3), degree=2), "degree 2 needs 6"),
     (lambda: hoct.from_arrays(np.zeros((3, 2)), [[0, 1, 2]], np.zeros(3), cell_types=[22]), "VTK type 22"),

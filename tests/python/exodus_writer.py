@@ -1,12 +1,12 @@
 """A small Exodus II writer for the tests (netCDF through python3-netcdf4): one element block of
-TRI3, TRI6, TRI7 (or BAR2) elements and nodal fields at several times, laid out as the SEACAS
+TRI3, TRI6, TRI7, QUAD4, QUAD8, QUAD9 (or BAR2) elements and nodal fields at several times, laid out as the SEACAS
 Exodus library writes its files (separate coordx/coordy, 1-based connect1 with its elem_type,
 one vals_nod_varN per field). Exodus and VTK order a quadratic triangle's nodes alike: corners,
 then the midpoints of edges 01, 12, 20; TRI7 adds the centroid."""
 import netCDF4
 import numpy as np
 
-NODES = {"TRI3": 3, "TRI6": 6, "TRI7": 7, "BAR2": 2}
+NODES = {"TRI3": 3, "TRI6": 6, "TRI7": 7, "BAR2": 2, "QUAD4": 4, "QUAD8": 8, "QUAD9": 9}
 
 
 def write_exodus(path, points, cells, kind, fields, times=(0.0,)):

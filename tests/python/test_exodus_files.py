@@ -22,7 +22,7 @@ from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
 from vtkmodules.vtkCommonCore import vtkPoints
 from vtkmodules.vtkCommonDataModel import VTK_QUADRATIC_TRIANGLE, vtkUnstructuredGrid
 from vtkmodules.vtkIOExodus import vtkExodusIIWriter
-from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
+from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader, vtkXMLUnstructuredGridWriter
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from hoct_testing import Results, compare_trees, evaluate, run, tempdir, tree_json  # noqa: E402
@@ -136,8 +136,43 @@ with tempdir() as d:
     edges = np.array([[int(c[0]), int(c[1])] for c in cells])
     write_exodus(p("bars.e"), points[:, :2], edges, "BAR2", {field: [values]})
     res = run("tree", p("bars.e"), check=False)
-    r.check(res.returncode == 1 and "no triangle elements in its 1 element block" in res.stderr,
+    r.check(res.returncode == 1 and
+            "no triangle or quadrilateral elements in its 1 element block" in res.stderr,
             f"BAR2 only: {res.returncode} {res.stderr.strip()[:300]}")
+
+    # Quadrilaterals (MOOSE and SEACAS write QUAD4, QUAD8, QUAD9): a 4 x 4 grid of biquadratic
+    # cells of the unit square carrying a biquadratic field, against the .vtu of the same cells
+    # (VTK_BIQUADRATIC_QUAD 28, written by VTK); QUAD8 of a field in its (serendipity) space
+    # too; QUAD4 through vtkExodusIIWriter against VTK_QUAD in a .vtu.
+    m = 8
+    qp = np.array([[i / m, j / m] for j in range(m + 1) for i in range(m + 1)])
+    gid = lambda i, j: i + (m + 1) * j  # noqa: E731
+    q9 = np.array([[gid(a, b), gid(a + 2, b), gid(a + 2, b + 2), gid(a, b + 2), gid(a + 1, b),
+                    gid(a + 2, b + 1), gid(a + 1, b + 2), gid(a, b + 1), gid(a + 1, b + 1)]
+                   for b in range(0, m, 2) for a in range(0, m, 2)])
+    x, y = qp[:, 0], qp[:, 1]
+    fq = (x - 0.37) * (x - 0.81) * (y + 0.3) * (y - 0.58) + 0.2 * x * x * y
+    fs = (x - 0.37) * (x - 0.81) * (y + 0.3) + 0.4 * (y - 0.58) ** 2 * x + 0.1 * y
+    for kind, conn, vtk_type, fv in (("QUAD9", q9, 28, fq), ("QUAD8", q9[:, :8], 23, fs)):
+        g = vtkUnstructuredGrid()
+        pts = vtkPoints()
+        pts.SetData(numpy_to_vtk(np.hstack([qp, np.zeros((len(qp), 1))]), deep=True))
+        g.SetPoints(pts)
+        for c in conn:
+            g.InsertNextCell(vtk_type, len(c), [int(i) for i in c])
+        arr = numpy_to_vtk(np.asarray(fv, dtype=np.float64), deep=True)
+        arr.SetName("f")
+        g.GetPointData().AddArray(arr)
+        vw = vtkXMLUnstructuredGridWriter()
+        vw.SetFileName(p(f"{kind}.vtu"))
+        vw.SetInputData(g)
+        vw.Write()
+        write_exodus(p(f"{kind}.e"), qp, conn, kind, {"f": [fv]})
+        jq, res = tree_json(p(f"{kind}.e"))
+        kq, _ = tree_json(p(f"{kind}.vtu"))
+        r.check(len(kq["nodes"]) >= 4 and jq["input"]["cells"] == len(conn),
+                f"{kind}: {len(kq['nodes'])} nodes, {jq['input']['cells']} cells")
+        same_tree(f"Exodus {kind} vs VTK type {vtk_type} .vtu", jq, kq, 1e-12, 1e-12)
 
     # Truncated files: a clear error, never a crash.
     data = open(p("steps.exo"), "rb").read()

@@ -1,6 +1,6 @@
-// io/vtk_cells: VTK triangle cells become MeshInput cells whose nodes sit where the canonical
-// lattice says (checked by position against VTK's documented node layouts), other cells are
-// skipped or refused with a clear reason.
+// io/vtk_cells: VTK triangle and quadrilateral cells become MeshInput cells whose nodes sit where
+// the canonical order says (checked by position against VTK's documented node layouts), other cells
+// are skipped or refused with a clear reason.
 #include "io/vtk_cells.hpp"
 #include "poly/lattice.hpp"
 
@@ -53,6 +53,67 @@ TEST(VtkCells, NodeLayoutsByPosition) {
                             {t, t, 0}});
 }
 
+// The same for a quadrilateral: the tensor node i + (p+1) j must sit at (i/p, j/p).
+void expect_tensor_positions(int64_t type, int p, CellKind kind,
+                             const std::vector<Vec3> &vtk_points) {
+  MeshInput m;
+  const int64_t n = static_cast<int64_t>(vtk_points.size());
+  m.points.assign(vtk_points.rbegin(), vtk_points.rend());
+  std::vector<int64_t> ids;
+  for (int64_t i = 0; i < n; ++i)
+    ids.push_back(n - 1 - i);
+  std::string problem;
+  ASSERT_EQ(add_vtk_cell(m, type, ids.data(), n, n, 0, &problem), VtkCellResult::Added) << problem;
+  ASSERT_EQ(m.num_cells(), 1u);
+  EXPECT_EQ(m.cell_degree[0], p);
+  EXPECT_EQ(m.kind(0), kind);
+  int k = 0;
+  for (int j = 0; j <= p; ++j)
+    for (int i = 0; i <= p; ++i) {
+      const bool boundary = i == 0 || j == 0 || i == p || j == p;
+      if (kind == CellKind::SerendipityQuadrilateral && !boundary)
+        continue;
+      const Vec3 &x = m.points[m.cell_nodes[k++]];
+      EXPECT_NEAR(x[0], double(i) / p, 1e-15) << "type " << type << " node " << i << "," << j;
+      EXPECT_NEAR(x[1], double(j) / p, 1e-15) << "type " << type << " node " << i << "," << j;
+    }
+}
+
+TEST(VtkCells, QuadrilateralLayoutsByPosition) {
+  // VTK_QUAD: counterclockwise corners.
+  expect_tensor_positions(9, 1, CellKind::LagrangeQuadrilateral,
+                          {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}});
+  // VTK_LAGRANGE_QUADRILATERAL of order 3 (vtkHigherOrderQuadrilateral's numbering): corners,
+  // the nodes of edges (0,0)-(1,0), (1,0)-(1,1), (0,1)-(1,1), (0,0)-(0,1), each along increasing
+  // s or t, then the interior, s fastest.
+  const double t = 1.0 / 3, u = 2.0 / 3;
+  expect_tensor_positions(70, 3, CellKind::LagrangeQuadrilateral,
+                          {{0, 0, 0},
+                           {1, 0, 0},
+                           {1, 1, 0},
+                           {0, 1, 0},
+                           {t, 0, 0},
+                           {u, 0, 0},
+                           {1, t, 0},
+                           {1, u, 0},
+                           {t, 1, 0},
+                           {u, 1, 0},
+                           {0, t, 0},
+                           {0, u, 0},
+                           {t, t, 0},
+                           {u, t, 0},
+                           {t, u, 0},
+                           {u, u, 0}});
+  // VTK_QUADRATIC_QUAD: corners, then the midpoints of edges 01, 12, 23, 30.
+  const std::vector<Vec3> q8 = {{0, 0, 0},  {1, 0, 0},  {1, 1, 0},  {0, 1, 0},
+                                {.5, 0, 0}, {1, .5, 0}, {.5, 1, 0}, {0, .5, 0}};
+  expect_tensor_positions(23, 2, CellKind::SerendipityQuadrilateral, q8);
+  // VTK_BIQUADRATIC_QUAD: the same and the centre.
+  std::vector<Vec3> q9 = q8;
+  q9.push_back({.5, .5, 0});
+  expect_tensor_positions(28, 2, CellKind::LagrangeQuadrilateral, q9);
+}
+
 TEST(VtkCells, BaseOffsetsIds) {
   MeshInput m;
   const int64_t ids[3] = {0, 1, 2};
@@ -74,7 +135,10 @@ TEST(VtkCells, SkipsVerticesAndLinesRefusesTheRest) {
     EXPECT_NE(problem.find(why), std::string::npos) << problem;
     EXPECT_EQ(m.num_cells(), 0u);
   };
-  refused(9, 4, 10, "VTK cell type 9, which is not a triangle");
+  refused(10, 4, 10, "VTK cell type 10, which is not a supported surface cell");
+  refused(70, 8, 10, "HigherOrderDegrees");
+  refused(9, 5, 10, "of type 9 has 5 nodes");
+  refused(23, 9, 10, "has 9 nodes, not 8");
   refused(22, 7, 10, "of type 22 has 7 nodes");
   refused(69, 7, 10, "'bubble' triangle");
   refused(69, 8, 10, "not a complete triangle");

@@ -327,8 +327,9 @@ TEST(VtuReader, MalformedFilesGiveClearErrors) {
                }),
                "cell 0: offset 15 is beyond the connectivity (12 values)");
   expect_error(tmp, with([](Fixture &f) { f.offsets = "6"; }), "has 1 values, expected 2");
-  expect_error(tmp, with([](Fixture &f) { f.types = "22 9"; }),
-               "VTK cell type 9, which is not a triangle");
+  expect_error(tmp, with([](Fixture &f) { f.types = "22 10"; }),
+               "VTK cell type 10, which is not a supported surface cell");
+  expect_error(tmp, with([](Fixture &f) { f.types = "22 9"; }), "of type 9 has 6 nodes");
   expect_error(tmp, with([](Fixture &f) { f.types = "22 5"; }), "cell 1 of type 5 has 6 nodes");
   expect_error(tmp, with([](Fixture &f) {
                  f.conn = "0 1 2 4 5 6 7 0 2 3 6 7 8";

@@ -1,5 +1,6 @@
 #include "hoct_vtk_convert.h"
 
+#include "io/vtk_cells.hpp"
 #include "util/error.hpp"
 #include "vtkio/grid_input.hpp"
 
@@ -79,8 +80,7 @@ MeshInput mesh_input_from_grid(vtkUnstructuredGrid *grid, vtkDataArray *scalar) 
     fail("no point scalar array selected");
   MeshPiece piece = vtkio::grid_piece(grid, scalar, FieldSelection::kScalar, "the input grid");
   if (piece.input.num_cells() == 0)
-    fail("no triangle cells (VTK_TRIANGLE 5, VTK_QUADRATIC_TRIANGLE 22 or VTK_LAGRANGE_TRIANGLE "
-         "69)");
+    fail(kVtkSurfaceCells);
   return std::move(piece.input);
 }
 
