@@ -31,7 +31,8 @@ namespace {
 struct Settings {
   int runs = 5;
   bool quick = false;
-  std::vector<std::string> sections = {"datasets", "scaling", "density", "plateau", "memory", "pl"};
+  std::vector<std::string> sections = {"datasets", "scaling", "density", "plateau",
+                                       "quads",    "memory",  "pl"};
   std::vector<int> degrees = {2, 3, 5};
   std::vector<double> sizes = {1e4, 1e5, 1e6, 4e6};
   std::vector<int> threads = {1, 2};
@@ -249,6 +250,65 @@ void plateau_section(const Settings &s) {
   std::printf("\n");
 }
 
+// Quadrilaterals against triangles of the same order on the same grid (`random --quads`: each
+// rectangle one quadrilateral of order p, or two triangles of degree p: the same nodes, so the
+// time ratio is the ratio of times per degree of freedom), runs interleaved; and the peak memory
+// of each in a process of its own.
+void quads_section(const Settings &s) {
+  const int runs = s.quick ? s.runs : std::min(std::max(s.runs, 3), 5);
+  const std::vector<double> sizes =
+      s.quick ? std::vector<double>{1e4} : std::vector<double>{1e5, 1e6};
+  std::printf("## Quadrilaterals: `random --quads --degree P` against `random --degree P` on the "
+              "same grid (twice the cells: the same nodes), `hoct tree FILE.vtu --json J`, 1 "
+              "thread (seconds, medians of %d interleaved runs; peak memory: GNU time's maximum "
+              "resident set of `--threads 1`, per input cell)\n\n",
+              runs);
+  std::printf("| order | quadrilaterals | triangles | nodes | quads: mesh | quads: tree | quads: "
+              "total | triangles: mesh | triangles: tree | triangles: total | time per node, "
+              "quads / triangles | quads: peak MiB (bytes per cell) | triangles: peak MiB (bytes "
+              "per cell) |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+  for (int p : {2, 3})
+    for (double size : sizes) {
+      ScratchDir scratch;
+      const std::string qv = scratch.file("quads.vtu"), tv = scratch.file("triangles.vtu");
+      DatasetOptions o;
+      o.cells = static_cast<long long>(size);
+      o.degree = p;
+      o.quadrilaterals = true;
+      long long quads = 0, nodes = 0;
+      {
+        const MeshInput in = generate_dataset("random", o);
+        quads = static_cast<long long>(in.num_cells());
+        nodes = static_cast<long long>(in.num_points());
+        write_vtu(qv, in);
+      }
+      const long long tris = write_random(tv, 2 * size, p);
+      std::vector<PipelineResult> rq, rt;
+      for (int i = 0; i < runs; ++i) {
+        rq.push_back(run_pipeline(qv, 1, false, scratch));
+        rt.push_back(run_pipeline(tv, 1, false, scratch));
+      }
+      std::vector<double> ratios;
+      for (int i = 0; i < runs; ++i)
+        ratios.push_back(rq[static_cast<std::size_t>(i)].total /
+                         rt[static_cast<std::size_t>(i)].total);
+      const PipelineResult q = median_of(rq), t = median_of(rt);
+      auto peak = [&](const std::string &vtu) {
+        return run_process({executable_dir() + "/hoct", "tree", vtu, "--json",
+                            scratch.file("cli.json"), "--threads", "1", "-q"});
+      };
+      const ProcessPeak pq = peak(qv), pt = peak(tv);
+      std::printf("| %d | %lld | %lld | %lld | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f | %.2fx | "
+                  "%.0f (%.0f) | %.0f (%.0f) |\n",
+                  p, quads, tris, nodes, q.mesh, q.tree, q.total, t.mesh, t.tree, t.total,
+                  median(std::move(ratios)), pq.max_rss_kib / 1024.0,
+                  1024.0 * pq.max_rss_kib / static_cast<double>(quads), pt.max_rss_kib / 1024.0,
+                  1024.0 * pt.max_rss_kib / static_cast<double>(tris));
+      std::fflush(stdout);
+    }
+  std::printf("\n");
+}
+
 // Peak memory of `hoct tree FILE.vtu --json J --threads 1` in a process of its own (GNU time).
 void memory_section(const Settings &s) {
   std::printf("## Peak memory of `hoct tree FILE.vtu --json J` (random fields; GNU time's maximum "
@@ -378,7 +438,7 @@ int main(int argc, char **argv) {
       ->check(CLI::Range(1, 1000));
   app.add_flag("--quick", s.quick, "A smoke run: small sizes, few runs");
   app.add_option("--sections", s.sections,
-                 "Sections to run: datasets, scaling, density, plateau, memory, pl")
+                 "Sections to run: datasets, scaling, density, plateau, quads, memory, pl")
       ->delimiter(',');
   app.add_option("--degrees", s.degrees, "Degrees of the scaling, density and memory sections")
       ->delimiter(',');
@@ -401,6 +461,8 @@ int main(int argc, char **argv) {
     scaling_section(s, true);
   if (wants(s, "plateau"))
     plateau_section(s);
+  if (wants(s, "quads"))
+    quads_section(s);
   if (wants(s, "memory"))
     memory_section(s);
   if (wants(s, "pl"))

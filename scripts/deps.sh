@@ -15,6 +15,11 @@ HOCT_PACKAGES=(
   # DOLFINx: the tests read the files it writes (.vtu, .pvtu, XDMF), written by it
   python3-dolfinx
 )
+# Opt-in (about 125 packages, 1.2 GB): deal.II 9.4, for tests/python/test_dealii_files.py, which
+# reads the files deal.II writes and is skipped without it.
+if [ "${HOCT_WITH_DEALII:-0}" = 1 ]; then
+  HOCT_PACKAGES+=(libdeal.ii-dev)
+fi
 
 ensure_packages() {
   local missing=()

@@ -25,6 +25,7 @@ struct GenerateOptions {
   double plateau = 0;
   double scale = 1, offset = 0;
   bool list = false;
+  bool quads = false;
 };
 
 const std::map<std::string, VtkEncoding> &encodings() {
@@ -73,6 +74,7 @@ void run_generate(const GenerateOptions &o) {
   options.plateau = o.plateau;
   options.scale = o.scale;
   options.offset = o.offset;
+  options.quadrilaterals = o.quads;
   const MeshInput mesh = generate_dataset(o.name, options);
   const double generated = clock.lap();
   write_vtu(o.output, mesh, encoding);
@@ -115,6 +117,9 @@ void register_generate(CLI::App &app) {
   sub->add_option("--encoding", o->encoding,
                   "VTU encoding: ascii, base64, zlib, appended (default), appended-base64")
       ->check(CLI::IsMember({"ascii", "base64", "zlib", "appended", "appended-base64"}));
+  sub->add_flag("--quads", o->quads,
+                "random only: Lagrange quadrilaterals of order --degree (VTK type 70) instead of "
+                "triangles, on the same grid");
   sub->add_flag("--list", o->list, "List the datasets with a one-line description each");
   sub->callback([o] { run_generate(*o); });
 }

@@ -42,6 +42,8 @@ std::string dataset_source(const std::string &name, const DatasetOptions &o, int
     std::snprintf(f, sizeof f, " plateau=%g", o.plateau);
     s += f;
   }
+  if (o.quadrilaterals)
+    s += " quads";
   if (o.scale != 1 || o.offset != 0) {
     char f[64];
     std::snprintf(f, sizeof f, " scale=%.17g offset=%.17g", o.scale, o.offset);

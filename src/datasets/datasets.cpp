@@ -61,6 +61,8 @@ MeshInput generate_dataset(const std::string &name, const DatasetOptions &option
     if (e.name == name) {
       if (options.frequency != 1 && name != "random")
         throw Error(name + ": --frequency applies to the random dataset only");
+      if (options.quadrilaterals && name != "random")
+        throw Error(name + ": --quads applies to the random dataset only");
       if (options.plateau != 0 && name != "random")
         throw Error(name + ": --plateau applies to the random dataset only");
       if (!std::isfinite(options.scale) || options.scale == 0 || !std::isfinite(options.offset))

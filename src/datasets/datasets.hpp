@@ -25,6 +25,10 @@ struct DatasetOptions {
   // kelvin or pascal would): the same field shifted and scaled, for invariance tests.
   double scale = 1;
   double offset = 0;
+  // `random` only: Lagrange quadrilaterals of order `degree` instead of triangles, on the same
+  // grid (its rectangles uncut): about `cells` quadrilaterals, the nodes of twice as many
+  // triangles of that degree.
+  bool quadrilaterals = false;
 };
 
 // Names accepted by generate_dataset, in a stable order.

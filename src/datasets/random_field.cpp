@@ -3,10 +3,12 @@
 //   f(x, y) = sum over 16 modes of a_m cos(k_m . (x, y) + phi_m),
 // wave numbers |k_m| in [6, 30] in random directions, amplitudes a_m in [0.3, 1] / sqrt(|k_m|);
 // --frequency F multiplies the wave numbers by F (F^2 times the features on the same square);
-// --plateau P raises the node values below their P-th percentile to it (a plateau).
+// --plateau P raises the node values below their P-th percentile to it (a plateau); --quads
+// gives quadrilaterals of order --degree on the same grid instead of triangles.
 #include "datasets/dataset_options.hpp"
 #include "datasets/lagrange_mesh_builder.hpp"
 #include "datasets/planar_triangulation.hpp"
+#include "datasets/quad_grid.hpp"
 #include "datasets/seeded_random.hpp"
 #include "util/error.hpp"
 
@@ -22,7 +24,9 @@ namespace hoct {
 MeshInput generate_random(const DatasetOptions &o) {
   const int d = dataset_degree(o, 3, "random");
   const long long cells = dataset_cells(o, 20000, 2, 50000000, d, "random");
-  const int n = std::max(1, static_cast<int>(std::lround(std::sqrt(cells / 2.0))));
+  // Triangles: two per grid rectangle; quadrilaterals: one.
+  const int n =
+      std::max(1, static_cast<int>(std::lround(std::sqrt(cells / (o.quadrilaterals ? 1.0 : 2.0)))));
   const double frequency = o.frequency;
   if (!(frequency > 0 && frequency <= 1000)) {
     char got[32];
@@ -49,13 +53,14 @@ MeshInput generate_random(const DatasetOptions &o) {
   grid.hx = grid.hy = 1.0 / n;
   grid.jitter = 0.15;
   grid.seed = o.seed;
-  MeshInput m =
-      build_lagrange_mesh(grid_triangulation(grid), d, nullptr, [&](const Vec3 &p, const Vec3 &) {
-        double f = 0;
-        for (const Mode &md : modes)
-          f += md.amplitude * std::cos(md.kx * p[0] + md.ky * p[1] + md.phase);
-        return f;
-      });
+  const NodeValue field = [&](const Vec3 &p, const Vec3 &) {
+    double f = 0;
+    for (const Mode &md : modes)
+      f += md.amplitude * std::cos(md.kx * p[0] + md.ky * p[1] + md.phase);
+    return f;
+  };
+  MeshInput m = o.quadrilaterals ? build_quad_grid(grid, d, field)
+                                 : build_lagrange_mesh(grid_triangulation(grid), d, nullptr, field);
   if (o.plateau > 0 && !m.values.empty()) {
     // The P-th percentile of the node values (the k-th smallest, k = floor(P n / 100)).
     std::vector<double> sorted(m.values.begin(), m.values.end());

@@ -1,5 +1,7 @@
 #include "io/msh_element_types.hpp"
 
+#include "poly/quad_basis.hpp"
+
 #include "poly/lattice.hpp"
 
 #include <algorithm>
@@ -131,6 +133,26 @@ bool is_triangle(const MshElementType &t) { return std::strncmp(t.name, "Triangl
 
 int MshElementType::complete_triangle_degree() const {
   return is_triangle(*this) && order >= 1 && nodes == lattice_size(order) ? order : 0;
+}
+
+namespace {
+bool is_quadrangle(const MshElementType &t) {
+  return std::strncmp(t.name, "Quadrilateral", 13) == 0;
+}
+} // namespace
+
+CellKind MshElementType::surface_kind() const {
+  if (is_quadrangle(*this))
+    return nodes == (order + 1) * (order + 1) ? CellKind::LagrangeQuadrilateral
+                                              : CellKind::SerendipityQuadrilateral;
+  return CellKind::LagrangeTriangle;
+}
+
+int MshElementType::surface_degree() const {
+  if (is_quadrangle(*this) && order >= 1 && order <= kMaxQuadDegree &&
+      (nodes == (order + 1) * (order + 1) || (order >= 2 && nodes == 4 * order)))
+    return order;
+  return complete_triangle_degree();
 }
 
 bool MshElementType::incomplete_triangle() const {

@@ -3,6 +3,8 @@
 // the table to read complete triangles, skip points and lines, and name anything else it rejects.
 #pragma once
 
+#include "mesh/mesh_input.hpp"
+
 namespace hoct {
 
 struct MshElementType {
@@ -15,6 +17,11 @@ struct MshElementType {
   int complete_triangle_degree() const;
   // Triangles with fewer nodes than the complete one of their order (serendipity, "Triangle 9").
   bool incomplete_triangle() const;
+  // The order of a surface cell hoct reads (a complete triangle, a complete quadrangle, an
+  // incomplete quadrangle of order >= 2 with its 4p boundary nodes), 0 for any other type; and
+  // its kind (LagrangeTriangle, LagrangeQuadrilateral, SerendipityQuadrilateral).
+  int surface_degree() const;
+  CellKind surface_kind() const;
 };
 
 // nullptr for a type Gmsh does not define or whose node count is not fixed (polygons, XFEM).

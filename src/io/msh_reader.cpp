@@ -137,10 +137,12 @@ private:
   void ascii_node_tags(uint64_t element, const MshElementType &type);
 
   void add_node(uint64_t tag, const Vec3 &p, std::size_t at);
-  void add_triangle(uint64_t tag, int degree, std::size_t at);
+  void add_surface_cell(uint64_t tag, CellKind kind, int degree, std::size_t at);
   [[noreturn]] void reject_element(int64_t type, const MshElementType *t, uint64_t tag,
                                    std::size_t at) const;
   const std::vector<int> &gmsh_to_lattice(int degree);
+  // Gmsh's order to the canonical one for a cell of this kind and degree.
+  const std::vector<int> &gmsh_to_canonical(CellKind kind, int degree);
   MeshInput finish();
 
   // A $NodeData, $ElementNodeData or $ElementData section: its header, and where its values are.
@@ -209,7 +211,7 @@ private:
 
   // Scratch space for one block or element.
   std::vector<uint64_t> tags_;
-  std::array<int64_t, lattice_size(kMaxDegree)> canonical_{};
+  std::array<int64_t, (kMaxDegree + 1) * (kMaxDegree + 1)> canonical_{}; // a quadrangle's too
 
   // Every data block and view, in file order; the chosen one's values per node (NaN: no value)
   // and, for $ElementNodeData, the lowest and highest value each node was given, and by which
@@ -540,7 +542,7 @@ void MshReader::reject_element(int64_t type, const MshElementType *t, uint64_t t
                        "): hoct needs complete Lagrange triangles (in Gmsh, "
                        "Mesh.SecondOrderIncomplete = 0)");
   s_.fail_at(at, e + " has element type " + str(type) + " (" + t->name +
-                     "), which is not a triangle: hoct reads triangle meshes");
+                     "), which is not a surface cell hoct reads (triangles and quadrangles)");
 }
 
 const std::vector<int> &MshReader::gmsh_to_lattice(int degree) {
@@ -550,11 +552,22 @@ const std::vector<int> &MshReader::gmsh_to_lattice(int degree) {
   return *p;
 }
 
-// The triangle's node tags are in tags_, in Gmsh order.
-void MshReader::add_triangle(uint64_t tag, int degree, std::size_t at) {
+const std::vector<int> &MshReader::gmsh_to_canonical(CellKind kind, int degree) {
+  switch (kind) {
+  case CellKind::LagrangeQuadrilateral:
+    return quad_node_order_to_tensor(NodeOrdering::Gmsh, degree);
+  case CellKind::SerendipityQuadrilateral:
+    return serendipity_node_order(NodeOrdering::Gmsh, degree);
+  default:
+    return gmsh_to_lattice(degree);
+  }
+}
+
+// The cell's node tags are in tags_, in Gmsh order.
+void MshReader::add_surface_cell(uint64_t tag, CellKind kind, int degree, std::size_t at) {
   if (tag == 0)
     s_.fail_at(at, "element tag 0 (tags are positive)");
-  const std::vector<int> &perm = gmsh_to_lattice(degree);
+  const std::vector<int> &perm = gmsh_to_canonical(kind, degree);
   const std::size_t n = perm.size();
   for (std::size_t i = 0; i < n; ++i) {
     const int64_t node = node_index_.find(tags_[i]);
@@ -566,12 +579,12 @@ void MshReader::add_triangle(uint64_t tag, int degree, std::size_t at) {
   const auto cell = static_cast<int64_t>(cells_.num_cells());
   const int64_t earlier = element_index_.insert(tag, cell);
   if (earlier == TagIndex::none) {
-    cells_.add_cell(degree, canonical_.data());
+    cells_.add_cell(kind, degree, canonical_.data());
     cell_tags_.push_back(tag);
     return;
   }
   const auto e = static_cast<std::size_t>(earlier);
-  if (cells_.cell_degree[e] != degree ||
+  if (cells_.cell_degree[e] != degree || cells_.kind(e) != kind ||
       !std::equal(canonical_.begin(), canonical_.begin() + static_cast<std::ptrdiff_t>(n),
                   cells_.cell_nodes.begin() + cells_.cell_offsets[e]))
     s_.fail_at(at, "element " + str(tag) + " is defined twice, with different nodes");
@@ -635,7 +648,8 @@ void MshReader::read_elements_41(std::size_t at) {
     seen += n;
     if (n == 0)
       continue;
-    const int degree = t ? t->complete_triangle_degree() : 0;
+    const int degree = t ? t->surface_degree() : 0;
+    const CellKind kind = t ? t->surface_kind() : CellKind::LagrangeTriangle;
     if (!t || (t->dimension >= 2 && degree == 0)) {
       // Name the block's first element.
       const std::size_t first_at = binary_ ? s_.pos() : (s_.skip_space(), s_.pos());
@@ -660,7 +674,7 @@ void MshReader::read_elements_41(std::size_t at) {
         const uint64_t tag = s_.get_unchecked<uint64_t>();
         for (auto &node : tags_)
           node = s_.get_unchecked<uint64_t>();
-        add_triangle(tag, degree, element_at);
+        add_surface_cell(tag, kind, degree, element_at);
       }
     } else {
       for (uint64_t i = 0; i < n; ++i) {
@@ -670,7 +684,7 @@ void MshReader::read_elements_41(std::size_t at) {
         if (degree == 0)
           skip_element(tag);
         else
-          add_triangle(tag, degree, element_at);
+          add_surface_cell(tag, kind, degree, element_at);
       }
     }
   }
@@ -705,7 +719,8 @@ void MshReader::read_elements_22(std::size_t at) {
       s_.signed_number("an element tag (physical, elementary, ...)");
     const bool type_fits = type > 0 && type <= std::numeric_limits<int>::max();
     const MshElementType *t = type_fits ? msh_element_type(static_cast<int>(type)) : nullptr;
-    const int degree = t ? t->complete_triangle_degree() : 0;
+    const int degree = t ? t->surface_degree() : 0;
+    const CellKind kind = t ? t->surface_kind() : CellKind::LagrangeTriangle;
     if (!t || (t->dimension >= 2 && degree == 0))
       reject_element(type, t, tag, element_at);
     tags_.resize(static_cast<std::size_t>(t->nodes));
@@ -713,7 +728,7 @@ void MshReader::read_elements_22(std::size_t at) {
     if (degree == 0)
       skip_element(tag);
     else
-      add_triangle(tag, degree, element_at);
+      add_surface_cell(tag, kind, degree, element_at);
   }
   expect_end("$EndElements");
   have_elements_ = true;
@@ -737,7 +752,8 @@ void MshReader::read_elements_22_binary(uint64_t total) {
       s_.fail_at(block_at, "the element blocks hold more elements than the " + str(total) +
                                " the $Elements header announces");
     const MshElementType *t = type > 0 ? msh_element_type(type) : nullptr;
-    const int degree = t ? t->complete_triangle_degree() : 0;
+    const int degree = t ? t->surface_degree() : 0;
+    const CellKind kind = t ? t->surface_kind() : CellKind::LagrangeTriangle;
     if (!t || (t->dimension >= 2 && degree == 0)) {
       const std::size_t first_at = s_.pos();
       reject_element(type, t, static_cast<uint64_t>(s_.get<int32_t>("an element tag")), first_at);
@@ -760,7 +776,7 @@ void MshReader::read_elements_22_binary(uint64_t total) {
       if (degree == 0)
         skip_element(static_cast<uint64_t>(tag));
       else
-        add_triangle(static_cast<uint64_t>(tag), degree, element_at);
+        add_surface_cell(static_cast<uint64_t>(tag), kind, degree, element_at);
     }
     seen += static_cast<uint64_t>(n);
   }
@@ -998,9 +1014,10 @@ void MshReader::scan_values(const DataBlock &b, bool collect) {
       } else {
         const auto c = static_cast<std::size_t>(cell);
         const int degree = cells_.cell_degree[c];
-        perm = &gmsh_to_lattice(degree);
+        perm = &gmsh_to_canonical(cells_.kind(c), degree);
         if (nodes != perm->size())
-          s_.fail_at(element_at, what + ": element " + str(tag) + " (a triangle of degree " +
+          s_.fail_at(element_at, what + ": element " + str(tag) + " (a " +
+                                     cell_kind_name(cells_.kind(c)) + " of degree " +
                                      str(int64_t{degree}) + ") has " + str(uint64_t{perm->size()}) +
                                      " nodes, the data give values at " + str(nodes));
         cell_nodes = cells_.cell_nodes.data() + cells_.cell_offsets[c];

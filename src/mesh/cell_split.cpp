@@ -194,9 +194,15 @@ public:
     }
 
     // The half-step grid: rows first (E along s for each node row j), then columns.
+    // (Lagrange: the even grid lines are the nodes' own, E's rows there unit vectors: copied.)
     rows_.assign(static_cast<std::size_t>(g * (p + 1)), Sample{});
     for (int j = 0; j <= p; ++j)
       for (int k = 0; k < g; ++k) {
+        if (!bezier && k % 2 == 0) {
+          rows_[static_cast<std::size_t>(k + g * j)] =
+              nodes_[static_cast<std::size_t>(L.node(k / 2, j))];
+          continue;
+        }
         Sample s;
         for (int i = 0; i <= p; ++i)
           s.add(E[static_cast<std::size_t>(k * (p + 1) + i)],
@@ -207,6 +213,11 @@ public:
     grid_id_.assign(static_cast<std::size_t>(g * g), -1);
     for (int l = 0; l < g; ++l)
       for (int k = 0; k < g; ++k) {
+        if (!bezier && l % 2 == 0) {
+          grid_[static_cast<std::size_t>(k + g * l)] =
+              rows_[static_cast<std::size_t>(k + g * (l / 2))];
+          continue;
+        }
         Sample s;
         for (int j = 0; j <= p; ++j)
           s.add(E[static_cast<std::size_t>(l * (p + 1) + j)],

@@ -47,11 +47,18 @@ public:
   CellMapper(const MeshInput &in, double tol) : in_(in), tol_(tol) {}
 
   // The degree of cell c's map: 1 when every node (or control point) is the affine image of its
-  // lattice position, else the input degree.
+  // lattice position; else the smallest k in {2, 3} dividing the input degree d for which every
+  // node is, within the tolerance, the degree-k interpolant of the nodes on the degree-k
+  // sub-lattice (a quadrilateral's half, mesh/cell_split: a bilinear map restricted to a
+  // triangle, quadratic, carried by triangles of degree 2p); else d. Low-degree maps make the
+  // Jacobian checks and evaluations cheap.
   int degree(int64_t c) {
     setup(c);
     if (d_ == 1 || affine([&](int i) -> const Vec3 & { return in_.points[nodes_[i]]; }))
       return 1;
+    for (int k = 2; k <= 3 && k < d_; ++k)
+      if (d_ % k == 0 && of_degree(k))
+        return k;
     convert();
     return affine([&](int i) -> const Vec3 & { return ctrl_[i]; }) ? 1 : d_;
   }
@@ -63,6 +70,11 @@ public:
       out[0] = *p_[0];
       out[1] = *p_[1];
       out[2] = *p_[2];
+      return;
+    }
+    if (degree < d_) {
+      sub_lattice_control_points(degree);
+      std::copy(sub_.begin(), sub_.end(), out);
       return;
     }
     convert();
@@ -107,8 +119,61 @@ private:
       }
   }
 
+  // The control points of degree k (dividing d_) through the nodes at the degree-k sub-lattice.
+  void sub_lattice_control_points(int k) {
+    const int m = lattice_size(k), step = d_ / k;
+    const auto &L = lagrange_to_bernstein_triangle(k);
+    sub_.assign(static_cast<std::size_t>(m), Vec3{0, 0, 0});
+    for (int j = 0; j < m; ++j) {
+      const auto q = lattice_point(k, j);
+      const Vec3 &p = in_.points[nodes_[lattice_index(d_, q[0] * step, q[1] * step)]];
+      for (int i = 0; i < m; ++i)
+        for (int a = 0; a < 3; ++a)
+          sub_[static_cast<std::size_t>(i)][a] += L[static_cast<std::size_t>(i) * m + j] * p[a];
+    }
+  }
+  // Every node within the tolerance of the degree-k map through the sub-lattice nodes.
+  bool of_degree(int k) {
+    sub_lattice_control_points(k);
+    const int m = lattice_size(k);
+    const std::vector<double> &w = basis_at_nodes(k);
+    for (int i = 0; i < n_; ++i) {
+      Vec3 x{0, 0, 0};
+      for (int j = 0; j < m; ++j)
+        for (int a = 0; a < 3; ++a)
+          x[a] += w[static_cast<std::size_t>(i) * m + j] * sub_[static_cast<std::size_t>(j)][a];
+      const Vec3 &q = in_.points[nodes_[i]];
+      for (int a = 0; a < 3; ++a)
+        if (!(std::abs(q[a] - x[a]) <= tol_))
+          return false;
+    }
+    return true;
+  }
+  // B_j^k at the degree-d_ lattice points (row per node), for the degree in use.
+  const std::vector<double> &basis_at_nodes(int k) {
+    std::vector<double> &w = basis_[k];
+    if (basis_degree_[k] == d_)
+      return w;
+    const int m = lattice_size(k);
+    w.assign(static_cast<std::size_t>(n_) * m, 0.0);
+    for (int j = 0; j < m; ++j) {
+      std::vector<Vec3> unit(static_cast<std::size_t>(m), Vec3{0, 0, 0});
+      unit[static_cast<std::size_t>(j)] = {1, 0, 0};
+      for (int i = 0; i < n_; ++i) {
+        std::vector<Vec3> work = unit;
+        w[static_cast<std::size_t>(i) * m + j] =
+            casteljau3(work.data(), k, uv_[i][0], uv_[i][1])[0];
+      }
+    }
+    basis_degree_[k] = d_;
+    return w;
+  }
+
   const MeshInput &in_;
   const double tol_;
+  std::vector<Vec3> sub_;
+  std::vector<double> basis_[4];
+  int basis_degree_[4] = {0, 0, 0, 0};
   int d_ = 0, n_ = 0, table_degree_ = 0;
   const int64_t *nodes_ = nullptr;
   const Vec3 *p_[3] = {nullptr, nullptr, nullptr};

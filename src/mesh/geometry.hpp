@@ -1,6 +1,6 @@
-// Each cell's geometry map phi: reference triangle -> R^3, a Bernstein polynomial map of the
-// cell's own (input) degree through its Lagrange nodes, flagged linear where its control points
-// are those of the flat triangle. Used to report positions and to build refinements; the
+// Each cell's geometry map phi: reference triangle -> R^3, a Bernstein polynomial map through its
+// Lagrange nodes, of the cell's own (input) degree or lower where the nodes lie on a map of lower
+// degree (linear: the flat triangle; 2 or 3 where that degree divides the input's). Used to report positions and to build refinements; the
 // algorithms themselves work in the reference triangle (docs/ALGORITHM.md §1).
 #pragma once
 
@@ -23,7 +23,8 @@ public:
                         const std::array<Vec3, 2> *box = nullptr);
 
   int64_t num_cells() const { return maps_ ? static_cast<int64_t>(maps_->degree.size()) : 0; }
-  // Degree of the map (1 for a flat, straight-sided cell even if its input degree is higher).
+  // Degree of the map (1 for a flat, straight-sided cell even if its input degree is higher; 2 for
+  // half a straight quadrilateral).
   int degree(int64_t c) const { return maps_->degree[c]; }
   bool is_linear(int64_t c) const { return maps_->degree[c] == 1; }
   // Component i (0 = x, 1 = y, 2 = z) of the map as a Bernstein polynomial.

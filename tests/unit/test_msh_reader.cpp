@@ -272,10 +272,8 @@ TEST(MshReader, MalformedFilesGiveLocatedErrors) {
       {"bad_missing_value.msh", ":37: ", "$NodeData 'p' has no value for node 40 (of element 2)"},
       {"bad_serendipity.msh",
        ":34: ", "element 1: incomplete (serendipity) triangle type 20 is not supported"},
-      {"bad_quad.msh",
-       ":37: ", "element 7 has element type 3 (Quadrilateral 4), which is not a triangle"},
       {"bad_tet.msh",
-       ":37: ", "element 8 has element type 4 (Tetrahedron 4), which is not a triangle"},
+       ":37: ", "element 8 has element type 4 (Tetrahedron 4), which is not a surface cell"},
       {"bad_unknown_type.msh", ":37: ", "element 9 has unknown element type 999"},
       {"bad_nan_value.msh", ":46: ", "$NodeData 'p': node 10 has a non-finite value (nan)"},
       {"bad_inf_coordinate.msh", ":26: ", "node 30 has a non-finite coordinate (1 inf 0)"},
@@ -304,7 +302,7 @@ TEST(MshReader, MalformedFilesGiveLocatedErrors) {
       {"bad_tag_zero.msh", ":20: ", "node tag 0 (tags are positive)"},
       {"bad_nodedata_ints.msh", ":42: ", "$NodeData 'p' has 2 integer tags; it needs 3"},
       {"bad_unterminated_string.msh", ":39: ", "unterminated string tag '\"p'"},
-      {"bad_msh22_quad.msh", ":26: ", "element 4 has element type 3 (Quadrilateral 4)"},
+      {"bad_msh22_tet.msh", ":26: ", "element 4 has element type 4 (Tetrahedron 4)"},
       {"bad_msh22_element_count.msh",
        ":27: ", "expected an element tag (a non-negative integer), got '$EndElements'"},
       {"bad_msh22_element_tags.msh",
@@ -381,9 +379,9 @@ TEST(MshReader, BinaryMalformationsGiveByteOffsets) {
       at(l.first_triangle_block), "number of elements in the block 18446744073709551615");
   expect_error(patched([&](std::string &b) { put<int32_t>(b, l.first_triangle_block + 8, 20); }),
                at(l.first_triangle), "incomplete (serendipity) triangle type 20 is not supported");
-  expect_error(patched([&](std::string &b) { put<int32_t>(b, l.first_triangle_block + 8, 3); }),
+  expect_error(patched([&](std::string &b) { put<int32_t>(b, l.first_triangle_block + 8, 4); }),
                at(l.first_triangle),
-               "has element type 3 (Quadrilateral 4), which is not a triangle");
+               "has element type 4 (Tetrahedron 4), which is not a surface cell");
   const auto first_tag = get<uint64_t>(good, l.first_triangle);
   expect_error(patched([&](std::string &b) { put<uint64_t>(b, l.first_triangle + 8, 999); }),
                at(l.first_triangle),
@@ -649,8 +647,8 @@ TEST(MshReader, MalformedElementNodeDataAndMsh22Binary) {
                at(node_records), "node tag -3 (tags are positive)");
   expect_error(patched([&](std::string &b) { b.replace(nodes, 2, "9999999999\n"); }), ": byte ",
                "number of nodes 9999999999 is more than the remaining");
-  expect_error(patched([&](std::string &b) { put<int32_t>(b, element_blocks, 3); }),
-               at(element_blocks + 12), "has element type 3 (Quadrilateral 4)");
+  expect_error(patched([&](std::string &b) { put<int32_t>(b, element_blocks, 4); }),
+               at(element_blocks + 12), "has element type 4 (Tetrahedron 4)");
   expect_error(patched([&](std::string &b) { put<int32_t>(b, element_blocks, 999); }),
                at(element_blocks + 12), "has unknown element type 999");
   expect_error(patched([&](std::string &b) { put<int32_t>(b, element_blocks + 4, 1 << 30); }),
