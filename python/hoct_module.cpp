@@ -425,6 +425,11 @@ PYBIND11_MODULE(_hoct, m) {
         if (merge_tolerance >= 0) // as `hoct tree --merge-duplicates=TOL`
           merge_duplicate_points(input, merge_tolerance, thread_count(threads));
         GllResampling gll = resample_gll_cells(input); // as the command line reads
+        if (gll.quadrilaterals > 0)
+          notes.push_back(std::to_string(gll.quadrilaterals) +
+                          " quadrilateral(s) have their nodes at Gauss-Lobatto-Legendre points "
+                          "(as DOLFINx writes order >= 3), though VTK's Lagrange cells label "
+                          "them as equispaced: read as the polynomial through those points");
         if (gll.cells > 0) {
           notes.push_back(std::to_string(gll.cells) +
                           " cell(s) have their nodes at Gauss-Lobatto-Legendre points (as "

@@ -36,6 +36,13 @@ LoadedMesh load_mesh(const std::string &path, const FieldSelection &field, bool 
                  "points (as DOLFINx writes degree >= 3), though VTK's Lagrange cells label them "
                  "as equispaced: their values are read as samples at the nodes' true positions\n",
                  static_cast<long long>(gll.cells), path.c_str());
+  if (gll.quadrilaterals > 0)
+    std::fprintf(stderr,
+                 "hoct: note: %lld quadrilateral(s) of %s have their nodes at "
+                 "Gauss-Lobatto-Legendre points (as DOLFINx writes order >= 3), though VTK's "
+                 "Lagrange cells label them as equispaced: read as the polynomial through those "
+                 "points\n",
+                 static_cast<long long>(gll.quadrilaterals), path.c_str());
   r.read_seconds = clock.lap();
   const MeshBuildOptions build{.throw_on_error = strict, .threads = thread_count(threads)};
   if (gll.cells > 0)

@@ -2,8 +2,10 @@
 
 #include "poly/lagrange_to_bernstein.hpp"
 #include "poly/lattice.hpp"
+#include "poly/quad_basis.hpp"
 
 #include <cmath>
+#include <utility>
 
 namespace hoct {
 
@@ -64,10 +66,118 @@ bool reference_position(const Vec3 &p0, const Vec3 &p1, const Vec3 &p2, const Ve
 
 } // namespace
 
+namespace {
+
+// Quadrilaterals of order p >= 3 whose edge nodes sit at the GLL points of their straight edges:
+// their node values and positions replaced by those of their tensor interpolant (1D Lagrange
+// through the GLL points, in each direction) at the equispaced nodes. An edge node's new value
+// depends on its edge's nodes alone, so two such cells agree on it; all are computed from the
+// old values before any is written.
+int64_t resample_gll_quadrilaterals(MeshInput &in) {
+  constexpr double kTol = 1e-6;
+  const std::size_t nc = in.num_cells();
+  std::vector<std::vector<double>> gll_of(kMaxQuadDegree + 1), to_equi(kMaxQuadDegree + 1);
+  std::vector<std::size_t> cells;
+  for (std::size_t c = 0; c < nc; ++c) {
+    const int p = in.cell_degree[c];
+    if (in.kind(c) != CellKind::LagrangeQuadrilateral || p < 3 || p > kMaxQuadDegree)
+      continue;
+    if (gll_of[p].empty())
+      gll_of[p] = gll_points(p);
+    const std::vector<double> &g = gll_of[p];
+    const int64_t *nodes = &in.cell_nodes[in.cell_offsets[c]];
+    auto at = [&](int i, int j) -> const Vec3 & { return in.points[nodes[i + (p + 1) * j]]; };
+    bool ok = true;
+    // Edges (0,0)-(p,0), (p,0)-(p,p), (0,p)-(p,p), (0,0)-(0,p), nodes along increasing index.
+    for (int e = 0; e < 4 && ok; ++e)
+      for (int t = 1; t < p && ok; ++t) {
+        auto node = [&](int k) -> const Vec3 & {
+          return e == 0 ? at(k, 0) : e == 1 ? at(p, k) : e == 2 ? at(k, p) : at(0, k);
+        };
+        const Vec3 &a = node(0), &b = node(p), &x = node(t);
+        double ab = 0, ax = 0, len2 = 0;
+        for (int k = 0; k < 3; ++k) {
+          ab += (b[k] - a[k]) * (x[k] - a[k]);
+          len2 += (b[k] - a[k]) * (b[k] - a[k]);
+        }
+        if (!(len2 > 0)) {
+          ok = false;
+          break;
+        }
+        const double s = ab / len2;
+        for (int k = 0; k < 3; ++k) {
+          const double off = x[k] - a[k] - s * (b[k] - a[k]);
+          ax += off * off;
+        }
+        ok = std::abs(s - g[static_cast<std::size_t>(t)]) <= kTol &&
+             std::sqrt(ax) <= kTol * std::sqrt(len2);
+      }
+    if (ok)
+      cells.push_back(c);
+  }
+  if (cells.empty())
+    return 0;
+  // M[i (p+1) + a] = L_a(i / p), L_a the Lagrange basis of the GLL points.
+  for (int p = 3; p <= kMaxQuadDegree; ++p) {
+    if (gll_of[p].empty())
+      continue;
+    const std::vector<double> &g = gll_of[p];
+    std::vector<double> &m = to_equi[p];
+    m.assign(static_cast<std::size_t>((p + 1) * (p + 1)), 0.0);
+    for (int i = 0; i <= p; ++i)
+      for (int a = 0; a <= p; ++a) {
+        long double w = 1.0L;
+        for (int k = 0; k <= p; ++k)
+          if (k != a)
+            w *= (static_cast<long double>(i) / p - g[k]) / (static_cast<long double>(g[a]) - g[k]);
+        m[static_cast<std::size_t>(i * (p + 1) + a)] = static_cast<double>(w);
+      }
+    for (int i = 0; i <= p; i += p) // the ends exactly
+      for (int a = 0; a <= p; ++a)
+        m[static_cast<std::size_t>(i * (p + 1) + a)] = (i == 0 ? a == 0 : a == p) ? 1.0 : 0.0;
+  }
+  std::vector<std::pair<int64_t, std::pair<double, Vec3>>> updates;
+  for (const std::size_t c : cells) {
+    const int p = in.cell_degree[c], n = p + 1;
+    const std::vector<double> &m = to_equi[p];
+    const int64_t *nodes = &in.cell_nodes[in.cell_offsets[c]];
+    for (int j = 0; j <= p; ++j)
+      for (int i = 0; i <= p; ++i) {
+        const bool corner = (i == 0 || i == p) && (j == 0 || j == p);
+        if (corner)
+          continue;
+        double f = 0;
+        Vec3 x{0, 0, 0};
+        for (int b = 0; b <= p; ++b)
+          for (int a = 0; a <= p; ++a) {
+            const double w =
+                m[static_cast<std::size_t>(i * n + a)] * m[static_cast<std::size_t>(j * n + b)];
+            if (w == 0)
+              continue;
+            const auto id = static_cast<std::size_t>(nodes[a + n * b]);
+            f += w * in.values[id];
+            for (int k = 0; k < 3; ++k)
+              x[k] += w * in.points[id][k];
+          }
+        updates.push_back({nodes[i + n * j], {f, x}});
+      }
+  }
+  for (const auto &[id, fx] : updates) {
+    in.values[static_cast<std::size_t>(id)] = fx.first;
+    in.points[static_cast<std::size_t>(id)] = fx.second;
+  }
+  return static_cast<int64_t>(cells.size());
+}
+
+} // namespace
+
 GllResampling resample_gll_cells(MeshInput &in) {
   GllResampling r;
-  if (!in.lagrange_triangles_only())
-    return r; // GLL placement is recognised on meshes of Lagrange triangles only
+  if (!in.lagrange_triangles_only()) {
+    // Triangles' GLL placement is recognised on meshes of Lagrange triangles only.
+    r.quadrilaterals = resample_gll_quadrilaterals(in);
+    return r;
+  }
   const std::size_t nc = in.num_cells();
   std::vector<char> gll(nc, 0);
   std::vector<std::vector<Vec2>> positions(nc);

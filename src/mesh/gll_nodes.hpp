@@ -19,6 +19,9 @@ std::vector<double> gll_points(int d);
 struct GllResampling {
   int64_t cells = 0;                // cells found with GLL-placed nodes (0: nothing changed)
   std::vector<CellSamples> samples; // when cells > 0: every cell's node values at their positions
+  // Quadrilaterals of order >= 3 found with GLL-placed nodes: resampled in place (exactly: their
+  // tensor interpolant at the equispaced nodes, values and positions; no samples needed).
+  int64_t quadrilaterals = 0;
 };
 
 // Finds the straight cells of degree >= 3 whose edge nodes sit at the GLL points of their edges

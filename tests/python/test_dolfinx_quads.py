@@ -1,0 +1,63 @@
+"""DOLFINx 0.5 on quadrilateral meshes (VTKFile, VTK_LAGRANGE_QUADRILATERAL): Q1-Q3 functions of
+f = (x - 0.4)^2 (y + 0.1) - 0.6 (y - 0.55)^2 (x + 0.2), which lies in Q2 and Q3 and has one
+interior critical point, a saddle at (0.4, 0.55) of value 0. Q3's nodes are at Gauss-Lobatto-
+Legendre points though VTK labels them equispaced (read as equispaced, the same function gave 59
+tree nodes instead of 5): hoct notes it and reads the polynomial through them, so Q2 and Q3 give
+the same tree, with the analytic saddle; every tree passes `hoct check`."""
+import os
+import subprocess
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from hoct_testing import Results, compare_trees, run, tempdir, tree_json  # noqa: E402
+
+WRITER = """
+import sys
+from mpi4py import MPI
+import dolfinx, dolfinx.fem, dolfinx.io, dolfinx.mesh
+out = sys.argv[1]
+for deg in (1, 2, 3):
+    mesh = dolfinx.mesh.create_unit_square(MPI.COMM_WORLD, 4, 4,
+                                           dolfinx.mesh.CellType.quadrilateral)
+    V = dolfinx.fem.FunctionSpace(mesh, ("Lagrange", deg))
+    u = dolfinx.fem.Function(V)
+    u.name = "temperature"
+    u.interpolate(lambda x: (x[0] - 0.4) ** 2 * (x[1] + 0.1) - 0.6 * (x[1] - 0.55) ** 2 * (x[0] + 0.2))
+    with dolfinx.io.VTKFile(MPI.COMM_WORLD, f"{out}/q{deg}.pvd", "w") as f:
+        f.write_function(u)
+"""
+
+try:
+    import dolfinx  # noqa: F401
+except ImportError as e:
+    print(f"skipped: DOLFINx is missing ({e})")
+    sys.exit(77)
+
+r = Results()
+with tempdir() as d:
+    w = subprocess.run([sys.executable, "-c", WRITER, d], capture_output=True, text=True,
+                       env=dict(os.environ, OMP_NUM_THREADS="1"))
+    if w.returncode != 0:
+        print(w.stderr[-3000:])
+        sys.exit(1)
+    trees = {}
+    for deg in (1, 2, 3):
+        path = os.path.join(d, f"q{deg}.pvd")
+        j, res = tree_json(path)
+        trees[deg] = j
+        r.check(j["input"]["cells"] == 16, f"Q{deg}: {j['input']['cells']} cells")
+        note = "quadrilateral(s)" in res.stderr and "Gauss-Lobatto-Legendre" in res.stderr
+        r.check(note == (deg == 3), f"Q{deg}: GLL note {'missing' if deg == 3 else 'given'}: "
+                f"{res.stderr.strip()[:300]}")
+        chk = run("check", f"{path}.{abs(hash(()))}.json", path, check=False)
+        r.check(chk.returncode == 0, f"Q{deg}: hoct check: {chk.stdout[-500:]}{chk.stderr[-500:]}")
+    compare_trees(r, "DOLFINx Q3 (GLL nodes) vs Q2", trees[3], trees[2], tol=1e-9,
+                  position_tol=1e-7)
+    for deg in (2, 3):
+        inside = [n for n in trees[deg]["nodes"]
+                  if all(1e-6 < c < 1 - 1e-6 for c in n["position"][:2])]
+        ok = len(inside) == 1 and inside[0]["type"] == "saddle" and \
+            abs(inside[0]["position"][0] - 0.4) < 1e-7 and \
+            abs(inside[0]["position"][1] - 0.55) < 1e-7 and abs(inside[0]["value"]) < 1e-9
+        r.check(ok, f"Q{deg}: interior nodes {inside}, expected the saddle at (0.4, 0.55)")
+r.finish()
