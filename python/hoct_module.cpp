@@ -450,8 +450,9 @@ PYBIND11_MODULE(_hoct, m) {
   m.def(
       "generate",
       [](const std::string &name, int degree, long long cells, uint64_t seed, double frequency,
-         double plateau, double scale, double offset) {
+         double plateau, double scale, double offset, bool quads) {
         DatasetOptions o;
+        o.quadrilaterals = quads;
         o.scale = scale;
         o.offset = offset;
         o.degree = degree;

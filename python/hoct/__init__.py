@@ -182,11 +182,13 @@ def _from_arrays(points, cells, values, degree, cell_types, what, tolerance=-1.0
                              float32)
 
 
-def generate(name, degree=0, cells=0, seed=1, frequency=1.0, plateau=0.0, scale=1.0, offset=0.0):
+def generate(name, degree=0, cells=0, seed=1, frequency=1.0, plateau=0.0, scale=1.0, offset=0.0,
+             quads=False):
     """A synthetic dataset (hoct.dataset_names()): the same as `hoct generate`
     (frequency: `random` only, its wave numbers multiplied; plateau: `random` only, the values
     below their plateau-th percentile raised to it; every value v then becomes
-    scale * v + offset); its mesh built on every hardware thread.
+    scale * v + offset; quads: `random` only, Lagrange quadrilaterals of order `degree` on the
+    same grid instead of triangles); its mesh built on every hardware thread.
 
     As for the command line, degree and seed are integers (1.5 is refused, not truncated) and
     cells a whole number (1e6 is fine)."""
@@ -197,8 +199,9 @@ def generate(name, degree=0, cells=0, seed=1, frequency=1.0, plateau=0.0, scale=
         raise TypeError("generate: cells must be a number, not %r" % (cells,))
     if not (0 <= cells <= 1e12) or cells != math.floor(cells):
         raise HoctError("generate: cells must be a positive whole number, got %r" % (cells,))
+    quads = _args.flag(quads, "generate: quads")
     return _hoct.generate(name, degree, int(cells), seed, float(frequency), float(plateau),
-                          float(scale), float(offset))
+                          float(scale), float(offset), quads)
 
 
 dataset_names = _hoct.dataset_names

@@ -132,16 +132,20 @@ private:
           sub_[static_cast<std::size_t>(i)][a] += L[static_cast<std::size_t>(i) * m + j] * p[a];
     }
   }
-  // Every node within the tolerance of the degree-k map through the sub-lattice nodes.
+  // Every node within the tolerance of the degree-k map through the sub-lattice nodes: the
+  // degree-k Lagrange interpolant of those nodes evaluated at the others (the sub-lattice nodes
+  // reproduce themselves), stopping at the first that is off.
   bool of_degree(int k) {
-    sub_lattice_control_points(k);
+    const Interpolation &w = interpolation(k);
     const int m = lattice_size(k);
-    const std::vector<double> &w = basis_at_nodes(k);
-    for (int i = 0; i < n_; ++i) {
+    for (const int i : w.others) {
+      const double *row = &w.weights[static_cast<std::size_t>(i) * m];
       Vec3 x{0, 0, 0};
-      for (int j = 0; j < m; ++j)
+      for (int j = 0; j < m; ++j) {
+        const Vec3 &p = in_.points[nodes_[w.sub[static_cast<std::size_t>(j)]]];
         for (int a = 0; a < 3; ++a)
-          x[a] += w[static_cast<std::size_t>(i) * m + j] * sub_[static_cast<std::size_t>(j)][a];
+          x[a] += row[j] * p[a];
+      }
       const Vec3 &q = in_.points[nodes_[i]];
       for (int a = 0; a < 3; ++a)
         if (!(std::abs(q[a] - x[a]) <= tol_))
@@ -149,31 +153,49 @@ private:
     }
     return true;
   }
-  // B_j^k at the degree-d_ lattice points (row per node), for the degree in use.
-  const std::vector<double> &basis_at_nodes(int k) {
-    std::vector<double> &w = basis_[k];
-    if (basis_degree_[k] == d_)
+  // For the degree in use: the degree-k Lagrange basis at the degree-d_ lattice points (row per
+  // node), the nodes on the degree-k sub-lattice (in its lattice order) and the other nodes.
+  struct Interpolation {
+    std::vector<double> weights;
+    std::vector<int> sub, others;
+  };
+  const Interpolation &interpolation(int k) {
+    Interpolation &w = interpolation_[k];
+    if (interpolation_degree_[k] == d_)
       return w;
-    const int m = lattice_size(k);
-    w.assign(static_cast<std::size_t>(n_) * m, 0.0);
-    for (int j = 0; j < m; ++j) {
-      std::vector<Vec3> unit(static_cast<std::size_t>(m), Vec3{0, 0, 0});
-      unit[static_cast<std::size_t>(j)] = {1, 0, 0};
-      for (int i = 0; i < n_; ++i) {
-        std::vector<Vec3> work = unit;
-        w[static_cast<std::size_t>(i) * m + j] =
-            casteljau3(work.data(), k, uv_[i][0], uv_[i][1])[0];
+    const int m = lattice_size(k), step = d_ / k;
+    const std::vector<double> &L = lagrange_to_bernstein_triangle(k);
+    w.weights.assign(static_cast<std::size_t>(n_) * m, 0.0);
+    for (int i = 0; i < n_; ++i)
+      for (int l = 0; l < m; ++l) {
+        // B_l^k at node i, by de Casteljau on the unit control values.
+        std::vector<Vec3> unit(static_cast<std::size_t>(m), Vec3{0, 0, 0});
+        unit[static_cast<std::size_t>(l)] = {1, 0, 0};
+        const double b = casteljau3(unit.data(), k, uv_[i][0], uv_[i][1])[0];
+        for (int j = 0; j < m; ++j)
+          w.weights[static_cast<std::size_t>(i) * m + j] +=
+              b * L[static_cast<std::size_t>(l) * m + j];
       }
+    std::vector<bool> on_sub(static_cast<std::size_t>(n_), false);
+    w.sub.resize(static_cast<std::size_t>(m));
+    for (int j = 0; j < m; ++j) {
+      const auto q = lattice_point(k, j);
+      w.sub[static_cast<std::size_t>(j)] = lattice_index(d_, q[0] * step, q[1] * step);
+      on_sub[static_cast<std::size_t>(w.sub[static_cast<std::size_t>(j)])] = true;
     }
-    basis_degree_[k] = d_;
+    w.others.clear();
+    for (int i = 0; i < n_; ++i)
+      if (!on_sub[static_cast<std::size_t>(i)])
+        w.others.push_back(i);
+    interpolation_degree_[k] = d_;
     return w;
   }
 
   const MeshInput &in_;
   const double tol_;
   std::vector<Vec3> sub_;
-  std::vector<double> basis_[4];
-  int basis_degree_[4] = {0, 0, 0, 0};
+  Interpolation interpolation_[4];
+  int interpolation_degree_[4] = {0, 0, 0, 0};
   int d_ = 0, n_ = 0, table_degree_ = 0;
   const int64_t *nodes_ = nullptr;
   const Vec3 *p_[3] = {nullptr, nullptr, nullptr};

@@ -22,13 +22,15 @@ namespace hoct {
 // Wall time of each step of build_mesh, in seconds (0 for steps not run).
 struct MeshBuildTimes {
   double input_checks = 0;       // array sizes, ids, finite values, cell shapes
+  double cell_split = 0;         // quadrilaterals and Bezier cells into Lagrange triangles
   double topology = 0;           // vertices, edges, components, manifold checks
   double duplicate_vertices = 0; // distinct vertices at one position
   double geometry = 0;           // the cells' geometric maps
   double field = 0;              // Lagrange -> Bernstein conversion, continuity across edges
   double geometry_checks = 0;    // orientation, zero areas, folds
   double total() const {
-    return input_checks + topology + duplicate_vertices + geometry + field + geometry_checks;
+    return input_checks + cell_split + topology + duplicate_vertices + geometry + field +
+           geometry_checks;
   }
 };
 

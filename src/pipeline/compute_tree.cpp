@@ -98,6 +98,11 @@ TreeOutcome compute_tree(const Mesh &mesh, const TreeRequest &rq, const MeshInpu
   tree.stats.time.read = rq.read_seconds;
   tree.stats.time.check = rq.build_seconds;
   tree.stats.time.bernstein = mesh.build_times.field;
+  if (!mesh.origins.identity())
+    tree.stats.time.cell_split = mesh.build_times.cell_split;
+  tree.stats.time.topology = mesh.build_times.topology;
+  tree.stats.time.geometry = mesh.build_times.geometry;
+  tree.stats.time.geometry_checks = mesh.build_times.geometry_checks;
   if (rq.simplify) {
     const double range =
         tree.nodes.empty() ? 0 : tree.nodes.back().value - tree.nodes.front().value;

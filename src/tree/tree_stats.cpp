@@ -106,7 +106,11 @@ const std::vector<Entry> &table() {
     // The phases in the order they run.
     e.push_back(time_entry("time_read_s", &TreeTimings::read));
     e.push_back(time_entry("time_check_s", &TreeTimings::check));
+    e.push_back(time_entry("time_cell_split_s", &TreeTimings::cell_split));
+    e.push_back(time_entry("time_topology_s", &TreeTimings::topology));
+    e.push_back(time_entry("time_geometry_s", &TreeTimings::geometry));
     e.push_back(time_entry("time_bernstein_s", &TreeTimings::bernstein));
+    e.push_back(time_entry("time_geometry_checks_s", &TreeTimings::geometry_checks));
     e.push_back(time_entry("time_pl_mesh_s", &TreeTimings::pl_mesh));
     e.push_back(time_entry("time_edge_nodes_s", &TreeTimings::edge_nodes));
     e.push_back(time_entry("time_cells_s", &TreeTimings::cells));

@@ -51,6 +51,9 @@ struct PlCounts {
 // Seconds per phase; empty where the phase did not run or was not timed.
 struct TreeTimings {
   std::optional<double> read, check, bernstein, pl_mesh;
+  // Parts of the mesh build (check): quadrilaterals and Bezier cells split into Lagrange
+  // triangles, the topology, the cells' geometric maps and their checks.
+  std::optional<double> cell_split, topology, geometry, geometry_checks;
   // The exact pipeline's phases.
   std::optional<double> edge_nodes, cells, interior_critical_points, connections, graph_assembly;
   std::optional<double> graph; // the PL tree's graph

@@ -339,6 +339,16 @@ def main():
              "-o", path, *args)
         data[name] = (path, check_dataset(name, path))
 
+    # Quadrilaterals (VTK_LAGRANGE_QUADRILATERAL, 70) of orders 1-3, every method; order 1 also as
+    # VTK_QUAD (9) and order 2 as VTK_BIQUADRATIC_QUAD (28): the same nodes, the same tree.
+    for p in (1, 2, 3):
+        path = os.path.join(OUT, f"random-q{p}.vtu")
+        hoct("generate", "random", "--quads", "--degree", str(p), "--cells", "150", "-o", path)
+        source = check_dataset(f"random Q{p}", path)
+        if p in (1, 2):
+            check_dataset(f"random Q{p} as type {9 if p == 1 else 28}", path,
+                          with_cell_type(source, 9 if p == 1 else 28))
+
     # The same quadratic cells as VTK_QUADRATIC_TRIANGLE (22) instead of VTK_LAGRANGE_TRIANGLE.
     path, source = data["gauss"]
     check_dataset("gauss as type 22", path, with_cell_type(source, 22))

@@ -75,3 +75,26 @@ def test_bad_quadrilateral_input_is_refused():
     bad[4, 3] = len(pts)
     with pytest.raises(hoct.HoctError, match="cell 4 refers to point"):
         hoct.from_arrays(pts, bad, f)
+
+
+def test_generate_quadrilaterals_is_the_command_lines():
+    """hoct.generate(..., quads=True) gives the mesh `hoct generate random --quads` writes: the
+    same tree (independent route: the command line's file read back)."""
+    import subprocess
+    mesh = hoct.generate("random", degree=2, cells=400, seed=3, quads=True)
+    with tempfile.TemporaryDirectory(prefix="hoct-quad-") as d:
+        path = os.path.join(d, "q.vtu")
+        subprocess.run([os.environ.get("HOCT_BIN", "hoct"), "generate", "random", "--quads",
+                        "--degree", "2", "--cells", "400", "--seed", "3", "-o", path],
+                       check=True, capture_output=True)
+        from_file = hoct.read(path)
+        cells = meshio.read(path).cells
+    assert [c.type for c in cells] == ["VTK_LAGRANGE_QUADRILATERAL"] or \
+        all(c.type in ("quad9", "VTK_LAGRANGE_QUADRILATERAL") for c in cells)
+    assert sum(len(c.data) for c in cells) == 400
+    a, b = hoct.contour_tree(mesh), hoct.contour_tree(from_file)
+    assert len(a.values) > 2 and same_tree(a, b)
+    with pytest.raises(hoct.HoctError, match="random"):
+        hoct.generate("heater", quads=True)
+    with pytest.raises(TypeError, match="generate: quads must be True or False"):
+        hoct.generate("random", quads="yes")

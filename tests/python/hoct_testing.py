@@ -79,3 +79,28 @@ def compare_trees(results, name, j, k, tol=1e-12, position_tol=None, scale=1.0):
     pb = sorted(scale * p["persistence"] for p in k["pairs"])
     results.check(len(pa) == len(pb) and all(close(x, y, tol) for x, y in zip(pa, pb)),
                   f"{name}: persistence pairs differ")
+
+
+def write_pl_reference(path, f, lo, hi, n):
+    """A piecewise-linear reference of f on the square [lo, hi]^2: f at the vertices of n x n
+    squares, each cut into two right triangles of legs h = (hi - lo) / n, written with meshio (an
+    independent writer) as a .vtu of VTK_TRIANGLE cells. Its PL interpolant differs from f by
+    at most M h^2 / 4 (M >= the Frobenius norm of f's Hessian): the caller's bound."""
+    import meshio
+    import numpy as np
+
+    s = lo + (hi - lo) * np.arange(n + 1) / n
+    X, Y = np.meshgrid(s, s)
+    xyz = np.column_stack([X.ravel(), Y.ravel(), np.zeros(X.size)])
+    I, J = np.meshgrid(np.arange(n), np.arange(n))
+    v = (I + (n + 1) * J).ravel()
+    tris = np.concatenate([np.column_stack([v, v + 1, v + n + 2]),
+                           np.column_stack([v, v + n + 2, v + n + 1])])
+    meshio.write(path, meshio.Mesh(xyz, [("triangle", tris)],
+                                   point_data={"f": f(X.ravel(), Y.ravel())}), binary=True)
+
+
+def bottleneck(tree_a, tree_b):
+    """`hoct compare A B --json`'s bottleneck distances between two trees' persistence diagrams
+    (join, split, global, max)."""
+    return json.loads(run("compare", tree_a, tree_b, "--json").stdout)["bottleneck"]

@@ -3,13 +3,17 @@ f = (x - 0.4)^2 (y + 0.1) - 0.6 (y - 0.55)^2 (x + 0.2), which lies in Q2 and Q3 
 interior critical point, a saddle at (0.4, 0.55) of value 0. Q3's nodes are at Gauss-Lobatto-
 Legendre points though VTK labels them equispaced (read as equispaced, the same function gave 59
 tree nodes instead of 5): hoct notes it and reads the polynomial through them, so Q2 and Q3 give
-the same tree, with the analytic saddle; every tree passes `hoct check`."""
+the same tree, with the analytic saddle; every tree passes `hoct check`. Each tree is also within
+the stability bound of the PL tree of f on 400 x 400 squares (bottleneck distance <= sup |f - f_h|
++ M h^2 / 4; f_h = f for Q2 and Q3, Q1's bilinear interpolant sampled here in numpy)."""
 import os
 import subprocess
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from hoct_testing import Results, compare_trees, run, tempdir, tree_json  # noqa: E402
+import numpy as np  # noqa: E402
+from hoct_testing import (Results, bottleneck, compare_trees, run, tempdir, tree_json,  # noqa: E402
+                          write_pl_reference)
 
 WRITER = """
 import sys
@@ -33,6 +37,25 @@ except ImportError as e:
     print(f"skipped: DOLFINx is missing ({e})")
     sys.exit(77)
 
+
+
+def f(x, y):
+    return (x - 0.4) ** 2 * (y + 0.1) - 0.6 * (y - 0.55) ** 2 * (x + 0.2)
+
+
+def q1_error():
+    """sup |f - its bilinear interpolant on the 4 x 4 squares|, sampled at 401 x 401 points."""
+    s = np.linspace(0, 1, 401)
+    X, Y = np.meshgrid(s, s)
+    i = np.minimum((X * 4).astype(int), 3)
+    j = np.minimum((Y * 4).astype(int), 3)
+    a, b = X * 4 - i, Y * 4 - j
+    x0, x1, y0, y1 = i / 4, (i + 1) / 4, j / 4, (j + 1) / 4
+    fh = ((1 - a) * (1 - b) * f(x0, y0) + a * (1 - b) * f(x1, y0) + (1 - a) * b * f(x0, y1) +
+          a * b * f(x1, y1))
+    return float(np.abs(fh - f(X, Y)).max())
+
+
 r = Results()
 with tempdir() as d:
     w = subprocess.run([sys.executable, "-c", WRITER, d], capture_output=True, text=True,
@@ -51,6 +74,20 @@ with tempdir() as d:
                 f"{res.stderr.strip()[:300]}")
         chk = run("check", f"{path}.{abs(hash(()))}.json", path, check=False)
         r.check(chk.returncode == 0, f"Q{deg}: hoct check: {chk.stdout[-500:]}{chk.stderr[-500:]}")
+    reference = os.path.join(d, "reference.vtu")
+    write_pl_reference(reference, f, 0.0, 1.0, 400)
+    run("tree", reference, "-q", "--json", reference + ".json")
+    # |Hessian f| <= sqrt(2.2^2 + 1.44^2 + 2 x 1.86^2) < 4 on the unit square.
+    reference_bound = 4.0 * (1.0 / 400) ** 2 / 4
+    for deg in (1, 2, 3):
+        err = q1_error() if deg == 1 else 0.0
+        bound = 1.05 * err + reference_bound + 1e-12
+        bn = bottleneck(f"{os.path.join(d, f'q{deg}.pvd')}.{abs(hash(()))}.json",
+                        reference + ".json")
+        print(f"DOLFINx Q{deg}: sup |f - f_h| ~ {err:.3g}; bottleneck to the PL reference "
+              f"{bn['max']:.3g}, global {bn['global']:.3g} (bound {bound:.3g})", flush=True)
+        r.check(max(bn["max"], bn["global"]) <= bound,
+                f"DOLFINx Q{deg}: bottleneck {bn} to the PL reference exceeds {bound:.3g}")
     compare_trees(r, "DOLFINx Q3 (GLL nodes) vs Q2", trees[3], trees[2], tol=1e-9,
                   position_tol=1e-7)
     for deg in (2, 3):
