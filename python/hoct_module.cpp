@@ -81,7 +81,8 @@ PyMesh from_arrays(py::array_t<double, py::array::c_style | py::array::forcecast
                    const std::vector<py::array_t<int64_t, py::array::c_style>> &blocks,
                    const std::vector<py::array_t<int64_t, py::array::c_style>> &types,
                    py::array_t<double, py::array::c_style | py::array::forcecast> values,
-                   double merge_tolerance, const std::string &field_name, bool float32_points) {
+                   double merge_tolerance, const std::string &field_name, bool float32_points,
+                   bool float32_values) {
   if (points.ndim() != 2 || (points.shape(1) != 2 && points.shape(1) != 3))
     throw Error("from_arrays: points must have shape (n, 2) or (n, 3)");
   if (values.ndim() != 1 || values.shape(0) != points.shape(0))
@@ -95,6 +96,8 @@ PyMesh from_arrays(py::array_t<double, py::array::c_style | py::array::forcecast
   in.values.assign(values.data(), values.data() + values.shape(0));
   if (float32_points)
     in.coordinate_precision = 0x1p-24;
+  if (float32_values)
+    in.value_precision = 0x1p-24;
   int64_t first = 0; // the cell index of the block's first cell, for messages
   for (std::size_t b = 0; b < blocks.size(); ++b) {
     const auto &cells = blocks[b];

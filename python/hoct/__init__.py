@@ -142,7 +142,7 @@ def _float32(a):
 def _from_arrays(points, cells, values, degree, cell_types, what, tolerance=-1.0, field="f"):
     import numpy as np
 
-    float32 = _float32(points)
+    float32 = _float32(points), _float32(values)
     points = _args.real_array(points, what + ": points")
     values = _args.real_array(values, what + ": values")
     cells = _args.index_array(cells, what + ": cells")
@@ -179,7 +179,7 @@ def _from_arrays(points, cells, values, degree, cell_types, what, tolerance=-1.0
             raise HoctError("%s: cell %d has VTK type %d, which does not match %d-node cells%s"
                             % (what, i, t, n, "" if degree is None else " of degree %d" % degree))
     return _hoct.from_arrays(points, [cells], [types.astype(np.int64)], values, tolerance, field,
-                             float32)
+                             *float32)
 
 
 def generate(name, degree=0, cells=0, seed=1, frequency=1.0, plateau=0.0, scale=1.0, offset=0.0,
@@ -273,6 +273,7 @@ def from_meshio(mesh, scalar=None, component=None, merge_duplicates=None):
                                                         "scalar (one-component)", listed))
         name = (floating or suitable)[0]
     values = np.asarray(data[name])
+    values_float32 = _float32(values)
     n = components(values)
     if not vector:
         if n != 1:
@@ -293,10 +294,10 @@ def from_meshio(mesh, scalar=None, component=None, merge_duplicates=None):
                 raise HoctError("%s: component %d: point data '%s' has %d components (0 to %d)"
                                 % (what, k, name, n, n - 1))
             values, label = values[:, k], "%s[%d]" % (name, k)
-    float32 = _float32(mesh.points)
+    float32 = _float32(mesh.points), values_float32
     points = _args.real_array(mesh.points, what + ": points")
     values = _args.real_array(values, what + ": values")
-    return _hoct.from_arrays(points, blocks, types, values, tolerance, label, float32)
+    return _hoct.from_arrays(points, blocks, types, values, tolerance, label, *float32)
 
 
 def contour_tree(mesh, simplify=None, threads=None, method="exact", refine=4, keep_flat=False,

@@ -63,6 +63,7 @@ MeshInput join_pieces(std::vector<MeshPiece> pieces, const std::string &where, b
         (ids && a.global_ids.size() != np))
       fail(pieces[k].file + ": ghost or id arrays do not match its points and cells");
     out.coordinate_precision = std::max(out.coordinate_precision, in.coordinate_precision);
+    out.value_precision = std::max(out.value_precision, in.value_precision);
     // Bit 1: used by a kept cell, bit 2: by a ghost cell.
     std::vector<uint8_t> use(np, 0);
     for (std::size_t c = 0; c < nc; ++c) {

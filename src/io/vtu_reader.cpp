@@ -1033,6 +1033,8 @@ MeshInput VtuFile::read() {
     else if (field != m.field_name)
       fail(where + ": field '" + field + "' differs from the first piece's '" + m.field_name + "'");
     const int comps = sa.attribute("NumberOfComponents").as_int(1);
+    if (type_of(sa).type == Scalar::F32)
+      m.value_precision = 0x1p-24;
     PooledVector<double> vals;
     if (comps == 1) {
       vals = read_doubles(sa, static_cast<std::size_t>(np));

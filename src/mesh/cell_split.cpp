@@ -382,6 +382,7 @@ MeshInput with_names(const MeshInput &in) {
   out.field_detail = in.field_detail;
   out.warnings = in.warnings;
   out.coordinate_precision = in.coordinate_precision;
+  out.value_precision = in.value_precision;
   return out;
 }
 

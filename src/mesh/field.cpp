@@ -26,10 +26,12 @@ void edge_node_values(const MeshInput &in, double reference, int64_t c, int k, b
 }
 
 // `amplification` units in the last place of the largest |value| (see Field::precision), plus
-// 1e-12 of the range.
-double data_precision(double lo, double hi, double amplification) {
+// 1e-12 of the range. The unit is a double's, or the stored values' own when coarser
+// (`value_precision`, the rounding of float32 data: one float32 unit is 2^-23).
+double data_precision(double lo, double hi, double amplification, double value_precision) {
   const double magnitude = std::max(std::abs(lo), std::abs(hi));
-  return amplification * std::numeric_limits<double>::epsilon() * magnitude + 1e-12 * (hi - lo);
+  const double unit = std::max(std::numeric_limits<double>::epsilon(), 2 * value_precision);
+  return amplification * unit * magnitude + 1e-12 * (hi - lo);
 }
 
 } // namespace
@@ -75,11 +77,12 @@ Field Field::build(const MeshInput &in, const Topology &topo, ProblemLog &proble
   for (const uint8_t d : f.input_degree_)
     max_input_degree = std::max(max_input_degree, static_cast<int>(d));
   f.precision_ = data_precision(f.min_value_, f.max_value_,
-                                std::max(2.0, lagrange_to_bernstein_norm(max_input_degree)));
+                                std::max(2.0, lagrange_to_bernstein_norm(max_input_degree)),
+                                in.value_precision);
   // Continuity is about the input's own values (a solver's rounding of |f|), so its tolerance
-  // is relative to their magnitude.
+  // is relative to their magnitude, and at least a few units of their storage.
   const double scale = std::max({std::abs(f.min_value_), std::abs(f.max_value_), 1e-300});
-  const double tol = kContinuityTolerance * scale;
+  const double tol = std::max(kContinuityTolerance, 8 * in.value_precision) * scale;
 
   // Edge degrees and owners: the lowest-id cell of the highest input degree.
   f.edge_degree_.resize(ne);
@@ -241,7 +244,7 @@ void Field::assemble_cells(const Topology &topo, const std::vector<int> &cell_de
 
 Field Field::build_from_polynomials(const Topology &topo,
                                     const std::vector<BernsteinTriangle> &cells,
-                                    ProblemLog &problems) {
+                                    ProblemLog &problems, double value_precision) {
   Field f;
   const int64_t nc = topo.num_cells(), ne = topo.num_edges();
   if (static_cast<int64_t>(cells.size()) != nc)
@@ -258,9 +261,9 @@ Field Field::build_from_polynomials(const Topology &topo,
   f.min_value_ = nc ? lo : 0.0;
   f.max_value_ = nc ? hi : 0.0;
   // The coefficients are the data: their rounding moves the field by as much.
-  f.precision_ = data_precision(f.min_value_, f.max_value_, 2.0);
-  const double tol =
-      kContinuityTolerance * std::max({std::abs(f.min_value_), std::abs(f.max_value_), 1e-300});
+  f.precision_ = data_precision(f.min_value_, f.max_value_, 2.0, value_precision);
+  const double tol = std::max(kContinuityTolerance, 8 * value_precision) *
+                     std::max({std::abs(f.min_value_), std::abs(f.max_value_), 1e-300});
   f.edge_degree_.assign(ne, 0);
   f.edge_offset_.assign(ne + 1, 0);
   std::vector<BernsteinPoly> edges(ne);

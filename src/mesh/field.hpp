@@ -47,10 +47,11 @@ public:
   // Builds the field from one polynomial per cell (the thesis' general case: e.g. fitted to
   // arbitrary samples with bernstein_from_samples). Each edge's polynomial is taken from the
   // lowest-id cell of highest degree around it; the other cell must agree within
-  // kContinuityTolerance, else a discontinuity is recorded.
+  // kContinuityTolerance (or 8 `value_precision`, the samples' storage rounding: see
+  // MeshInput), else a discontinuity is recorded.
   static Field build_from_polynomials(const Topology &topology,
                                       const std::vector<BernsteinTriangle> &cells,
-                                      ProblemLog &problems);
+                                      ProblemLog &problems, double value_precision = 0);
 
   int64_t num_cells() const { return static_cast<int64_t>(degree_.size()); }
   int degree(int64_t c) const { return degree_[c]; }
@@ -80,7 +81,8 @@ public:
   // The value subtracted from every node value (0 unless the data sit far from zero).
   double reference() const { return reference_; }
   // The smallest persistence the input's values resolve. Each node value is known to half a
-  // unit in its last place (at most eps |f|max / 2); that moves the Bernstein coefficients,
+  // unit in its last place (at most eps |f|max / 2; float32 data, MeshInput::value_precision:
+  // 2^-24 |f|max); that moves the Bernstein coefficients,
   // hence the field, by at most lagrange_to_bernstein_norm(degree) times as much, and a
   // persistence pair by twice that (the stability of persistence diagrams). Plus 1e-12 of the
   // range, the rounding floor of the computation itself (flat-region contraction).

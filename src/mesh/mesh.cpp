@@ -188,7 +188,7 @@ Mesh build_mesh_from_samples(const MeshInput &input, const std::vector<CellSampl
       }
     }
     if (fitted) {
-      m.field = Field::build_from_polynomials(m.topology, polys, m.problems);
+      m.field = Field::build_from_polynomials(m.topology, polys, m.problems, input.value_precision);
       m.geometry = Geometry::build(input, options.threads);
       check_geometry(m.geometry, m.topology, m.problems, options.threads);
       check_edge_geometry(m.geometry, m.topology, m.problems, options.threads);

@@ -61,6 +61,9 @@ struct MeshInput {
   // The rounding unit of the stored coordinates relative to their magnitude: 2^-24 for float32
   // files, 0 for doubles. Straight cells of a float32 file are straight within it (Geometry).
   double coordinate_precision = 0;
+  // The same for the stored values: 2^-24 for float32 arrays, 0 for doubles (and integers, and
+  // text whose digits cannot be known). The field's precision (Field::precision) counts it.
+  double value_precision = 0;
 
   // Cells in compressed-row form: the nodes of cell c are
   // cell_nodes[cell_offsets[c] .. cell_offsets[c+1]), cell_node_count(kind(c), d) of them for

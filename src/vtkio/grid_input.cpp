@@ -10,6 +10,8 @@
 #include <vtkIdList.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
+#include <vtkPointSet.h>
+#include <vtkPoints.h>
 #include <vtkUnsignedCharArray.h>
 #include <vtkUnstructuredGrid.h>
 
@@ -108,6 +110,13 @@ MeshPiece grid_piece(vtkDataSet *data, vtkDataArray *array, int component,
   m.field_name = described.describe(name);
   m.points.resize(static_cast<std::size_t>(np));
   m.values.resize(static_cast<std::size_t>(np));
+  // Float32 data are exact only to their own rounding (Geometry's straightness, Field's
+  // precision).
+  vtkPointSet *point_set = vtkPointSet::SafeDownCast(data);
+  if (point_set && point_set->GetPoints() && point_set->GetPoints()->GetDataType() == VTK_FLOAT)
+    m.coordinate_precision = 0x1p-24;
+  if (array->GetDataType() == VTK_FLOAT)
+    m.value_precision = 0x1p-24;
   std::vector<double> tuple(static_cast<std::size_t>(comps));
   for (vtkIdType i = 0; i < np; ++i) {
     double p[3];
