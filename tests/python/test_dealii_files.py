@@ -38,17 +38,17 @@ import sys
 import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from hoct_testing import Results, compare_trees, run, tempdir, tree_json  # noqa: E402
+from hoct_testing import (Results, bottleneck, compare_trees, run, tempdir, tree_json,  # noqa: E402
+                          write_pl_reference)
 
 PROJECT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "dealii")
 SKIP_HINT = "HOCT_WITH_DEALII=1 ./scripts/setup installs libdeal.ii-dev"
 
 try:
     import numpy as np
-    from vtkmodules.util.numpy_support import numpy_to_vtk, numpy_to_vtkIdTypeArray, vtk_to_numpy
+    from vtkmodules.util.numpy_support import vtk_to_numpy
     from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkPoints
-    from vtkmodules.vtkCommonDataModel import (vtkCellArray, vtkLagrangeTriangle,
-                                               vtkUnstructuredGrid)
+    from vtkmodules.vtkCommonDataModel import vtkLagrangeTriangle, vtkUnstructuredGrid
     from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader, vtkXMLUnstructuredGridWriter
 except ImportError as e:
     print(f"SKIPPED: numpy or VTK's Python modules are missing ({e})")
@@ -290,8 +290,7 @@ def check_against_reference(name, dealii_json, reference_json, fh, reference_bou
     X, Y = np.meshgrid(s, s)
     err = float(np.abs(fh(X.ravel(), Y.ravel()) - f(X.ravel(), Y.ravel())).max())
     bound = 1.05 * err + reference_bound + 1e-6
-    cmp = json.loads(run("compare", dealii_json, reference_json, "--json").stdout)
-    bn = cmp["bottleneck"]
+    bn = bottleneck(dealii_json, reference_json)
     print(f"{name}: sup |f - f_h| ~ {err:.3g}; bottleneck to the PL reference join "
           f"{bn['join']:.3g}, split {bn['split']:.3g}, global {bn['global']:.3g} "
           f"(bound {bound:.3g})", flush=True)
@@ -353,37 +352,12 @@ def quad_cases(d, reference, reference_bound):
 
 
 def pl_reference(d):
-    """f at the vertices of 400 x 400 squares (each cut into two triangles): its PL tree, and the
-    bound |f - PL| <= M h^2 / 4 on right triangles of legs h (M >= |Hessian of f|:
-    sqrt(9^2 + 4^2 + 2 x 6^2) = 13)."""
+    """The PL tree of f on 400 x 400 squares of [0, 2]^2 (hoct_testing.write_pl_reference), and
+    its bound |f - PL| <= M h^2 / 4 (M >= |Hessian of f|: sqrt(9^2 + 4^2 + 2 x 6^2) = 13)."""
     n = 400
     h = 2.0 / n
     path = os.path.join(d, "reference.vtu")
-    s = np.arange(n + 1) * h
-    X, Y = np.meshgrid(s, s)
-    g = vtkUnstructuredGrid()
-    pts = vtkPoints()
-    pts.SetDataTypeToDouble()
-    xyz = np.column_stack([X.ravel(), Y.ravel(), np.zeros(X.size)])
-    pts.SetData(numpy_to_vtk(xyz, deep=True))
-    g.SetPoints(pts)
-    I, J = np.meshgrid(np.arange(n), np.arange(n))
-    v = (I + (n + 1) * J).ravel()
-    tris = np.concatenate([np.column_stack([v, v + 1, v + n + 2]),
-                           np.column_stack([v, v + n + 2, v + n + 1])])
-    cells = vtkCellArray()
-    cells.SetData(numpy_to_vtkIdTypeArray(np.arange(0, 3 * len(tris) + 1, 3, dtype=np.int64),
-                                          deep=True),
-                  numpy_to_vtkIdTypeArray(tris.ravel().astype(np.int64), deep=True))
-    g.SetCells(5, cells)
-    vals = numpy_to_vtk(f(X.ravel(), Y.ravel()), deep=True)
-    vals.SetName("f")
-    g.GetPointData().SetScalars(vals)
-    w = vtkXMLUnstructuredGridWriter()
-    w.SetFileName(path)
-    w.SetInputData(g)
-    if not w.Write():
-        raise RuntimeError(f"VTK could not write {path}")
+    write_pl_reference(path, f, 0.0, 2.0, n)
     out = os.path.join(d, "reference.json")
     run("tree", path, "--json", out, "--no-timings")
     return out, 13 * h * h / 4
