@@ -3,15 +3,19 @@ resolve, Tree.precision) must count their rounding, not a double's, whichever wa
 a .vtu with a Float32 array (written by meshio, an independent writer), a legacy .vtk (read
 through VTK), and float32 arrays given to from_arrays. A pair of persistence 2^-23 around 1.5 is
 resolved by doubles and at the data's resolution in float32: flagged uncertain there only."""
+import json
 import os
 import subprocess
-import json
+import sys
 import tempfile
 
 import meshio
 import numpy as np
 
 import hoct
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "python"))
+from hoct_testing import square_triangles  # noqa: E402
 
 HOCT = os.environ.get("HOCT_BIN", "hoct")
 N = 8
@@ -22,13 +26,7 @@ def grid():
     f = 1.5 + 2^-23 G, G = 100 i + 10 j (integers: exact in float32, whose unit there is 2^-23)
     except at vertex (4, 4), set one unit below its lowest neighbour (3, 3): a minimum whose
     pair with the join saddle (3, 3) has a persistence of one float32 unit."""
-    s = np.arange(N + 1) / N
-    X, Y = np.meshgrid(s, s)
-    pts = np.column_stack([X.ravel(), Y.ravel(), np.zeros(X.size)])
-    I, J = np.meshgrid(np.arange(N), np.arange(N))
-    v = (I + (N + 1) * J).ravel()
-    tris = np.concatenate([np.column_stack([v, v + 1, v + N + 2]),
-                           np.column_stack([v, v + N + 2, v + N + 1])])
+    pts, tris = square_triangles(0.0, 1.0, N)
     i, j = np.rint(pts[:, 0] * N), np.rint(pts[:, 1] * N)
     G = 100 * i + 10 * j
     G[4 + (N + 1) * 4] = 100 * 3 + 10 * 3 - 1

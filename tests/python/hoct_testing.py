@@ -87,6 +87,15 @@ def write_pl_reference(path, f, lo, hi, n):
     independent writer) as a .vtu of VTK_TRIANGLE cells. Its PL interpolant differs from f by
     at most M h^2 / 4 (M >= the Frobenius norm of f's Hessian): the caller's bound."""
     import meshio
+
+    xyz, tris = square_triangles(lo, hi, n)
+    meshio.write(path, meshio.Mesh(xyz, [("triangle", tris)],
+                                   point_data={"f": f(xyz[:, 0], xyz[:, 1])}), binary=True)
+
+
+def square_triangles(lo, hi, n):
+    """The vertices (i + (n + 1) j at (lo + i h, lo + j h), z = 0) and triangles of n x n squares
+    of [lo, hi]^2, each cut along its diagonal from (i, j) to (i + 1, j + 1)."""
     import numpy as np
 
     s = lo + (hi - lo) * np.arange(n + 1) / n
@@ -96,8 +105,7 @@ def write_pl_reference(path, f, lo, hi, n):
     v = (I + (n + 1) * J).ravel()
     tris = np.concatenate([np.column_stack([v, v + 1, v + n + 2]),
                            np.column_stack([v, v + n + 2, v + n + 1])])
-    meshio.write(path, meshio.Mesh(xyz, [("triangle", tris)],
-                                   point_data={"f": f(X.ravel(), Y.ravel())}), binary=True)
+    return xyz, tris
 
 
 def bottleneck(tree_a, tree_b):
