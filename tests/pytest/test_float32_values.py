@@ -72,3 +72,53 @@ def test_float32_files_report_their_own_precision():
                 assert np.isclose(tree["stats"]["precision"], want, rtol=1e-12), (path, tree["stats"])
                 flagged = [p for p in tree["pairs"] if p.get("uncertain")]
                 assert len(flagged) == (1 if dtype == np.float32 else 0), (path, tree["pairs"])
+
+
+def p2_pair(origin):
+    """Two straight P2 triangles of the square origin + [0, 1]^2 (meshio's triangle6 order:
+    corners, then the midpoints of edges 01, 12, 20), sharing their corners 0 and 2 but each with
+    its own copy of the shared edge's midpoint (points 5 and 6, at the same position)."""
+    o = np.asarray(origin, dtype=np.float64)
+    pts = np.array([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0], [0.5, 0, 0], [0.5, 0.5, 0],
+                    [0.5, 0.5, 0], [1, 0.5, 0], [0.5, 1, 0], [0, 0.5, 0]]) + o
+    cells = np.array([[0, 1, 2, 4, 7, 5], [0, 2, 3, 6, 8, 9]])
+    return pts, cells
+
+
+def test_float32_values_of_a_duplicated_edge_node_may_differ_by_their_rounding():
+    """The two copies of an edge node hold one unit of float32 apart (a solver's value rounded
+    from two cells' doubles): continuous within the values' own precision, not a discontinuity;
+    a jump of 64 units is still one."""
+    pts, cells = p2_pair((0, 0, 0))
+    f = (1.25 + 0.1 * pts[:, 0] + 0.05 * pts[:, 1] ** 2).astype(np.float32)
+    f[6] = np.nextafter(f[5], np.float32(2))
+    hoct.contour_tree(hoct.from_arrays(pts, cells, f))
+    f[6] = f[5] + np.float32(64 * 2.0 ** -23)
+    try:
+        hoct.from_arrays(pts, cells, f)
+    except hoct.HoctError as e:
+        assert "discontinu" in str(e)
+    else:
+        raise AssertionError("a jump of 64 float32 units was accepted")
+
+
+def test_float32_points_through_vtk_are_straight_within_their_rounding():
+    """Straight P2 cells far from the origin, their midpoints rounded to float32 (2 of 5 move,
+    by up to 6e-5): stored as Float32 in a legacy .vtk (read by VTK) they are straight within
+    float32 rounding, as in a .vtu; the same rounded points stored as doubles are curved."""
+    corners = (np.array([[0, 0, 0], [0.77771, 0.1113, 0], [0.9137, 0.8371, 0], [0.1219, 0.9, 0]])
+               + [1000.1, -2000.3, 0]).astype(np.float32).astype(np.float64)
+    edges = [(0, 1), (1, 2), (2, 0), (2, 3), (3, 0)]
+    mids = np.array([(corners[a] + corners[b]) / 2 for a, b in edges])
+    rounded = mids.astype(np.float32).astype(np.float64)
+    assert (rounded != mids).any()
+    pts = np.concatenate([corners, rounded])
+    cells = np.array([[0, 1, 2, 4, 5, 6], [0, 2, 3, 6, 7, 8]])  # triangle6: corners, 01, 12, 20
+    with tempfile.TemporaryDirectory(prefix="hoct-f32-") as d:
+        for dtype, geometry in ((np.float32, "planar-straight"), (np.float64, "planar-curved")):
+            path = os.path.join(d, f"p_{np.dtype(dtype).name}.vtk")
+            meshio.write(path, meshio.Mesh(pts.astype(dtype), [("triangle6", cells)],
+                                           point_data={"f": pts[:, 0] - 1000}), binary=True)
+            info = json.loads(subprocess.run([HOCT, "info", path, "--json"], check=True,
+                                             capture_output=True, text=True).stdout)
+            assert info["geometry"] == geometry, (path, info["geometry"])
