@@ -9,8 +9,10 @@ of persistence diagrams the bottleneck distance (join, split, global) is at most
 sup |f - f_h| + sup |f - PL|. sup |f - f_h| is computed with Gmsh's own basis functions (not
 hoct's) at a grid of points in every cell; sup |f - PL| <= M h^2 / 4 with M = 13 >= |Hessian f|.
 The bound shrinks with the order (Q1 ~ 1e-2, Q3 ~ 1e-4), so a missed or invented feature above it
-fails; each tree must also pass `hoct check`.
+fails; each tree must also pass `hoct check`, and its stats give the mesh build's phases
+(the split among them) within time_check_s.
 """
+import json
 import math
 import os
 import sys
@@ -94,6 +96,14 @@ with tempdir() as d:
         R.check('"quadrilateral"' in info, f"{label}: hoct info does not list quadrilaterals")
         tree = path + ".json"
         run("tree", path, "-q", "--json", tree)
+        with open(tree) as fp:
+            stats = json.load(fp)["stats"]
+        parts = ["time_cell_split_s", "time_topology_s", "time_geometry_s", "time_bernstein_s",
+                 "time_geometry_checks_s"]
+        R.check(all(k in stats for k in parts) and
+                sum(stats[k] for k in parts) <= stats["time_check_s"] + 1e-6,
+                f"{label}: the mesh build's phases {[stats.get(k) for k in parts]} against "
+                f"time_check_s {stats.get('time_check_s')}")
         c = run("check", tree, path, check=False)
         R.check(c.returncode == 0, f"{label}: hoct check: {c.stdout[-600:]}{c.stderr[-600:]}")
         bound = 1.05 * err + reference_bound + 1e-12
