@@ -233,6 +233,11 @@ PYBIND11_MODULE(_hoct, m) {
 
   py::class_<PyTree>(m, "Tree")
       .def_property_readonly("method", [](const PyTree &t) { return t.tree.method; })
+      // "contour tree", or "Reeb graph" on a domain that is not a disk or a sphere (its level
+      // sets may form loops: `loops` of them, parallel arcs in `arcs`).
+      .def_property_readonly(
+          "kind", [](const PyTree &t) { return t.tree.reeb_graph ? "Reeb graph" : "contour tree"; })
+      .def_property_readonly("loops", [](const PyTree &t) { return t.tree.loops; })
       .def_property_readonly(
           "input",
           [](const PyTree &t) -> py::object {

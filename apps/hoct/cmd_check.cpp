@@ -7,6 +7,7 @@
 #include "io/tree_json.hpp"
 #include "load_mesh.hpp"
 #include "tree_input.hpp"
+#include "tree_summary.hpp"
 #include "util/error.hpp"
 
 #include <cstdio>
@@ -39,8 +40,8 @@ void run_check(const CheckOptions &o) {
   // and positions are checked, not their types against the exact field.
   opt.check_types = tree.method == "exact";
   const TreeCheckReport r = check_tree(tree, lm.mesh, opt);
-  std::printf("%s against %s: %zu nodes, %zu arcs (%s tree%s)\n", o.tree.c_str(), o.file.c_str(),
-              tree.nodes.size(), tree.arcs.size(), tree.method.c_str(),
+  std::printf("%s against %s: %zu nodes, %zu arcs (%s %s%s)\n", o.tree.c_str(), o.file.c_str(),
+              tree.nodes.size(), tree.arcs.size(), tree.method.c_str(), graph_kind(tree).c_str(),
               opt.check_types ? "" : "; types not compared with the exact field");
   if (o.verbose)
     for (const auto &s : r.skipped)

@@ -20,10 +20,11 @@ struct CompareOptions {
 
 void run_compare(const CompareOptions &o) {
   const TreeResult a = read_tree_json(o.a), b = read_tree_json(o.b);
-  const PersistencePair::Kind kinds[3] = {PersistencePair::Kind::Join, PersistencePair::Kind::Split,
-                                          PersistencePair::Kind::Global};
-  double dist[3], overall = 0;
-  for (int i = 0; i < 3; ++i) {
+  const PersistencePair::Kind kinds[4] = {PersistencePair::Kind::Join, PersistencePair::Kind::Split,
+                                          PersistencePair::Kind::Global,
+                                          PersistencePair::Kind::Loop};
+  double dist[4], overall = 0;
+  for (int i = 0; i < 4; ++i) {
     dist[i] = bottleneck_distance(pair_points(a.pairs, kinds[i]), pair_points(b.pairs, kinds[i]));
     overall = std::max(overall, dist[i]);
   }
@@ -32,8 +33,11 @@ void run_compare(const CompareOptions &o) {
     nlohmann::ordered_json j;
     j["a"] = o.a;
     j["b"] = o.b;
-    j["bottleneck"] = {
-        {"join", dist[0]}, {"split", dist[1]}, {"global", dist[2]}, {"max", overall}};
+    j["bottleneck"] = {{"join", dist[0]},
+                       {"split", dist[1]},
+                       {"global", dist[2]},
+                       {"loop", dist[3]},
+                       {"max", overall}};
     const char *names[4] = {"minimum", "maximum", "saddle", "regular"};
     for (int i = 0; i < 4; ++i)
       j["counts"][names[i]] = {ca[i], cb[i]};
@@ -47,8 +51,8 @@ void run_compare(const CompareOptions &o) {
     std::printf("%-22s %14lld %14lld\n", names[i], static_cast<long long>(ca[i]),
                 static_cast<long long>(cb[i]));
   std::printf("%-22s %14zu %14zu\n", "pairs", a.pairs.size(), b.pairs.size());
-  std::printf("bottleneck distance: join %.6g, split %.6g, global %.6g, max %.6g\n", dist[0],
-              dist[1], dist[2], overall);
+  std::printf("bottleneck distance: join %.6g, split %.6g, global %.6g, loop %.6g, max %.6g\n",
+              dist[0], dist[1], dist[2], dist[3], overall);
 }
 
 } // namespace

@@ -6,6 +6,12 @@
 
 namespace hoct::cli {
 
+std::string graph_kind(const TreeResult &tree) {
+  if (!tree.reeb_graph)
+    return "tree";
+  return "Reeb graph (" + std::to_string(tree.loops) + (tree.loops == 1 ? " loop)" : " loops)");
+}
+
 void print_tree_summary(const std::string &file, const Mesh &mesh, const TreeResult &tree,
                         double total_seconds) {
   const auto counts = tree.type_counts();
@@ -13,17 +19,18 @@ void print_tree_summary(const std::string &file, const Mesh &mesh, const TreeRes
   for (const auto &n : tree.nodes)
     ++loc[to_string(n.location)];
   const std::string detail = mesh.field_detail.empty() ? "" : " " + mesh.field_detail;
+  const std::string what = graph_kind(tree);
   if (mesh.origins.identity())
-    std::printf("%s: field '%s'%s, %lld cells (max degree %d), %s tree\n", file.c_str(),
+    std::printf("%s: field '%s'%s, %lld cells (max degree %d), %s %s\n", file.c_str(),
                 mesh.field_name.c_str(), detail.c_str(),
                 static_cast<long long>(mesh.topology.num_cells()), mesh.field.max_degree(),
-                tree.method.c_str());
+                tree.method.c_str(), what.c_str());
   else
-    std::printf("%s: field '%s'%s, %lld cells (%s; as %lld triangles, max degree %d), %s tree\n",
+    std::printf("%s: field '%s'%s, %lld cells (%s; as %lld triangles, max degree %d), %s %s\n",
                 file.c_str(), mesh.field_name.c_str(), detail.c_str(),
                 static_cast<long long>(mesh.num_input_cells()), mesh.describe_input_cells().c_str(),
                 static_cast<long long>(mesh.topology.num_cells()), mesh.field.max_degree(),
-                tree.method.c_str());
+                tree.method.c_str(), what.c_str());
   std::printf("  nodes: %zu (minima %lld, maxima %lld, saddles %lld", tree.nodes.size(),
               static_cast<long long>(counts[0]), static_cast<long long>(counts[1]),
               static_cast<long long>(counts[2]));

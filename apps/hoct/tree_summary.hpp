@@ -8,6 +8,9 @@
 
 namespace hoct::cli {
 
+// "tree", or "Reeb graph (2 loops)" for a Reeb graph.
+std::string graph_kind(const TreeResult &tree);
+
 void print_tree_summary(const std::string &file, const Mesh &mesh, const TreeResult &tree,
                         double total_seconds);
 

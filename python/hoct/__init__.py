@@ -327,10 +327,12 @@ def contour_tree(mesh, simplify=None, threads=None, method="exact", refine=4, ke
 
 
 def _to_networkx(tree):
-    """The tree as a networkx.Graph with node attributes type, value, position, location."""
+    """The tree as a networkx.Graph with node attributes type, value, position, location; a
+    Reeb graph as a networkx.MultiGraph (parallel arcs are its loops: nx.cycle_basis lists
+    them once they are told apart, e.g. through nx.Graph(nx.line_graph(g)))."""
     import networkx as nx
 
-    g = nx.Graph()
+    g = nx.MultiGraph() if tree.kind == "Reeb graph" else nx.Graph()
     for i, (t, v, p, loc) in enumerate(zip(tree.types, tree.values, tree.positions, tree.locations)):
         g.add_node(i, type=t, value=float(v), position=tuple(map(float, p)), location=loc)
     g.add_edges_from(map(tuple, tree.arcs.tolist()))

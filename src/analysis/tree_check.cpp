@@ -66,6 +66,42 @@ Sectors count_sectors(const std::vector<int8_t> &sign, bool closed) {
   return s;
 }
 
+// The most loops a Reeb graph of a function on the surface can have: per component, its first
+// Betti number 1 - chi with boundary (2g + b - 1), and for a closed component g = (2 - chi) / 2
+// if the surface is orientable (a Reeb graph has at most g loops there: Cole-McLaughlin et al.
+// 2003), else 2 - chi. 0 when every component is a disk or a sphere.
+int64_t max_reeb_loops(const Topology &t) {
+  const int64_t nv = t.num_vertices();
+  UnionFind uf(static_cast<std::size_t>(nv)), boundary(static_cast<std::size_t>(nv));
+  for (int64_t e = 0; e < t.num_edges(); ++e) {
+    const auto &ev = t.edge_vertices(e);
+    uf.unite(ev[0], ev[1]);
+    if (t.is_boundary_edge(e))
+      boundary.unite(ev[0], ev[1]);
+  }
+  // Per component (its root): Euler characteristic and boundary loops.
+  std::vector<int64_t> chi(static_cast<std::size_t>(nv), 0), loops(nv, 0);
+  std::vector<uint8_t> on_boundary(static_cast<std::size_t>(nv), 0);
+  for (int64_t v = 0; v < nv; ++v)
+    ++chi[uf.find(v)];
+  for (int64_t e = 0; e < t.num_edges(); ++e) {
+    --chi[uf.find(t.edge_vertices(e)[0])];
+    if (t.is_boundary_edge(e))
+      for (int64_t v : t.edge_vertices(e))
+        on_boundary[v] = 1;
+  }
+  for (int64_t c = 0; c < t.num_cells(); ++c)
+    ++chi[uf.find(t.cell_vertices(c)[0])];
+  for (int64_t v = 0; v < nv; ++v)
+    if (on_boundary[v] && boundary.find(v) == v)
+      ++loops[uf.find(v)];
+  int64_t most = 0;
+  for (int64_t v = 0; v < nv; ++v)
+    if (uf.find(v) == v)
+      most += loops[v] > 0 ? 1 - chi[v] : (t.orientable() ? (2 - chi[v]) / 2 : 2 - chi[v]);
+  return most;
+}
+
 class Checker {
 public:
   Checker(const TreeResult &t, const Mesh &m, const TreeCheckOptions &o)
@@ -80,6 +116,7 @@ public:
     if (m.complete) {
       const Topology &t = m.topology;
       sphere_ = t.components() == 1 && t.euler_characteristic() == 2 && t.boundary_loops() == 0;
+      max_loops_ = max_reeb_loops(t);
     }
   }
 
@@ -142,11 +179,15 @@ private:
       const int64_t hi = lo == x ? y : x;
       ++deg_[lo][0];
       ++deg_[hi][1];
-      if (uf.find(x) == uf.find(y))
-        fail("tree", {x, y}, {a},
-             "arc " + std::to_string(a) + " closes a cycle (" + node_str(x) + " and " +
-                 node_str(y) + " are already connected)");
-      else {
+      if (uf.find(x) == uf.find(y)) {
+        // A loop of the level sets: only where the surface has holes or handles.
+        if (max_loops_ == 0)
+          fail("tree", {x, y}, {a},
+               "arc " + std::to_string(a) + " closes a cycle (" + node_str(x) + " and " +
+                   node_str(y) +
+                   " are already connected), but the domain has no holes or "
+                   "handles (a contour tree has no loops)");
+      } else {
         uf.unite(x, y);
         ++joined;
       }
@@ -160,17 +201,31 @@ private:
       fail("tree", {}, {},
            "the tree has " + std::to_string(tree_components) +
                " connected component(s), the mesh " + std::to_string(components));
-    if (n_ > 0 && na != n_ - components)
+    // The loops: arcs beyond a spanning forest (0 for a tree).
+    const int64_t loops = na - (n_ - tree_components);
+    if (n_ > 0 && max_loops_ == 0 && na != n_ - components)
       fail("tree", {}, {},
            std::to_string(na) + " arcs for " + std::to_string(n_) + " nodes and " +
                std::to_string(components) + " component(s) (a tree has nodes - 1 arcs)");
+    if (n_ > 0 && loops > max_loops_ && max_loops_ > 0)
+      fail("loops", {}, {},
+           "the graph has " + std::to_string(loops) +
+               " loops, but a Reeb graph on this surface "
+               "has at most " +
+               std::to_string(max_loops_) + " (genus and boundary loops)");
+    if (n_ > 0 && loops != tree_.loops)
+      fail("loops", {}, {},
+           "the graph has " + std::to_string(loops) +
+               " loops (arcs - nodes + components), but "
+               "it records " +
+               std::to_string(tree_.loops));
     int64_t euler = 0;
     for (int64_t i = 0; i < n_; ++i)
       euler += deg_[i][0] + deg_[i][1] - 2;
-    if (n_ > 0 && euler != -2 * components)
+    if (n_ > 0 && euler != 2 * loops - 2 * components)
       fail("euler", {}, {},
            "sum of (degree - 2) over the nodes is " + std::to_string(euler) + ", not " +
-               std::to_string(-2 * components));
+               std::to_string(2 * loops - 2 * components) + " (2 (loops - components))");
     for (int64_t i = 0; i < n_; ++i)
       degree_vs_type(i, components);
   }
@@ -800,6 +855,7 @@ private:
   // On a sphere an inner saddle with k lower and k upper sectors has exactly k + 1 arcs (each
   // lower sector joined below cuts the sphere); on a disk the boundary allows up to 2k.
   bool sphere_ = false;
+  int64_t max_loops_ = 0;               // of a Reeb graph on this surface (max_reeb_loops)
   std::vector<std::array<int, 2>> deg_; // up, down
   std::vector<int64_t> vertex_offset_;
   std::vector<std::pair<int64_t, int>> vertex_cells_;

@@ -7,6 +7,7 @@
 #include "exact/exact_arc_graph.hpp"
 #include "exact/graph_assembly.hpp"
 #include "exact/graph_sweeps.hpp"
+#include "exact/seam_gluing.hpp"
 #include "util/page_pool.hpp"
 #include "util/parallel_for.hpp"
 #include "util/stopwatch.hpp"
@@ -91,7 +92,17 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
 
   // 6. The join and split sweeps, 7. their merge.
   SweepTimings sweep_time;
-  ContourTree ct = sweep_exact_graph(mesh, en, graph, opt, sweep_time);
+  const std::vector<uint8_t> keep =
+      opt.cut ? seam_nodes(*opt.cut, en, graph.size()) : std::vector<uint8_t>{};
+  ContourTree ct = sweep_exact_graph(mesh, en, graph, opt, sweep_time, keep);
+  // 8. On a surface cut open, the disks' tree glued back along the seams: the Reeb graph.
+  GluedGraph glued;
+  if (opt.cut) {
+    Stopwatch glue_clock;
+    glued = glue_paths(ct, seam_gluing(*opt.cut, en, graph.values), !opt.augmented);
+    ct = std::move(glued.graph);
+    time.gluing = glue_clock.seconds();
+  }
   const int64_t contracted = contract_stand_in(degenerate, opt.augmented, ct);
   time.sweeps = sweep_time.order + sweep_time.sweeps;
   time.merge = sweep_time.merge;
@@ -101,7 +112,7 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
   }
   clock.lap();
 
-  // 8. The result: the tree's nodes in the mesh, and the graph to draw its arcs.
+  // 9. The result: the tree's nodes in the mesh, and the graph to draw its arcs.
   TreeResult r = tree_result(mesh, en, graph, ct, opt.augmented);
   offset_values(r, mesh.field.reference());
   if (opt.arc_geometry)
@@ -122,6 +133,12 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
   n.fallback_error = degenerate.max_error;
   n.fallback_arcs_contracted = contracted;
   n.unresolved_interior_zeros = totals.unresolved_zeros;
+  if (opt.cut) {
+    r.reeb_graph = true;
+    r.loops = graph_loops(ct);
+    r.stats.seam_edges = static_cast<int64_t>(opt.cut->seams.size());
+    r.stats.seam_paths_nonmonotone = glued.nonmonotone_paths;
+  }
   // The cell phase's two passes: their shares of its wall time are their shares of the threads'
   // time in them (on one thread, their own times).
   const double passes = totals.critical_seconds + totals.connection_seconds;

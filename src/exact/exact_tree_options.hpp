@@ -7,6 +7,8 @@
 
 namespace hoct {
 
+struct CutSurface;
+
 struct ExactTreeOptions {
   bool augmented = false;
   // Sub-triangles per edge in the degenerate-cell fallback (0: 2 * degree, at least 4).
@@ -20,6 +22,9 @@ struct ExactTreeOptions {
   // Keep the graph with the geometry of every connection (certified paths, edge pieces), so
   // that arcs can be drawn on the surface (compute_arc_paths). Costs memory; off by default.
   bool arc_geometry = false;
+  // The mesh is this surface cut open into disks (mesh/cut_surface): the tree of the disks is
+  // glued back along the cut's seams into the surface's Reeb graph (exact/seam_gluing).
+  const CutSurface *cut = nullptr;
   // Called after each phase with its name and duration (seconds), e.g. for progress output.
   std::function<void(const std::string &, double)> progress;
 };

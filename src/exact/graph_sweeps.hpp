@@ -11,6 +11,6 @@ namespace hoct {
 
 ContourTree sweep_exact_graph(const Mesh &mesh, const EdgeNodes &edge_nodes,
                               const ExactGraph &graph, const ExactTreeOptions &options,
-                              SweepTimings &timings);
+                              SweepTimings &timings, std::span<const uint8_t> keep = {});
 
 } // namespace hoct

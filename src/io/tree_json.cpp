@@ -80,6 +80,9 @@ std::string to_json_text(const TreeResult &t, bool timings) {
                       {"cells", t.input->cells},
                       {"field", t.input->field},
                       {"fingerprint", t.input->hex()}});
+  // A Reeb graph (a domain that is not a disk or a sphere) with its loops, or a contour tree.
+  w.field("kind", t.reeb_graph ? "Reeb graph" : "contour tree");
+  w.field("loops", t.loops);
   if (!t.forced.empty()) {
     w.field("forced", true);
     w.field("forced_reasons", t.forced);
@@ -174,8 +177,8 @@ NodeLocation parse_location(const std::string &s) {
 }
 
 PersistencePair::Kind parse_kind(const std::string &s) {
-  for (auto k :
-       {PersistencePair::Kind::Join, PersistencePair::Kind::Split, PersistencePair::Kind::Global})
+  for (auto k : {PersistencePair::Kind::Join, PersistencePair::Kind::Split,
+                 PersistencePair::Kind::Global, PersistencePair::Kind::Loop})
     if (s == to_string(k))
       return k;
   throw std::invalid_argument("unknown pair kind '" + s + "'");
@@ -210,6 +213,12 @@ TreeResult read_tree_json(const std::string &path) {
     TreeResult t;
     t.method = j.value("method", "");
     t.augmented = j.value("augmented", false);
+    const std::string kind = j.value("kind", std::string("contour tree"));
+    if (kind != "contour tree" && kind != "Reeb graph")
+      throw std::invalid_argument("\"kind\" must be \"contour tree\" or \"Reeb graph\", got " +
+                                  j.at("kind").dump());
+    t.reeb_graph = kind == "Reeb graph";
+    t.loops = j.value("loops", int64_t{0});
     if (j.contains("input")) {
       const auto &in = j.at("input");
       InputFingerprint f;

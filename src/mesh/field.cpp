@@ -341,4 +341,25 @@ void Field::pin_edge_ends(const Topology &topo, int threads) {
   });
 }
 
+Field Field::on_cut_topology(const Topology &cut, std::span<const int64_t> edge_origin,
+                             std::span<const int64_t> vertex_origin) const {
+  Field f = *this;
+  const int64_t ne = cut.num_edges();
+  f.edge_degree_.resize(static_cast<std::size_t>(ne));
+  f.edge_offset_.assign(static_cast<std::size_t>(ne) + 1, 0);
+  for (int64_t e = 0; e < ne; ++e) {
+    f.edge_degree_[e] = edge_degree_[edge_origin[e]];
+    f.edge_offset_[e + 1] = f.edge_offset_[e] + f.edge_degree_[e] + 1;
+  }
+  f.edge_coef_.resize(static_cast<std::size_t>(f.edge_offset_[ne]));
+  for (int64_t e = 0; e < ne; ++e) {
+    const auto from = edge_coefficients(edge_origin[e]);
+    std::copy(from.begin(), from.end(), f.edge_coef_.begin() + f.edge_offset_[e]);
+  }
+  f.vertex_value_.resize(vertex_origin.size());
+  for (std::size_t v = 0; v < vertex_origin.size(); ++v)
+    f.vertex_value_[v] = vertex_value_[vertex_origin[v]];
+  return f;
+}
+
 } // namespace hoct

@@ -53,6 +53,12 @@ public:
                                       const std::vector<BernsteinTriangle> &cells,
                                       ProblemLog &problems, double value_precision = 0);
 
+  // The same field on `cut`, a copy of its topology with some vertices and edges duplicated
+  // (mesh/cut_surface): the same cells and polynomials; edge e of `cut` carries the polynomial
+  // of edge edge_origin[e] (in the same orientation), vertex v the value of vertex_origin[v].
+  Field on_cut_topology(const Topology &cut, std::span<const int64_t> edge_origin,
+                        std::span<const int64_t> vertex_origin) const;
+
   int64_t num_cells() const { return static_cast<int64_t>(degree_.size()); }
   int degree(int64_t c) const { return degree_[c]; }
   int input_degree(int64_t c) const { return input_degree_[c]; }

@@ -1,6 +1,7 @@
 #include "pipeline/compute_tree.hpp"
 
 #include "exact/exact_contour_tree.hpp"
+#include "mesh/cut_surface.hpp"
 #include "pipeline/domain_check.hpp"
 #include "pl/pl_contour_tree.hpp"
 #include "pl/pl_mesh.hpp"
@@ -37,8 +38,21 @@ TreeResult method_tree(const Mesh &mesh, const TreeRequest &rq, const MeshInput 
     eo.threads = threads;
     eo.arc_geometry = graph;
     eo.progress = rq.progress;
-    TreeResult tree = exact_contour_tree(mesh, eo);
-    tree.stats.time.tree = clock.seconds();
+    // Not a disk or a sphere: the Reeb graph, from the surface cut open into disks.
+    const bool reeb = !domain_shape(mesh.topology).empty();
+    const std::vector<int64_t> cut_edges =
+        reeb ? cut_graph_edges(mesh.topology) : std::vector<int64_t>{};
+    std::optional<CutSurface> cut;
+    if (!cut_edges.empty()) {
+      cut = cut_open(mesh, cut_edges, threads);
+      eo.cut = &*cut;
+    }
+    const double cut_seconds = clock.lap();
+    TreeResult tree = exact_contour_tree(cut ? cut->mesh : mesh, eo);
+    tree.reeb_graph = reeb;
+    if (reeb)
+      tree.stats.time.cut = cut_seconds;
+    tree.stats.time.tree = cut_seconds + clock.seconds();
     return tree;
   }
   const PlMesh pl =
@@ -82,7 +96,7 @@ std::string method_name(const TreeRequest &rq) {
 TreeOutcome compute_tree(const Mesh &mesh, const TreeRequest &rq, const MeshInput *input) {
   check_request(rq, input);
   TreeOutcome out;
-  out.warnings = check_domain(mesh, rq.force);
+  out.warnings = check_domain(mesh, rq.force, rq.method == TreeMethod::Exact);
   const int threads = thread_count(rq.threads);
   TreeResult tree = method_tree(mesh, rq, input, threads);
   // Plateaus (equal values, ordered by node id) give arcs of length zero and leaf branches of

@@ -1,8 +1,10 @@
-// A contour tree needs a valid mesh of a simply connected domain: one disk or one sphere. With
-// force, what is still well defined is computed and labelled (one tree per component, the
-// join/split merge where there are holes or handles; past forceable problems: inverted or folded
-// cells, unmerged duplicate vertices); what nothing can go past (a mesh that is not a surface,
-// broken input data) is always refused.
+// The level-set graph needs a valid mesh of a surface. On one disk or one sphere it is the
+// contour tree; on any other surface (holes, handles, a twist, several components) the exact
+// method computes the Reeb graph (mesh/cut_surface), and the piecewise-linear methods, which
+// compute contour trees only, need force (then the join/split merge is computed and labelled).
+// With force, what is still well defined is computed past forceable problems (inverted or
+// folded cells, unmerged duplicate vertices) and labelled; what nothing can go past (a mesh that
+// is not a surface, broken input data) is always refused.
 #pragma once
 
 #include "mesh/mesh.hpp"
@@ -23,7 +25,8 @@ void require_valid_mesh(const Mesh &mesh, bool allow_forceable);
 
 // Checks the mesh for the tree. Without force, throws hoct::Error explaining the first kind of
 // problem; with force, returns the reasons the result is forced (empty if none) and throws only
-// for problems nothing can go past. Messages start with the mesh's source.
-std::vector<std::string> check_domain(const Mesh &mesh, bool force);
+// for problems nothing can go past. `reeb_graph`: the method computes Reeb graphs, so a domain
+// that is not a disk or a sphere is no problem. Messages start with the mesh's source.
+std::vector<std::string> check_domain(const Mesh &mesh, bool force, bool reeb_graph = false);
 
 } // namespace hoct

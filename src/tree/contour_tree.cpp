@@ -1,5 +1,7 @@
 #include "tree/contour_tree.hpp"
 
+#include "tree/union_find.hpp"
+
 #include <algorithm>
 #include <stdexcept>
 
@@ -125,6 +127,14 @@ ContourTree merge_trees(const ScalarGraph &g, const MergeTree &join, const Merge
   }
   std::sort(ct.arcs.begin(), ct.arcs.end());
   return ct;
+}
+
+int64_t graph_loops(const ContourTree &g) {
+  UnionFind uf(static_cast<std::size_t>(g.size()));
+  int64_t components = g.size();
+  for (const auto &a : g.arcs)
+    components -= uf.unite(a[0], a[1]) ? 1 : 0;
+  return static_cast<int64_t>(g.arcs.size()) - g.size() + components;
 }
 
 ContourTree reduce(const ContourTree &aug) {

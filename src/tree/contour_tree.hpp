@@ -41,6 +41,10 @@ std::vector<std::array<int64_t, 2>> merge_join_split(std::vector<int64_t> jparen
 // graph node, n - 1 arcs per connected component). Requires both trees from one ScalarGraph.
 ContourTree merge_trees(const ScalarGraph &graph, const MergeTree &join, const MergeTree &split);
 
+// The first Betti number of a graph (arcs - nodes + connected components): 0 for a tree, the
+// number of independent loops of a Reeb graph.
+int64_t graph_loops(const ContourTree &graph);
+
 // Removes regular nodes (exactly one lower and one upper arc), splicing their arcs.
 ContourTree reduce(const ContourTree &augmented);
 

@@ -17,6 +17,8 @@ const char *to_string(PersistencePair::Kind k) {
     return "split";
   case PersistencePair::Kind::Global:
     return "global";
+  case PersistencePair::Kind::Loop:
+    return "loop";
   }
   return "?";
 }

@@ -13,9 +13,10 @@
 namespace hoct {
 
 struct PersistencePair {
-  enum class Kind : uint8_t { Join, Split, Global };
+  // Loop: a Reeb graph's loop (tree/loop_pairs.hpp), birth its top saddle, death its bottom.
+  enum class Kind : uint8_t { Join, Split, Global, Loop };
   Kind kind;
-  int64_t birth, death; // graph node ids (Join: min, saddle; Split: max, saddle)
+  int64_t birth, death; // graph node ids (Join: min, saddle; Split: max, saddle; Loop: top, bottom)
   double birth_value, death_value;
   double persistence() const {
     return death_value > birth_value ? death_value - birth_value : birth_value - death_value;

@@ -209,7 +209,7 @@ std::size_t chain_pieces(const EdgeChains &c) {
 
 template <class I>
 ContourTree sweep_ranked(std::span<const double> values, const SweepEdges &edges, bool augmented,
-                         int threads, SweepTimings *timings) {
+                         int threads, SweepTimings *timings, std::span<const uint8_t> keep) {
   const auto t0 = clock_type::now();
   const int64_t n = static_cast<int64_t>(values.size());
   UninitializedVector<int64_t> order;
@@ -272,7 +272,8 @@ ContourTree sweep_ranked(std::span<const double> values, const SweepEdges &edges
     index.resize(static_cast<std::size_t>(n));
     nearest.resize(static_cast<std::size_t>(n));
     for (int64_t r = 0; r < n; ++r) {
-      const bool regular = join.children[r] == 1 && split_children(r) == 1;
+      const bool regular =
+          join.children[r] == 1 && split_children(r) == 1 && (keep.empty() || !keep[order[r]]);
       index[r] = regular ? I{-1} : static_cast<I>(out.nodes.size());
       if (!regular)
         out.nodes.push_back(order[r]);
@@ -317,18 +318,21 @@ ContourTree sweep_ranked(std::span<const double> values, const SweepEdges &edges
 } // namespace
 
 ContourTree sweep_contour_tree(std::span<const double> values, const SweepEdges &edges,
-                               bool augmented, int threads, SweepTimings *timings) {
+                               bool augmented, int threads, SweepTimings *timings,
+                               std::span<const uint8_t> keep) {
   const PageReuseScope reuse_pages; // the order's sort buffers become the sweeps' scratch
   const int64_t n = static_cast<int64_t>(values.size());
   for (auto list : {edges.common, edges.join_only, edges.split_only})
     check_edges(list, n);
   check_chains(edges.chains, n);
+  if (!keep.empty() && static_cast<int64_t>(keep.size()) != n)
+    throw std::invalid_argument("sweep_contour_tree: one keep flag per node needed");
   // 32-bit ranks and offsets where every rank and every edge count fits.
   const std::size_t m = edges.common.size() + chain_pieces(edges.chains) +
                         std::max(edges.join_only.size(), edges.split_only.size());
   if (n < (int64_t{1} << 31) - 1 && m < (std::size_t{1} << 31) - 1)
-    return sweep_ranked<int32_t>(values, edges, augmented, threads, timings);
-  return sweep_ranked<int64_t>(values, edges, augmented, threads, timings);
+    return sweep_ranked<int32_t>(values, edges, augmented, threads, timings, keep);
+  return sweep_ranked<int64_t>(values, edges, augmented, threads, timings, keep);
 }
 
 ContourTree sweep_contour_tree_wide(std::span<const double> values, const SweepEdges &edges,
@@ -336,7 +340,7 @@ ContourTree sweep_contour_tree_wide(std::span<const double> values, const SweepE
   for (auto list : {edges.common, edges.join_only, edges.split_only})
     check_edges(list, static_cast<int64_t>(values.size()));
   check_chains(edges.chains, static_cast<int64_t>(values.size()));
-  return sweep_ranked<int64_t>(values, edges, augmented, threads, nullptr);
+  return sweep_ranked<int64_t>(values, edges, augmented, threads, nullptr, {});
 }
 
 } // namespace hoct

@@ -41,9 +41,11 @@ struct SweepTimings {
 
 // The contour tree (augmented or reduced) of the graph with the given node values, whose join
 // tree comes from common + join_only edges and split tree from common + split_only edges.
-// `threads` >= 2 runs the two sweeps at once.
+// `threads` >= 2 runs the two sweeps at once. The reduced tree also keeps the regular nodes `v`
+// with keep[v] != 0 (`keep` empty, or one flag per node).
 ContourTree sweep_contour_tree(std::span<const double> values, const SweepEdges &edges,
-                               bool augmented, int threads = 1, SweepTimings *timings = nullptr);
+                               bool augmented, int threads = 1, SweepTimings *timings = nullptr,
+                               std::span<const uint8_t> keep = {});
 // The same with 64-bit rank indices whatever the size (sweep_contour_tree uses them only for
 // more than 2^31 nodes or edges): lets the tests run that path on small graphs.
 ContourTree sweep_contour_tree_wide(std::span<const double> values, const SweepEdges &edges,

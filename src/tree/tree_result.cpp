@@ -1,5 +1,7 @@
 #include "tree/tree_result.hpp"
 
+#include "tree/loop_pairs.hpp"
+
 #include "tree/flat_regions.hpp"
 #include "util/parallel_for.hpp"
 
@@ -36,7 +38,11 @@ std::vector<PersistencePair> tree_pairs(const ContourTree &tree) {
     edges.push_back({a[0], a[1]});
   // Tree nodes are ascending in the total order, so their indices keep its tie-breaking.
   const ScalarGraph g(tree.values, edges);
-  return persistence_diagram(g).pairs;
+  std::vector<PersistencePair> pairs = persistence_diagram(g).pairs;
+  // A Reeb graph's loops: one essential pair each.
+  for (const PersistencePair &p : loop_pairs(tree))
+    pairs.push_back(p);
+  return pairs;
 }
 
 ContourTree as_contour_tree(const TreeResult &t) {
@@ -77,6 +83,8 @@ TreeResult derived_result(const TreeResult &t, const ContourTree &tree,
   }
   r.arcs = tree.arcs;
   r.pairs = tree_pairs(tree);
+  r.reeb_graph = t.reeb_graph;
+  r.loops = graph_loops(tree);
   r.stats = t.stats;
   r.input = t.input;
   r.graph = t.graph;

@@ -52,6 +52,11 @@ struct TreeResult {
   // compare with its nodes' values; empty for a computed tree.
   std::vector<double> recorded_persistence;
   std::vector<Branch> branches; // branch decomposition (indices into nodes)
+  // A Reeb graph: the domain is not a disk or a sphere (holes, handles, several components), so
+  // the level sets may form loops; `loops` is the graph's first Betti number (arcs - nodes +
+  // components; parallel arcs between two nodes are a loop). A contour tree has none.
+  bool reeb_graph = false;
+  int64_t loops = 0;
   TreeStats stats;
   // Why the result was computed although the input is not a valid disk or sphere (hoct tree
   // --force); empty for a regular result.

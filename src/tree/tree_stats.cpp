@@ -103,6 +103,8 @@ const std::vector<Entry> &table() {
     e.push_back(plain_entry("pairs_below_precision", &TreeStats::pairs_below_precision));
     e.push_back(
         plain_entry("pairs_within_fallback_slack", &TreeStats::pairs_within_fallback_slack));
+    e.push_back(plain_entry("seam_edges", &TreeStats::seam_edges));
+    e.push_back(plain_entry("seam_paths_nonmonotone", &TreeStats::seam_paths_nonmonotone));
     // The phases in the order they run.
     e.push_back(time_entry("time_read_s", &TreeTimings::read));
     e.push_back(time_entry("time_check_s", &TreeTimings::check));
@@ -111,6 +113,7 @@ const std::vector<Entry> &table() {
     e.push_back(time_entry("time_geometry_s", &TreeTimings::geometry));
     e.push_back(time_entry("time_bernstein_s", &TreeTimings::bernstein));
     e.push_back(time_entry("time_geometry_checks_s", &TreeTimings::geometry_checks));
+    e.push_back(time_entry("time_cut_s", &TreeTimings::cut));
     e.push_back(time_entry("time_pl_mesh_s", &TreeTimings::pl_mesh));
     e.push_back(time_entry("time_edge_nodes_s", &TreeTimings::edge_nodes));
     e.push_back(time_entry("time_cells_s", &TreeTimings::cells));
@@ -121,6 +124,7 @@ const std::vector<Entry> &table() {
     e.push_back(time_entry("time_graph_s", &TreeTimings::graph));
     e.push_back(time_entry("time_sweeps_s", &TreeTimings::sweeps));
     e.push_back(time_entry("time_merge_s", &TreeTimings::merge));
+    e.push_back(time_entry("time_gluing_s", &TreeTimings::gluing));
     e.push_back(time_entry("time_pairs_s", &TreeTimings::pairs));
     e.push_back(time_entry("time_output_s", &TreeTimings::output));
     e.push_back(time_entry("time_tree_s", &TreeTimings::tree));

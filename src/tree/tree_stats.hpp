@@ -58,6 +58,8 @@ struct TreeTimings {
   std::optional<double> edge_nodes, cells, interior_critical_points, connections, graph_assembly;
   std::optional<double> graph; // the PL tree's graph
   std::optional<double> sweeps, merge, pairs, output;
+  // A Reeb graph: the surface cut open into disks, and the disks' tree glued along the seams.
+  std::optional<double> cut, gluing;
   std::optional<double> tree; // the whole tree computation
 };
 
@@ -74,6 +76,9 @@ struct TreeStats {
   std::optional<int64_t> pairs_below_precision;
   // Pairs with a fallback node within twice the stand-in's slack (TreeResult::uncertain).
   std::optional<int64_t> pairs_within_fallback_slack;
+  // A Reeb graph's cut (mesh/cut_surface, tree/path_gluing): the edges cut open, and the seam
+  // pieces whose paths in the disks' tree do not rise (glued at their ends only).
+  std::optional<int64_t> seam_edges, seam_paths_nonmonotone;
   TreeTimings time;
   // Entries this version does not know (read from another version's JSON), kept as they are.
   std::vector<std::pair<std::string, double>> other;

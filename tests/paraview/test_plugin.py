@@ -372,18 +372,27 @@ def main():
     # Errors: reported through vtkErrorMacro with the library's message, no output, no crash.
     tri = [(0, 0, 0), (1, 0, 0), (0, 1, 0)]
     far = [(5, 0, 0), (6, 0, 0), (5, 1, 0)]
-    check_error("two components", grid_source(tri + far, [(5, [0, 1, 2]), (5, [3, 4, 5])],
-                                              [0, 1, 2, 3, 4, 5]),
-                "the domain is not a disk or a sphere but 2 separate components")
-    # Force: the same forced tree as `hoct tree --force`, and the reasons in the field data.
+    # Two components: the same Reeb graph (a forest) as `hoct tree`, not forced.
     two = grid_source(tri + far, [(5, [0, 1, 2]), (5, [3, 4, 5])], [0, 1, 2, 3, 4, 5])
     two_path = os.path.join(OUT, "two.vtu")
     pv.SaveData(two_path, proxy=two)
-    f = apply_filter(two, Force=1)
-    tree = cli_tree(two_path, "--force")
-    check(tree.get("forced") is True, "two components --force: labelled forced")
-    compare_nodes("two components, Force", fetch(f, 0), tree)
-    compare_arcs("two components, Force", fetch(f, 1), tree)
+    f = apply_filter(two)
+    tree = cli_tree(two_path)
+    check(tree["kind"] == "Reeb graph" and "forced" not in tree, "two components: a Reeb graph")
+    compare_nodes("two components", fetch(f, 0), tree)
+    compare_arcs("two components", fetch(f, 1), tree)
+    kind = fetch(f, 0).GetFieldData().GetAbstractArray("Kind")
+    check(kind is not None and kind.GetValue(0) == "Reeb graph", "two components: Kind")
+    pv.Delete(f)
+    # The linear method computes contour trees only: refused, and with Force the same forced
+    # tree as `hoct tree --linear --force`, its reasons in the field data.
+    check_error("two components, linear", two, "the domain is not a disk or a sphere but 2 "
+                "separate components", Method="Linear (input nodes)")
+    f = apply_filter(two, Force=1, Method="Linear (input nodes)")
+    tree = cli_tree(two_path, "--linear", "--force")
+    check(tree.get("forced") is True, "two components --linear --force: labelled forced")
+    compare_nodes("two components, linear, Force", fetch(f, 0), tree)
+    compare_arcs("two components, linear, Force", fetch(f, 1), tree)
     reasons = fetch(f, 0).GetFieldData().GetAbstractArray("ForcedReasons")
     check(reasons is not None and reasons.GetNumberOfValues() == len(tree["forced_reasons"]) and
           "separate components" in reasons.GetValue(0), "two components, Force: ForcedReasons")

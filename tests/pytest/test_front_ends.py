@@ -76,15 +76,23 @@ def refused_by_both(path, words):
 
 
 def test_forced_domains_are_the_same_too(data):
-    # Two separate triangles: refused by both without force, the same forced tree with it.
+    # Two separate triangles: the same Reeb graph (a forest) from both; the piecewise-linear
+    # methods refused by both without force, the same forced tree with it.
     d, _ = data
     path = os.path.join(d, "two.vtu")
     two_triangles(path, [[0, 0, 0], [1, 0, 0], [0, 1, 0], [3, 0, 0], [4, 0, 0], [3, 1, 0]],
                   [0, 1, 2, 3, 4, 5])
-    refused_by_both(path, "2 separate components")
-    expected = cli_json(path, ["--force"])
+    expected = cli_json(path, [])
+    assert '"kind": "Reeb graph"' in expected and '"forced"' not in expected
+    assert hoct.contour_tree(hoct.read(path)).to_json(timings=False) + "\n" == expected
+    r = subprocess.run([HOCT, "tree", path, "-q", "--linear"], capture_output=True, text=True)
+    assert r.returncode == 1 and "2 separate components" in r.stderr, r.stderr
+    with pytest.raises(hoct.HoctError, match="2 separate components"):
+        hoct.contour_tree(hoct.read(path), method="linear")
+    expected = cli_json(path, ["--linear", "--force"])
     assert '"forced": true' in expected
-    assert hoct.contour_tree(hoct.read(path), force=True).to_json(timings=False) + "\n" == expected
+    assert hoct.contour_tree(hoct.read(path), method="linear",
+                             force=True).to_json(timings=False) + "\n" == expected
 
 
 def test_bad_requests_fail_the_same_way(data):

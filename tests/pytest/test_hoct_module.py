@@ -144,15 +144,46 @@ def test_computation_releases_the_gil():
     assert during > 5  # the other thread kept running while the tree was computed
 
 
-def test_non_simply_connected_domain_is_refused_unless_forced():
-    # Two separate triangles: not one disk, so no contour tree (the CLI refuses it too).
+def test_non_simply_connected_domain_is_a_reeb_graph():
+    # Two separate triangles: not one disk, so a Reeb graph (here a forest: one min and max per
+    # triangle); the linear method, contour trees only, is refused unless forced.
     points = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0], [3, 0, 0], [4, 0, 0], [3, 1, 0]], float)
     cells = np.array([[0, 1, 2], [3, 4, 5]])
     mesh = hoct.from_arrays(points, cells, np.array([0.0, 1.0, 2.0, 3.0, 4.0, 5.0]))
+    g = hoct.contour_tree(mesh)
+    assert g.kind == "Reeb graph" and g.loops == 0
+    assert sorted(g.values.tolist()) == [0.0, 2.0, 3.0, 5.0]
     with pytest.raises(hoct.HoctError, match="not a disk or a sphere but 2 separate components"):
-        hoct.contour_tree(mesh)
-    forced = hoct.contour_tree(mesh, force=True)
-    assert sorted(forced.values.tolist()) == [0.0, 2.0, 3.0, 5.0]  # one min and max per triangle
+        hoct.contour_tree(mesh, method="linear")
+    forced = hoct.contour_tree(mesh, method="linear", force=True)
+    assert forced.kind == "contour tree"
+    assert sorted(forced.values.tolist()) == [0.0, 2.0, 3.0, 5.0]
+
+
+def test_annulus_reeb_graph_has_its_loop_in_networkx():
+    # A square annulus (an 8x8 grid without its 4x4 centre), f = x + 0.3 y: one loop around the
+    # hole, between its lowest and its highest corner.
+    nx = pytest.importorskip("networkx")
+    n = 8
+    points = np.array([[i, j, 0] for j in range(n + 1) for i in range(n + 1)], float)
+    cells = []
+    for j in range(n):
+        for i in range(n):
+            if 2 <= i < 6 and 2 <= j < 6:
+                continue
+            a, b, c, d = j * (n + 1) + i, j * (n + 1) + i + 1, (j + 1) * (n + 1) + i + 1, \
+                (j + 1) * (n + 1) + i
+            cells += [[a, b, c], [a, c, d]]
+    values = points[:, 0] + 0.3 * points[:, 1]
+    g = hoct.contour_tree(hoct.from_arrays(points, np.array(cells), values))
+    assert g.kind == "Reeb graph" and g.loops == 1
+    assert np.allclose(sorted(g.values.tolist()), [0.0, 2.6, 7.8, 10.4])
+    G = g.to_networkx()
+    assert isinstance(G, nx.MultiGraph)
+    assert G.number_of_edges() - G.number_of_nodes() + nx.number_connected_components(G) == 1
+    pairs = g.pairs
+    loops = [p for p, k in zip(pairs["persistence"], pairs["kind"]) if k == "loop"]
+    assert len(loops) == 1 and abs(loops[0] - 5.2) < 1e-12
 
 
 def test_read_on_threads_gives_the_same_mesh_and_tree(tmp):

@@ -191,7 +191,7 @@ with tempdir() as tmp:
     R.check(open(p("keep.json")).read() == "precious", "output clobbered")
     R.check(not [f for f in os.listdir(tmp) if ".tmp-" in f], "temporary files left")
 
-    # An annulus is not simply connected: a clear refusal (a Reeb graph would have loops).
+    # An annulus is not simply connected: its level-set graph is a Reeb graph with a loop.
     import numpy as np
     import meshio
     pts, cells = [], []
@@ -206,8 +206,13 @@ with tempdir() as tmp:
     pts = np.array(pts)
     meshio.write(p("annulus.vtu"), meshio.Mesh(pts, [("triangle", np.array(cells))],
                                                point_data={"f": pts[:, 0]}))
+    # The exact method computes its Reeb graph (one loop around the hole); the PL methods, which
+    # compute contour trees only, refuse it without --force.
     r = run("tree", p("annulus.vtu"), check=False)
-    R.check(r.returncode == 1 and "not a disk or a sphere" in r.stderr, r.stderr.strip())
+    R.check(r.returncode == 0 and "exact Reeb graph (1 loop)" in r.stdout, r.stdout + r.stderr)
+    r = run("tree", p("annulus.vtu"), "--linear", check=False)
+    R.check(r.returncode == 1 and "not a disk or a sphere" in r.stderr and
+            "piecewise-linear methods" in r.stderr, r.stderr.strip())
     info = json.loads(run("info", p("annulus.vtu"), "--json").stdout)
     R.check(info["euler_characteristic"] == 0 and info["boundary_loops"] == 2, "annulus topology")
 

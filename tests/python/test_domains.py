@@ -1,6 +1,7 @@
 """Hostile domains through the command line (issue 8, item 4): an annulus, two components, a
 Moebius strip, non-manifold edges and vertices, duplicate vertices and an inverted cell, each
-written as .vtu with VTK. hoct must explain each one, refuse what it cannot compute, and with
+written as .vtu with VTK. hoct computes the Reeb graph of surfaces that are not disks (holes,
+handles, a twist, several pieces), must explain the rest, refuse what it cannot compute, and with
 --force compute what is well defined and label it; --merge-duplicates repairs cracks."""
 import json
 import math
@@ -117,42 +118,60 @@ with tempdir() as tmp:
     R.check("forced" not in json.load(open(p("disk.json"))), "disk: not forced")
     R.check(run("check", p("disk.json"), p("disk.vtu"), check=False).returncode == 0, "disk: check")
 
-    # Annulus: a hole. Refused with an explanation; --force computes and labels it.
+    def reeb(name, path, loops):
+        """The exact method's Reeb graph: not forced, kind and loops recorded, checked."""
+        out = p(name + ".json")
+        r = tree(path, "--json", out)
+        R.check(r.returncode == 0, f"{name}: exit {r.returncode}: {r.stderr.strip()[:300]}")
+        if r.returncode != 0:
+            return None
+        t = json.load(open(out))
+        R.check("forced" not in t, f"{name}: not forced")
+        R.check(t["kind"] == "Reeb graph" and t["loops"] == loops,
+                f"{name}: {t['kind']} with {t['loops']} loops, expected {loops}")
+        r = run("check", out, path, check=False)
+        R.check(r.returncode == 0, f"{name}: check {r.stdout[-300:]}")
+        return t
+
+    # Annulus: a hole. The exact method computes the Reeb graph; the piecewise-linear methods
+    # (contour trees only) refuse it with an explanation, and with --force compute the join/split
+    # merge and label it.
     write_vtu(p("annulus.vtu"), *annulus())
-    expect_refused("annulus", p("annulus.vtu"), ["1 hole(s)", "2 boundary loops", "--force"])
-    r = tree(p("annulus.vtu"), "--force", "--json", p("annulus.json"), check=True)
+    reeb("annulus", p("annulus.vtu"), 1)
+    expect_refused("annulus --linear", p("annulus.vtu"),
+                   ["1 hole(s)", "2 boundary loops", "--force", "exact method"], ["--linear"])
+    r = tree(p("annulus.vtu"), "--linear", "--force", "--json", p("annulus.json"), check=True)
     t = json.load(open(p("annulus.json")))
     R.check(t.get("forced") is True and any("hole" in x for x in t["forced_reasons"]),
-            f"annulus --force: {t.get('forced_reasons')}")
+            f"annulus --linear --force: {t.get('forced_reasons')}")
+    R.check(t["kind"] == "contour tree", "annulus --linear --force: a tree")
     R.check("warning: --force" in r.stderr, f"annulus --force warns: {r.stderr.strip()}")
     # The old flag is an alias.
-    r = tree(p("annulus.vtu"), "--allow-non-simply-connected")
+    r = tree(p("annulus.vtu"), "--linear", "--allow-non-simply-connected")
     R.check(r.returncode == 0 and "warning" in r.stderr, "--allow-non-simply-connected alias")
 
-    # Two components: a forest, one tree per component, which the checker accepts.
+    # Two components: a forest, one graph per component, which the checker accepts.
     a_pts, a_tris = grid(3, 3)
     b_pts, b_tris = grid(3, 3, x0=5)
     off = len(a_pts)
     write_vtu(p("two.vtu"), a_pts + b_pts, a_tris + [(x + off, y + off, z + off) for x, y, z in b_tris])
-    expect_refused("two components", p("two.vtu"), ["2 separate components"])
-    tree(p("two.vtu"), "--force", "--json", p("two.json"), check=True)
-    t = json.load(open(p("two.json")))
-    R.check(t["forced"] and len(t["arcs"]) == len(t["nodes"]) - 2, "two components: a forest of 2 trees")
-    r = run("check", p("two.json"), p("two.vtu"), check=False)
-    R.check(r.returncode == 0, f"two components: check {r.stdout[-300:]}")
+    t = reeb("two", p("two.vtu"), 0)
+    R.check(t is not None and len(t["arcs"]) == len(t["nodes"]) - 2,
+            "two components: a forest of 2 trees")
+    expect_refused("two components --linear", p("two.vtu"), ["2 separate components"],
+                   ["--linear"])
 
-    # Moebius strip: non-orientable.
+    # Moebius strip: non-orientable; its Reeb graph has a loop here (the strip goes round once).
     write_vtu(p("moebius.vtu"), *moebius())
-    expect_refused("moebius", p("moebius.vtu"), ["non-orientable"])
+    reeb("moebius", p("moebius.vtu"), 1)
     info = run("info", p("moebius.vtu"), check=False).stdout
     R.check("non-orientable" in info, "info names the non-orientable surface")
 
-    # Torus: a handle.
+    # Torus: a handle; the level sets of this field go once round it (one loop).
     write_vtu(p("torus.vtu"), *torus())
-    expect_refused("torus", p("torus.vtu"), ["handles", "Euler characteristic 0, 0 boundary loop"])
-    tree(p("torus.vtu"), "--force", "--json", p("torus.json"), check=True)
-    t = json.load(open(p("torus.json")))
-    R.check(t.get("forced") and len(t["arcs"]) == len(t["nodes"]) - 1, "torus --force: a tree, labelled")
+    reeb("torus", p("torus.vtu"), 1)
+    expect_refused("torus --linear", p("torus.vtu"),
+                   ["handles", "Euler characteristic 0, 0 boundary loop"], ["--linear"])
 
     # Non-manifold: three triangles on one edge, and two disks touching at one vertex. Never
     # computed, not even with --force.

@@ -40,9 +40,18 @@ int vtkHoctContourTree::FillInputPortInformation(int, vtkInformation *info) {
 
 namespace {
 
-// The tree's statistics (counts, fallbacks, timings) as one-value field-data arrays, and why it
-// was forced (Force), if it was, as the string array ForcedReasons.
+// The tree's statistics (counts, fallbacks, timings) as one-value field-data arrays, what it is
+// (Kind: "contour tree" or "Reeb graph", and Loops), and why it was forced (Force), if it was,
+// as the string array ForcedReasons.
 void add_stats(const hoct::TreeResult &tree, vtkPolyData *out) {
+  vtkNew<vtkStringArray> kind;
+  kind->SetName("Kind");
+  kind->InsertNextValue(tree.reeb_graph ? "Reeb graph" : "contour tree");
+  out->GetFieldData()->AddArray(kind);
+  vtkNew<vtkDoubleArray> loops;
+  loops->SetName("Loops");
+  loops->InsertNextValue(static_cast<double>(tree.loops));
+  out->GetFieldData()->AddArray(loops);
   if (!tree.forced.empty()) {
     vtkNew<vtkStringArray> reasons;
     reasons->SetName("ForcedReasons");

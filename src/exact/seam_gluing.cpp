@@ -1,0 +1,53 @@
+#include "exact/seam_gluing.hpp"
+
+#include <stdexcept>
+
+namespace hoct {
+namespace {
+
+// The chain of edge e of the cut mesh from its lower to its higher vertex: graph node ids.
+void chain(const Topology &t, const EdgeNodes &en, int64_t e, std::vector<int64_t> &out) {
+  const int64_t edge_base = t.num_vertices();
+  out.assign(1, t.edge_vertices(e)[0]);
+  for (int64_t i = en.offset[e]; i < en.offset[e + 1]; ++i)
+    out.push_back(edge_base + i);
+  out.push_back(t.edge_vertices(e)[1]);
+}
+
+} // namespace
+
+std::vector<uint8_t> seam_nodes(const CutSurface &cut, const EdgeNodes &en, int64_t nodes) {
+  std::vector<uint8_t> keep(static_cast<std::size_t>(nodes), 0);
+  const Topology &t = cut.mesh.topology;
+  std::vector<int64_t> c;
+  for (const auto &seam : cut.seams)
+    for (int64_t e : seam) {
+      chain(t, en, e, c);
+      for (int64_t id : c)
+        keep[id] = 1;
+    }
+  return keep;
+}
+
+PathGluing seam_gluing(const CutSurface &cut, const EdgeNodes &en, std::span<const double> values) {
+  PathGluing g;
+  g.group_offset = cut.group_offset;
+  g.group_members = cut.copies;
+  const Topology &t = cut.mesh.topology;
+  std::vector<int64_t> a, b;
+  for (const auto &seam : cut.seams) {
+    chain(t, en, seam[0], a);
+    chain(t, en, seam[1], b);
+    if (a.size() != b.size())
+      throw std::logic_error("seam_gluing: the two copies of a seam have different edge nodes");
+    for (std::size_t k = 0; k + 1 < a.size(); ++k) {
+      if (values[a[k]] <= values[a[k + 1]])
+        g.paths.push_back({a[k], a[k + 1], b[k], b[k + 1]});
+      else
+        g.paths.push_back({a[k + 1], a[k], b[k + 1], b[k]});
+    }
+  }
+  return g;
+}
+
+} // namespace hoct

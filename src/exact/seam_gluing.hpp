@@ -1,0 +1,25 @@
+// The exact tree of a surface cut open into disks (mesh/cut_surface), glued back along its
+// seams into the surface's Reeb graph (tree/path_gluing; docs/ALGORITHM.md §8).
+#pragma once
+
+#include "cell/edge_nodes.hpp"
+#include "mesh/cut_surface.hpp"
+#include "tree/path_gluing.hpp"
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace hoct {
+
+// One flag per graph node (`nodes` of them): the copies of vertices on the cut and the edge
+// nodes of the seams, which the sweeps must keep in the reduced tree for the gluing to find.
+std::vector<uint8_t> seam_nodes(const CutSurface &cut, const EdgeNodes &edge_nodes, int64_t nodes);
+
+// What is one point and one curve: the copies of each vertex; each seam's two chains (its ends
+// and edge nodes, both copies computed from one polynomial, so they have the same nodes at the
+// same values), piece by piece. `values`: the graph's node values.
+PathGluing seam_gluing(const CutSurface &cut, const EdgeNodes &edge_nodes,
+                       std::span<const double> values);
+
+} // namespace hoct

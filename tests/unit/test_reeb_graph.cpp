@@ -1,0 +1,182 @@
+// The Reeb graph (docs/ALGORITHM.md §8): the cut graph makes every component a disk, the exact
+// Reeb graph of a linear field on a square annulus has its one loop between the hole's lowest and
+// highest corners, the loops' essential pairs count the loops of every band of values (a brute
+// force over random graphs), and two components give one graph each without --force.
+#include "analysis/tree_check.hpp"
+#include "datasets/datasets.hpp"
+#include "mesh/cut_surface.hpp"
+#include "mesh/mesh.hpp"
+#include "pipeline/compute_tree.hpp"
+#include "tree/loop_pairs.hpp"
+#include "util/error.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+#include <random>
+
+namespace hoct {
+namespace {
+
+// [0, 6]^2 in unit squares (two triangles each) of degree 1 or 2, without the squares of
+// [2, 4]^2 (a square hole), the field f(x, y) at the nodes.
+template <class F> MeshInput square_annulus(int degree, F f) {
+  MeshInput in;
+  in.source = "annulus";
+  const int n = 6 * degree;
+  auto id = [&](int i, int j) { return static_cast<int64_t>(j * (n + 1) + i); };
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) {
+      const double x = static_cast<double>(i) / degree, y = static_cast<double>(j) / degree;
+      in.points.push_back({x, y, 0});
+      in.values.push_back(f(x, y));
+    }
+  // A triangle of the lattice: corners (i, j) + degree * e_k, nodes in lattice order.
+  auto triangle = [&](int i0, int j0, int di1, int dj1, int di2, int dj2) {
+    std::vector<int64_t> nodes;
+    for (int b = 0; b <= degree; ++b)
+      for (int a = 0; a + b <= degree; ++a)
+        nodes.push_back(id(i0 + a * di1 + b * di2, j0 + a * dj1 + b * dj2));
+    in.add_cell(degree, nodes.data());
+  };
+  for (int j = 0; j < 6; ++j)
+    for (int i = 0; i < 6; ++i) {
+      if (i >= 2 && i < 4 && j >= 2 && j < 4)
+        continue;
+      const int x = i * degree, y = j * degree;
+      triangle(x, y, 1, 0, 1, 1); // (x, y), (x+1, y), (x+1, y+1)
+      triangle(x, y, 1, 1, 0, 1); // (x, y), (x+1, y+1), (x, y+1)
+    }
+  return in;
+}
+
+TEST(ReebGraph, TheCutMakesEveryComponentADisk) {
+  for (int degree : {1, 2}) {
+    const Mesh mesh = build_mesh(square_annulus(degree, [](double x, double y) { return x + y; }));
+    const std::vector<int64_t> cut = cut_graph_edges(mesh.topology);
+    ASSERT_FALSE(cut.empty());
+    // A path from the hole to the outside: at most as long as the distance, a few edges.
+    EXPECT_LE(cut.size(), 6u);
+    const CutSurface open = cut_open(mesh, cut);
+    const Topology &t = open.mesh.topology;
+    EXPECT_EQ(t.components(), 1);
+    EXPECT_EQ(t.euler_characteristic(), 1);
+    EXPECT_EQ(t.boundary_loops(), 1);
+    EXPECT_EQ(open.seams.size(), cut.size());
+    EXPECT_EQ(t.num_vertices(),
+              mesh.topology.num_vertices() + static_cast<int64_t>(cut.size()) + 1);
+  }
+  // A disk and a sphere need no cut.
+  for (const char *name : {"heater", "sphere"})
+    EXPECT_TRUE(cut_graph_edges(build_mesh(generate_dataset(name, {})).topology).empty()) << name;
+}
+
+TEST(ReebGraph, ALinearFieldOnASquareAnnulusHasOneLoopAroundTheHole) {
+  for (int degree : {1, 2}) {
+    const Mesh mesh =
+        build_mesh(square_annulus(degree, [](double x, double y) { return x + 0.3 * y; }));
+    TreeRequest rq;
+    const TreeOutcome out = compute_tree(mesh, rq);
+    const TreeResult &g = out.tree;
+    EXPECT_TRUE(out.warnings.empty());
+    EXPECT_TRUE(g.reeb_graph);
+    EXPECT_EQ(g.loops, 1);
+    ASSERT_EQ(g.nodes.size(), 4u) << degree;
+    ASSERT_EQ(g.arcs.size(), 4u);
+    // The minimum (0,0), the hole's lowest corner (2,2) where the level sets part around it, its
+    // highest corner (4,4) where they meet again, the maximum (6,6); two arcs between the saddles.
+    const double want[4] = {0, 2.6, 5.2, 7.8};
+    for (int i = 0; i < 4; ++i)
+      EXPECT_NEAR(g.nodes[i].value, want[i], 1e-12) << i;
+    EXPECT_EQ(g.nodes[1].type, NodeType::Saddle);
+    EXPECT_EQ(g.nodes[2].type, NodeType::Saddle);
+    std::map<std::array<int64_t, 2>, int> count;
+    for (const auto &a : g.arcs)
+      ++count[a];
+    EXPECT_EQ((count[{1, 2}]), 2);
+    // The loop's essential pair: top 5.2, bottom 2.6.
+    int loop_pairs_seen = 0;
+    for (const auto &p : g.pairs)
+      if (p.kind == PersistencePair::Kind::Loop) {
+        ++loop_pairs_seen;
+        EXPECT_NEAR(p.birth_value, 5.2, 1e-12);
+        EXPECT_NEAR(p.death_value, 2.6, 1e-12);
+      }
+    EXPECT_EQ(loop_pairs_seen, 1);
+    const TreeCheckReport r = check_tree(g, mesh, {});
+    EXPECT_TRUE(r.ok()) << r.summary(10);
+  }
+}
+
+TEST(ReebGraph, AWavyFieldOnTheAnnulusPassesTheChecker) {
+  const Mesh mesh = build_mesh(square_annulus(2, [](double x, double y) {
+    return std::sin(1.3 * x + 0.2) * std::cos(0.9 * y - 0.4) + 0.05 * x;
+  }));
+  const TreeOutcome out = compute_tree(mesh, {});
+  EXPECT_TRUE(out.tree.reeb_graph);
+  EXPECT_LE(out.tree.loops, 1);
+  const TreeCheckReport r = check_tree(out.tree, mesh, {});
+  EXPECT_TRUE(r.ok()) << r.summary(10);
+}
+
+TEST(ReebGraph, TwoComponentsGiveTwoGraphsWithoutForce) {
+  MeshInput two;
+  two.points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {5, 0, 0}, {6, 0, 0}, {5, 1, 0}};
+  two.values = {0, 1, 2, 3, 4, 5};
+  const int64_t a[3] = {0, 1, 2}, b[3] = {3, 4, 5};
+  two.add_cell(1, a);
+  two.add_cell(1, b);
+  const Mesh mesh = build_mesh(two);
+  const TreeOutcome out = compute_tree(mesh, {});
+  EXPECT_TRUE(out.warnings.empty());
+  EXPECT_TRUE(out.tree.reeb_graph);
+  EXPECT_EQ(out.tree.loops, 0);
+  EXPECT_EQ(out.tree.nodes.size(), 4u);
+  EXPECT_EQ(out.tree.arcs.size(), 2u);
+  // The piecewise-linear methods compute contour trees only: refused without --force.
+  TreeRequest linear;
+  linear.method = TreeMethod::Refine;
+  linear.refine = 2;
+  EXPECT_THROW(compute_tree(mesh, linear), Error);
+}
+
+// Brute force: for every band [t, s] of node indices, the loop pairs with top <= s and bottom
+// >= t number the independent loops of the arcs with both ends in the band.
+TEST(ReebGraph, LoopPairsCountTheLoopsOfEveryBand) {
+  std::mt19937 rng(7);
+  for (int trial = 0; trial < 300; ++trial) {
+    const int n = 3 + static_cast<int>(rng() % 10);
+    ContourTree g;
+    for (int i = 0; i < n; ++i) {
+      g.nodes.push_back(i);
+      g.values.push_back(i);
+    }
+    const int m = static_cast<int>(rng() % (2 * n)) + 1;
+    for (int k = 0; k < m; ++k) {
+      int64_t x = rng() % n, y = rng() % n;
+      if (x == y)
+        continue;
+      g.arcs.push_back({std::min(x, y), std::max(x, y)});
+    }
+    std::sort(g.arcs.begin(), g.arcs.end());
+    const std::vector<PersistencePair> pairs = loop_pairs(g);
+    EXPECT_EQ(static_cast<int64_t>(pairs.size()), graph_loops(g));
+    for (int t = 0; t < n; ++t)
+      for (int s = t; s < n; ++s) {
+        ContourTree band;
+        band.nodes = g.nodes;
+        band.values = g.values;
+        for (const auto &a : g.arcs)
+          if (a[0] >= t && a[1] <= s)
+            band.arcs.push_back(a);
+        int64_t counted = 0;
+        for (const auto &p : pairs)
+          counted += p.birth <= s && p.death >= t;
+        ASSERT_EQ(counted, graph_loops(band)) << "trial " << trial << " band " << t << ".." << s;
+      }
+  }
+}
+
+} // namespace
+} // namespace hoct
