@@ -32,7 +32,8 @@
 namespace hoct {
 
 struct TreeFinding {
-  // "tree", "euler", "order", "value", "position", "degree", "type", "pairs", "completeness"
+  // "tree", "loops", "euler", "order", "value", "position", "degree", "type", "pairs",
+  // "completeness"
   std::string check;
   std::vector<int64_t> nodes; // indices into TreeResult::nodes
   std::vector<int64_t> arcs;  // indices into TreeResult::arcs

@@ -26,5 +26,6 @@ MeshInput generate_two_triangle(const DatasetOptions &options);
 MeshInput generate_heater(const DatasetOptions &options);
 MeshInput generate_conductor(const DatasetOptions &options);
 MeshInput generate_random(const DatasetOptions &options);
+MeshInput generate_plate(const DatasetOptions &options);
 
 } // namespace hoct

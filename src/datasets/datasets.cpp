@@ -24,6 +24,10 @@ const std::vector<Entry> &registry() {
       {"heater",
        "sum of Gaussians on a closed finned radiator surface, curved cubic cells (~12,400 cells)",
        generate_heater},
+      {"plate",
+       "smooth field on a square plate with 10 x 10 square holes: a Reeb graph with loops, any "
+       "degree and size (20,000 cubic cells by default)",
+       generate_plate},
       {"random",
        "smooth random field (16 cosine modes) on the unit square, any degree and size (20,000 "
        "cubic cells by default)",

@@ -7,9 +7,9 @@
 
 namespace hoct {
 
-std::shared_ptr<const GeometricGraph> exact_arc_graph(const Mesh &mesh, const EdgeNodes &en,
-                                                      ExactGraph &g, const ExactTreeOptions &opt,
-                                                      int threads) {
+std::shared_ptr<const GeometricGraph>
+exact_arc_graph(const Mesh &mesh, const EdgeNodes &en, ExactGraph &g, const ExactTreeOptions &opt,
+                int threads, std::span<const std::array<int64_t, 2>> links) {
   // Where each graph node lies (a point of a cell; mapped to the surface when drawn).
   const int64_t graph_nodes = static_cast<int64_t>(g.values.size());
   UninitializedVector<CellPoint> node_points(g.values.size());
@@ -28,9 +28,10 @@ std::shared_ptr<const GeometricGraph> exact_arc_graph(const Mesh &mesh, const Ed
                                                    std::move(g.curved_pieces)));
   // The edge chains' pieces (placed by the graph's geometry), then the cells' connections and
   // the fallback cells' sub-edges with their interior points.
-  const std::size_t edges = piece_count + g.geo_edges.size();
+  // Last, `links` as edges without interior points (a cut surface's copies of one point).
+  const std::size_t edges = piece_count + g.geo_edges.size() + links.size();
   std::vector<std::array<int64_t, 2>> ends(edges);
-  std::vector<int64_t> point_offset(g.geo_edges.size() + 1, 0);
+  std::vector<int64_t> point_offset(g.geo_edges.size() + links.size() + 1, 0);
   parallel_for(
       g.chain_pieces, gather_threads(g.chain_pieces, threads, opt),
       [&](int64_t begin, int64_t end, int) {
@@ -43,7 +44,11 @@ std::shared_ptr<const GeometricGraph> exact_arc_graph(const Mesh &mesh, const Ed
     point_offset[j] = static_cast<int64_t>(points);
     points += g.geo_edges[j].inner.size();
   }
-  point_offset[g.geo_edges.size()] = static_cast<int64_t>(points);
+  for (std::size_t j = 0; j < links.size(); ++j) {
+    ends[piece_count + g.geo_edges.size() + j] = links[j];
+    point_offset[g.geo_edges.size() + j] = static_cast<int64_t>(points);
+  }
+  point_offset[g.geo_edges.size() + links.size()] = static_cast<int64_t>(points);
   UninitializedVector<Vec3> inner(points);
   std::size_t at = 0;
   for (const auto &e : g.geo_edges) {

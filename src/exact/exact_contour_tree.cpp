@@ -97,9 +97,11 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
   ContourTree ct = sweep_exact_graph(mesh, en, graph, opt, sweep_time, keep);
   // 8. On a surface cut open, the disks' tree glued back along the seams: the Reeb graph.
   GluedGraph glued;
+  PathGluing gluing;
   if (opt.cut) {
     Stopwatch glue_clock;
-    glued = glue_paths(ct, seam_gluing(*opt.cut, en, graph.values), !opt.augmented);
+    gluing = seam_gluing(*opt.cut, en, graph.values);
+    glued = glue_paths(ct, gluing, !opt.augmented);
     ct = std::move(glued.graph);
     time.gluing = glue_clock.seconds();
   }
@@ -116,7 +118,7 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
   TreeResult r = tree_result(mesh, en, graph, ct, opt.augmented);
   offset_values(r, mesh.field.reference());
   if (opt.arc_geometry)
-    r.graph = exact_arc_graph(mesh, en, graph, opt, threads);
+    r.graph = exact_arc_graph(mesh, en, graph, opt, threads, seam_links(gluing));
   time.output = clock.lap();
 
   ExactCounts &n = r.stats.exact.emplace();

@@ -1,5 +1,6 @@
 #include "exact/seam_gluing.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace hoct {
@@ -48,6 +49,20 @@ PathGluing seam_gluing(const CutSurface &cut, const EdgeNodes &en, std::span<con
     }
   }
   return g;
+}
+
+std::vector<std::array<int64_t, 2>> seam_links(const PathGluing &g) {
+  std::vector<std::array<int64_t, 2>> links;
+  for (std::size_t i = 0; i + 1 < g.group_offset.size(); ++i)
+    for (int64_t k = g.group_offset[i] + 1; k < g.group_offset[i + 1]; ++k)
+      links.push_back({g.group_members[k - 1], g.group_members[k]});
+  for (const auto &p : g.paths) {
+    links.push_back({p[0], p[2]});
+    links.push_back({p[1], p[3]});
+  }
+  std::sort(links.begin(), links.end());
+  links.erase(std::unique(links.begin(), links.end()), links.end());
+  return links;
 }
 
 } // namespace hoct

@@ -1,11 +1,12 @@
 // The exact tree of a surface cut open into disks (mesh/cut_surface), glued back along its
-// seams into the surface's Reeb graph (tree/path_gluing; docs/ALGORITHM.md §8).
+// seams into the surface's Reeb graph (tree/path_gluing; docs/ALGORITHM.md §7).
 #pragma once
 
 #include "cell/edge_nodes.hpp"
 #include "mesh/cut_surface.hpp"
 #include "tree/path_gluing.hpp"
 
+#include <array>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -21,5 +22,9 @@ std::vector<uint8_t> seam_nodes(const CutSurface &cut, const EdgeNodes &edge_nod
 // same values), piece by piece. `values`: the graph's node values.
 PathGluing seam_gluing(const CutSurface &cut, const EdgeNodes &edge_nodes,
                        std::span<const double> values);
+
+// The pairs of nodes that are one point (each group's members in a chain, the seams' chains
+// node by node): links that join the disks back into the surface for drawing arcs.
+std::vector<std::array<int64_t, 2>> seam_links(const PathGluing &gluing);
 
 } // namespace hoct

@@ -1,4 +1,4 @@
-// A surface cut open into disks along mesh edges, for the Reeb graph (docs/ALGORITHM.md §8).
+// A surface cut open into disks along mesh edges, for the Reeb graph (docs/ALGORITHM.md §7).
 //
 // A component with holes, handles or a twist is not simply connected: its level sets can form
 // loops that the join/split merge cannot see. Cut along a cut graph (interior edges whose

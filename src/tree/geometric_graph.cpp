@@ -103,7 +103,8 @@ std::vector<Vec3> GeometricGraph::search(int64_t a, int64_t b, double lo, double
     ++visits;
     for (int64_t k = offset_[v]; k < offset_[v + 1]; ++k) {
       const int64_t w = adj_[k];
-      if (stamp[w] == own || value_[w] < lo || value_[w] > hi)
+      if (stamp[w] == own || value_[w] < lo || value_[w] > hi ||
+          (!s.avoid.empty() && s.avoid[w] && w != a && w != b))
         continue;
       if (stamp[w] == other) { // the two searches meet on this edge
         meet_a = on_a ? v : w;
@@ -117,6 +118,7 @@ std::vector<Vec3> GeometricGraph::search(int64_t a, int64_t b, double lo, double
     }
   }
   std::vector<Vec3> out;
+  s.nodes.clear();
   if (meet_a < 0) {
     out = {position(a), position(b)};
     return out;
@@ -137,13 +139,16 @@ std::vector<Vec3> GeometricGraph::search(int64_t a, int64_t b, double lo, double
         out.push_back(points_[i]);
     const int64_t next = forward ? ends[1] : ends[0];
     out.push_back(position(next));
+    s.nodes.push_back(next);
     return next;
   };
   // From meet_a back to a, reversed; then across the meeting edge and on to b.
   out.push_back(position(meet_a));
+  s.nodes.push_back(meet_a);
   for (int64_t v = meet_a; v != a;)
     v = walk(from[v], v);
   std::reverse(out.begin(), out.end());
+  std::reverse(s.nodes.begin(), s.nodes.end());
   if (meet_edge >= 0)
     walk(meet_edge, meet_a);
   for (int64_t v = meet_b; v != b;)

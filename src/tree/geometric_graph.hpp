@@ -67,6 +67,10 @@ public:
     std::vector<uint32_t> stamp;
     std::vector<int64_t> from, queue, queue_b;
     uint32_t generation = 0;
+    // Nodes the next searches must not pass through (a flag per node; empty: none), and the
+    // nodes of the last path found, in order (ends included).
+    std::vector<uint8_t> avoid;
+    std::vector<int64_t> nodes;
   };
 
   // The polyline from a to b through a path of nodes with values within [min, max] of the two

@@ -1,5 +1,5 @@
 // The essential pairs of a Reeb graph's loops (extended persistence, Cohen-Steiner, Edelsbrunner
-// and Harer 2009; docs/ALGORITHM.md §8): one pair per independent loop, from the saddle where
+// and Harer 2009; docs/ALGORITHM.md §7): one pair per independent loop, from the saddle where
 // the ascending sweep closes it (its top, a down-fork whose lower arcs already meet below) to the
 // saddle of the highest bottom any cycle of it can be given (an up-fork). For every band of
 // values [t, s], the pairs with top at most s and bottom at least t number the independent loops

@@ -1,4 +1,4 @@
-// A contour tree glued into a Reeb graph along identified monotone paths (docs/ALGORITHM.md §8).
+// A contour tree glued into a Reeb graph along identified monotone paths (docs/ALGORITHM.md §7).
 //
 // The Reeb graph of a surface cut open into disks is the contour tree of the disks with the
 // seams glued back: where the cut separated two copies of one curve, their level-set

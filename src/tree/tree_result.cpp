@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <limits>
+#include <numeric>
 
 namespace hoct {
 
@@ -148,21 +149,45 @@ void compute_arc_paths(TreeResult &t, int threads) {
   if (!t.graph)
     return;
   // Each arc's path on its own (the same for any thread count), a search scratch per thread.
+  // Parallel arcs (a Reeb graph's loops) are drawn after the others, one after the other, each
+  // avoiding the nodes of the paths drawn for its siblings: the sides of a hole or a handle.
   const int64_t n = static_cast<int64_t>(t.arcs.size());
   t.arc_paths.resize(t.arcs.size());
+  std::vector<int64_t> by_ends(t.arcs.size());
+  std::iota(by_ends.begin(), by_ends.end(), int64_t{0});
+  std::stable_sort(by_ends.begin(), by_ends.end(),
+                   [&](int64_t x, int64_t y) { return t.arcs[x] < t.arcs[y]; });
+  std::vector<uint8_t> parallel(t.arcs.size(), 0);
+  for (int64_t k = 1; k < n; ++k)
+    if (t.arcs[by_ends[k]] == t.arcs[by_ends[k - 1]])
+      parallel[by_ends[k]] = parallel[by_ends[k - 1]] = 1;
+  auto draw = [&](int64_t i, GeometricGraph::Search &search) {
+    const auto &a = t.arcs[i];
+    const int64_t x = t.nodes[a[0]].graph_node, y = t.nodes[a[1]].graph_node;
+    t.arc_paths[i] = x < 0 || y < 0
+                         ? std::vector<Vec3>{t.nodes[a[0]].position, t.nodes[a[1]].position}
+                         : t.graph->path(x, y, search);
+  };
   const int used = threads_for(n, thread_count(threads), 16);
   std::vector<GeometricGraph::Search> scratch(static_cast<std::size_t>(used));
   parallel_chunks(n, std::min<int64_t>(n, int64_t{used} * 256), used,
                   [&](int64_t, int64_t begin, int64_t end, int worker) {
-                    for (int64_t i = begin; i < end; ++i) {
-                      const auto &a = t.arcs[i];
-                      const int64_t x = t.nodes[a[0]].graph_node, y = t.nodes[a[1]].graph_node;
-                      t.arc_paths[i] =
-                          x < 0 || y < 0
-                              ? std::vector<Vec3>{t.nodes[a[0]].position, t.nodes[a[1]].position}
-                              : t.graph->path(x, y, scratch[static_cast<std::size_t>(worker)]);
-                    }
+                    for (int64_t i = begin; i < end; ++i)
+                      if (!parallel[i])
+                        draw(i, scratch[static_cast<std::size_t>(worker)]);
                   });
+  GeometricGraph::Search &search = scratch.front();
+  for (int64_t k = 0; k < n; ++k) {
+    const int64_t i = by_ends[k];
+    if (!parallel[i])
+      continue;
+    if (k == 0 || t.arcs[i] != t.arcs[by_ends[k - 1]])
+      search.avoid.assign(static_cast<std::size_t>(t.graph->size()), 0);
+    draw(i, search);
+    for (int64_t v : search.nodes)
+      search.avoid[v] = 1;
+  }
+  search.avoid.clear();
 }
 
 NodeLocation classify_location(double u, double v) {

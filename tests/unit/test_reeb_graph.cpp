@@ -7,6 +7,7 @@
 #include "mesh/cut_surface.hpp"
 #include "mesh/mesh.hpp"
 #include "pipeline/compute_tree.hpp"
+#include "pipeline/threshold.hpp"
 #include "tree/loop_pairs.hpp"
 #include "util/error.hpp"
 
@@ -106,6 +107,23 @@ TEST(ReebGraph, ALinearFieldOnASquareAnnulusHasOneLoopAroundTheHole) {
     EXPECT_EQ(loop_pairs_seen, 1);
     const TreeCheckReport r = check_tree(g, mesh, {});
     EXPECT_TRUE(r.ok()) << r.summary(10);
+    // Drawn on the surface, the loop's two arcs go round the hole on either side: one through
+    // the corner (4, 2) (x - y > 0 along it), the other through (2, 4).
+    TreeRequest drawn;
+    drawn.arcs = ArcGeometry::Paths;
+    const TreeResult d = compute_tree(mesh, drawn).tree;
+    ASSERT_EQ(d.arc_paths.size(), d.arcs.size());
+    std::vector<double> side;
+    for (std::size_t k = 0; k < d.arcs.size(); ++k)
+      if (d.arcs[k] == std::array<int64_t, 2>{1, 2}) {
+        double sum = 0;
+        for (const Vec3 &q : d.arc_paths[k])
+          sum += q[0] - q[1];
+        side.push_back(sum / static_cast<double>(d.arc_paths[k].size()));
+      }
+    ASSERT_EQ(side.size(), 2u);
+    EXPECT_LT(std::min(side[0], side[1]), -0.5);
+    EXPECT_GT(std::max(side[0], side[1]), 0.5);
   }
 }
 
@@ -118,6 +136,16 @@ TEST(ReebGraph, AWavyFieldOnTheAnnulusPassesTheChecker) {
   EXPECT_LE(out.tree.loops, 1);
   const TreeCheckReport r = check_tree(out.tree, mesh, {});
   EXPECT_TRUE(r.ok()) << r.summary(10);
+  // Simplification prunes leaves, never a loop: the simplified graph keeps its loops and passes.
+  TreeRequest rq;
+  rq.simplify = parse_threshold("20%");
+  const TreeOutcome s = compute_tree(mesh, rq);
+  ASSERT_TRUE(s.simplified);
+  EXPECT_LT(s.simplified->nodes.size(), out.tree.nodes.size());
+  EXPECT_EQ(s.simplified->loops, out.tree.loops);
+  EXPECT_TRUE(s.simplified->reeb_graph);
+  const TreeCheckReport rs = check_tree(*s.simplified, mesh, {});
+  EXPECT_TRUE(rs.ok()) << rs.summary(10);
 }
 
 TEST(ReebGraph, TwoComponentsGiveTwoGraphsWithoutForce) {
@@ -139,6 +167,36 @@ TEST(ReebGraph, TwoComponentsGiveTwoGraphsWithoutForce) {
   linear.method = TreeMethod::Refine;
   linear.refine = 2;
   EXPECT_THROW(compute_tree(mesh, linear), Error);
+}
+
+// The checker counts loops: an extra parallel arc is a second loop the annulus does not allow,
+// a recorded count that differs from the arcs' fails, and a cycle on a disk is no contour tree.
+TEST(ReebGraph, TheCheckerCountsLoops) {
+  const Mesh mesh = build_mesh(square_annulus(1, [](double x, double y) { return x + 0.3 * y; }));
+  const TreeResult g = compute_tree(mesh, {}).tree;
+  ASSERT_EQ(g.loops, 1);
+  auto failures = [&](const TreeResult &t, const Mesh &m) {
+    std::string all;
+    for (const auto &f : check_tree(t, m, {}).failures)
+      all += "[" + f.check + "] " + f.message + "\n";
+    return all;
+  };
+  TreeResult extra = g;
+  extra.arcs.push_back({1, 2});
+  std::sort(extra.arcs.begin(), extra.arcs.end());
+  extra.nodes[1].up = extra.nodes[2].down = 0; // let the checker count the degrees
+  extra.loops = 2;
+  EXPECT_NE(failures(extra, mesh).find("at most 1"), std::string::npos) << failures(extra, mesh);
+  TreeResult miscounted = g;
+  miscounted.loops = 0;
+  EXPECT_NE(failures(miscounted, mesh).find("but it records 0"), std::string::npos);
+  // The same graph on the mesh without its hole (a disk): a cycle is not allowed there.
+  const Mesh disk = build_mesh(generate_dataset("gauss", {}));
+  TreeResult cyclic = compute_tree(disk, {}).tree;
+  ASSERT_GE(cyclic.nodes.size(), 3u);
+  cyclic.arcs.push_back(cyclic.arcs.front());
+  cyclic.loops = 1;
+  EXPECT_NE(failures(cyclic, disk).find("closes a cycle"), std::string::npos);
 }
 
 // Brute force: for every band [t, s] of node indices, the loop pairs with top <= s and bottom
