@@ -32,7 +32,7 @@ struct Settings {
   int runs = 5;
   bool quick = false;
   std::vector<std::string> sections = {"datasets", "scaling", "density", "plateau",
-                                       "quads",    "memory",  "pl"};
+                                       "quads",    "reeb",    "memory",  "pl"};
   std::vector<int> degrees = {2, 3, 5};
   std::vector<double> sizes = {1e4, 1e5, 1e6, 4e6};
   std::vector<int> threads = {1, 2};
@@ -309,6 +309,54 @@ void quads_section(const Settings &s) {
   std::printf("\n");
 }
 
+// Reeb graphs: the plate with 10 x 10 holes (`hoct generate plate`), cubic. The Reeb graph's own
+// work is the cut into disks and the gluing (both inside the tree's time); the rest is the
+// contour tree of the disks, which is what the tree costs on a disk of those cells. Against a
+// genus-0 mesh there is nothing to compare: the contour tree path runs untouched there.
+void reeb_section(const Settings &s) {
+  const int runs = s.quick ? s.runs : std::min(std::max(s.runs, 3), 5);
+  const std::vector<double> sizes =
+      s.quick ? std::vector<double>{1e4} : std::vector<double>{1e5, 1e6};
+  std::printf(
+      "## Reeb graphs: `plate --degree 3` (100 holes), `hoct tree FILE.vtu --json J`, 1 "
+      "thread (seconds, medians of %d runs; peak memory: GNU time's maximum resident set)\n\n",
+      runs);
+  std::printf("| cells | loops | edges cut | mesh | cut | disks' tree | gluing | tree (all) | "
+              "total | tree / disks' tree | peak MiB (bytes per cell) |\n"
+              "|---|---|---|---|---|---|---|---|---|---|---|\n");
+  for (double size : sizes) {
+    ScratchDir scratch;
+    const std::string vtu = scratch.file("plate.vtu");
+    DatasetOptions o;
+    o.cells = static_cast<long long>(size);
+    o.degree = 3;
+    long long cells = 0;
+    {
+      const MeshInput in = generate_dataset("plate", o);
+      cells = static_cast<long long>(in.num_cells());
+      write_vtu(vtu, in);
+    }
+    std::vector<PipelineResult> r;
+    std::vector<double> ratios;
+    for (int i = 0; i < runs; ++i) {
+      r.push_back(run_pipeline(vtu, 1, false, scratch));
+      const PipelineResult &x = r.back();
+      ratios.push_back(x.tree / (x.tree - x.cut - x.gluing));
+    }
+    const PipelineResult m = median_of(r);
+    const ProcessPeak peak = run_process({executable_dir() + "/hoct", "tree", vtu, "--json",
+                                          scratch.file("cli.json"), "--threads", "1", "-q"});
+    std::printf("| %lld | %lld | %lld | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f | %.2fx | %.0f "
+                "(%.0f) |\n",
+                cells, static_cast<long long>(m.loops), static_cast<long long>(m.seam_edges),
+                m.mesh, m.cut, m.tree - m.cut - m.gluing, m.gluing, m.tree, m.total,
+                median(std::move(ratios)), peak.max_rss_kib / 1024.0,
+                1024.0 * peak.max_rss_kib / static_cast<double>(cells));
+    std::fflush(stdout);
+  }
+  std::printf("\n");
+}
+
 // Peak memory of `hoct tree FILE.vtu --json J --threads 1` in a process of its own (GNU time).
 void memory_section(const Settings &s) {
   std::printf("## Peak memory of `hoct tree FILE.vtu --json J` (random fields; GNU time's maximum "
@@ -438,7 +486,7 @@ int main(int argc, char **argv) {
       ->check(CLI::Range(1, 1000));
   app.add_flag("--quick", s.quick, "A smoke run: small sizes, few runs");
   app.add_option("--sections", s.sections,
-                 "Sections to run: datasets, scaling, density, plateau, quads, memory, pl")
+                 "Sections to run: datasets, scaling, density, plateau, quads, reeb, memory, pl")
       ->delimiter(',');
   app.add_option("--degrees", s.degrees, "Degrees of the scaling, density and memory sections")
       ->delimiter(',');
@@ -463,6 +511,8 @@ int main(int argc, char **argv) {
     plateau_section(s);
   if (wants(s, "quads"))
     quads_section(s);
+  if (wants(s, "reeb"))
+    reeb_section(s);
   if (wants(s, "memory"))
     memory_section(s);
   if (wants(s, "pl"))

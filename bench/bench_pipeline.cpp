@@ -50,6 +50,10 @@ PipelineResult run_pipeline(const std::string &vtu, int threads, bool with_vtp,
   r.assembly = time.graph_assembly.value_or(0);
   r.sweeps = time.sweeps.value_or(0);
   r.merge = time.merge.value_or(0) + time.output.value_or(0);
+  r.cut = time.cut.value_or(0);
+  r.gluing = time.gluing.value_or(0);
+  r.loops = tree.loops;
+  r.seam_edges = tree.stats.seam_edges.value_or(0);
   r.graph_nodes = n.graph_nodes;
   r.fallback_cells = static_cast<double>(n.fallback_cells);
   r.constant_cells = static_cast<double>(n.fallbacks(FallbackReason::ConstantCell));
@@ -77,8 +81,8 @@ PipelineResult median_of(const std::vector<PipelineResult> &runs) {
   for (auto f : {&PipelineResult::read, &PipelineResult::mesh, &PipelineResult::bernstein,
                  &PipelineResult::edges, &PipelineResult::cell_work, &PipelineResult::interior,
                  &PipelineResult::connections, &PipelineResult::assembly, &PipelineResult::sweeps,
-                 &PipelineResult::merge, &PipelineResult::tree, &PipelineResult::write,
-                 &PipelineResult::total})
+                 &PipelineResult::merge, &PipelineResult::tree, &PipelineResult::cut,
+                 &PipelineResult::gluing, &PipelineResult::write, &PipelineResult::total})
     med(f);
   return m;
 }

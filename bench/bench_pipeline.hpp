@@ -19,7 +19,11 @@ struct PipelineResult {
   // each), graph assembly (gathering, fallback cells, edge chains), sweeps, merge.
   double edges = 0, cell_work = 0, interior = 0, connections = 0, assembly = 0, sweeps = 0,
          merge = 0;
-  double tree = 0;  // exact_contour_tree as a whole
+  double tree = 0; // exact_contour_tree as a whole
+  // A Reeb graph (a domain with holes or handles): the cut into disks and the gluing, both
+  // within `tree`; its loops and the edges cut open.
+  double cut = 0, gluing = 0;
+  int64_t loops = 0, seam_edges = 0;
   double write = 0; // contraction, branches, files
   double total = 0; // read .. write
   int64_t cells = 0, graph_nodes = 0;
