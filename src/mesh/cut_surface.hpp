@@ -29,8 +29,8 @@ struct CutSurface {
   Mesh mesh;
   // Per vertex of the cut mesh, the vertex of the original it is a copy of.
   std::vector<int64_t> vertex_origin;
-  // Vertices of the cut mesh that are copies of one original vertex: groups[i] .. groups[i+1]
-  // in `copies` (only vertices on the cut, each group of 2 or more).
+  // Vertices of the cut mesh that are copies of one original vertex: group i is
+  // copies[group_offset[i] .. group_offset[i + 1]) (vertices on the cut only, 2 or more each).
   std::vector<int64_t> group_offset{0}, copies;
   // Each cut edge as its two edges in the cut mesh (the same orientation as the original).
   std::vector<std::array<int64_t, 2>> seams;
