@@ -13,7 +13,7 @@ R = Results()
 with tempdir() as tmp:
     p = lambda name: os.path.join(tmp, name)
     names = [line.split()[0] for line in run("generate", "--list").stdout.splitlines() if line.strip()]
-    R.check(len(names) == 6, f"datasets: {names}")
+    R.check(len(names) == 7, f"datasets: {names}")
     for name in names:
         extra = ["--cells", "2000"] if name == "random" else []
         run("generate", name, "-o", p(name + ".vtu"), *extra)

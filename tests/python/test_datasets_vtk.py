@@ -170,7 +170,7 @@ with tempfile.TemporaryDirectory(prefix="hoct-datasets-") as tmp:
     # Listing and user errors.
     listing = hoct("generate", "--list").stdout
     names = [line.split()[0] for line in listing.splitlines() if line.strip()]
-    check(names == ["conductor", "gauss", "heater", "random", "sphere", "two-triangle"],
+    check(names == ["conductor", "gauss", "heater", "plate", "random", "sphere", "two-triangle"],
           f"generate --list: {names}")
     check(hoct("generate", "list").stdout == listing, "generate list differs from --list")
     bad = os.path.join(tmp, "bad.vtu")
