@@ -135,8 +135,7 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
   n.fallback_error = degenerate.max_error;
   n.fallback_arcs_contracted = contracted;
   n.unresolved_interior_zeros = totals.unresolved_zeros;
-  if (opt.cut) {
-    r.reeb_graph = true;
+  if (opt.cut) { // (compute_tree labels the result a Reeb graph, cut or not)
     r.loops = graph_loops(ct);
     r.stats.seam_edges = static_cast<int64_t>(opt.cut->seams.size());
     r.stats.seam_paths_nonmonotone = glued.nonmonotone_paths;

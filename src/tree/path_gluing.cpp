@@ -262,7 +262,6 @@ GluedGraph glue_paths(const ContourTree &tree, const PathGluing &gluing, bool re
     }
   std::sort(g.arcs.begin(), g.arcs.end());
   out.graph = reduced ? reduce(g) : std::move(g);
-  out.loops = graph_loops(out.graph);
   return out;
 }
 

@@ -32,7 +32,6 @@ struct GluedGraph {
   // Reduced, nodes ascending in the total order, arcs lower node first; parallel arcs where the
   // level sets make loops. Each node stands for its group; its id is the group's lowest node.
   ContourTree graph;
-  int64_t loops = 0; // first Betti number of the graph: arcs - nodes + components
   // Paths whose values do not rise along the tree (a tie between copies and other nodes of equal
   // value): their ends are glued, their interiors are not. Counted, never expected.
   int64_t nonmonotone_paths = 0;
