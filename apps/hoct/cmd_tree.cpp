@@ -121,10 +121,10 @@ void register_tree(CLI::App &app) {
                 "Keep the nodes and zero-length arcs that plateaus (equal values) produce, instead "
                 "of one node per flat region");
   sub->add_flag("--force,--allow-non-simply-connected", o->force,
-                "Compute what is well defined when the domain is not one disk or sphere (one "
-                "tree per component; the join/split merge where there are holes or handles) or "
-                "has inverted cells or unmerged duplicate vertices; the output says so "
-                "(\"forced\" in the JSON, warnings on stderr)");
+                "Compute what is well defined past inverted or folded cells and unmerged "
+                "duplicate vertices; the output says so (\"forced\" in the JSON, warnings on "
+                "stderr). Not needed for holes, handles or several components: their Reeb "
+                "graph is computed without it");
   add_merge_option(sub, o->merge);
   sub->add_option("--threads", o->threads,
                   "Threads for reading, building the mesh, the cell phase, the sweeps and the "

@@ -302,7 +302,8 @@ def from_meshio(mesh, scalar=None, component=None, merge_duplicates=None):
 
 def contour_tree(mesh, simplify=None, threads=None, method="exact", refine=4, keep_flat=False,
                  force=False, augmented=False):
-    """The contour tree of `mesh`, as `hoct tree` computes it (the same library call):
+    """The contour tree of `mesh`, as `hoct tree` computes it (the same library call); on a
+    domain that is not one disk or one sphere its Reeb graph (`kind`, `loops`), by every method:
 
     method     "exact" (default), "linear" (PL of the Lagrange nodes, `hoct tree --linear`) or
                "refine" (PL of the exact field on k x k sub-triangles per cell, k = `refine`)
@@ -311,8 +312,8 @@ def contour_tree(mesh, simplify=None, threads=None, method="exact", refine=4, ke
     threads    threads for every phase (default: all cores; the tree does not depend on it)
     keep_flat  keep the nodes and zero-length arcs of plateaus (`--keep-flat`)
     augmented  keep the regular nodes (`--augmented`; no simplification then)
-    force      compute what is well defined on a domain that is not one disk or one sphere
-               (`--force`); without it such a domain raises HoctError
+    force      compute what is well defined past inverted or folded cells and unmerged
+               duplicate vertices (`--force`); without it such a mesh raises HoctError
 
     The arguments follow the flags' rules: simplify a finite number >= 0 or "N%" with N such a
     number (nan, -1, "-5%" are refused), refine an integer 1..1024, threads 1..1024, the

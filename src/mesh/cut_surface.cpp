@@ -100,8 +100,7 @@ std::vector<int64_t> cut_graph_edges(const Topology &t) {
   return edges;
 }
 
-CutSurface cut_open(const Mesh &mesh, std::span<const int64_t> cut_edges, int threads) {
-  const Topology &t = mesh.topology;
+CornerCut cut_corners(const Topology &t, std::span<const int64_t> cut_edges) {
   const int64_t nc = t.num_cells(), nv = t.num_vertices();
   std::vector<uint8_t> is_cut(static_cast<std::size_t>(t.num_edges()), 0), on_cut(nv, 0);
   for (int64_t e : cut_edges) {
@@ -137,7 +136,7 @@ CutSurface cut_open(const Mesh &mesh, std::span<const int64_t> cut_edges, int th
   std::vector<int64_t> first(static_cast<std::size_t>(nv) + 1, 0);
   for (int64_t v = 0; v < nv; ++v)
     first[v + 1] = first[v] + wedges[v];
-  CutSurface out;
+  CornerCut out;
   out.vertex_origin.resize(static_cast<std::size_t>(first[nv]));
   for (int64_t v = 0; v < nv; ++v)
     for (int64_t i = first[v]; i < first[v + 1]; ++i)
@@ -145,13 +144,7 @@ CutSurface cut_open(const Mesh &mesh, std::span<const int64_t> cut_edges, int th
   // Each wedge's copy: in the order of the wedges' lowest corners.
   std::vector<int64_t> copy_of_root(static_cast<std::size_t>(3 * nc), -1);
   std::vector<int64_t> next(first.begin(), first.end() - 1);
-  MeshInput corners;
-  corners.points.resize(static_cast<std::size_t>(first[nv]));
-  corners.cell_nodes.resize(static_cast<std::size_t>(3 * nc));
-  corners.cell_offsets.resize(static_cast<std::size_t>(nc) + 1);
-  corners.cell_degree.assign(static_cast<std::size_t>(nc), 1);
-  for (int64_t c = 0; c <= nc; ++c)
-    corners.cell_offsets[c] = 3 * c;
+  out.corner_vertex.resize(static_cast<std::size_t>(3 * nc));
   for (int64_t k = 0; k < 3 * nc; ++k) {
     const int64_t v = t.cell_vertices(k / 3)[k % 3];
     int64_t id = first[v];
@@ -161,15 +154,53 @@ CutSurface cut_open(const Mesh &mesh, std::span<const int64_t> cut_edges, int th
         copy_of_root[r] = next[v]++;
       id = copy_of_root[r];
     }
-    corners.cell_nodes[k] = id; // corner k % 3 of a degree-1 cell is its node k % 3
+    out.corner_vertex[k] = id;
   }
-  parent = {};
   for (int64_t v = 0; v < nv; ++v)
     if (wedges[v] > 1) {
       for (int64_t i = first[v]; i < first[v + 1]; ++i)
         out.copies.push_back(i);
       out.group_offset.push_back(static_cast<int64_t>(out.copies.size()));
     }
+  return out;
+}
+
+std::vector<std::array<int64_t, 4>> seam_vertices(const Topology &t, const CornerCut &cut,
+                                                  std::span<const int64_t> cut_edges) {
+  std::vector<std::array<int64_t, 4>> seams;
+  seams.reserve(cut_edges.size());
+  for (int64_t e : cut_edges) {
+    const auto ends = t.edge_vertices(e);
+    std::array<int64_t, 4> s{};
+    for (int side = 0; side < 2; ++side) {
+      const int64_t c = t.edge_cells_begin(e)[side];
+      for (int k = 0; k < 2; ++k)
+        s[2 * side + k] = cut.corner_vertex[3 * c + corner_of(t, c, ends[k])];
+    }
+    seams.push_back(s);
+  }
+  return seams;
+}
+
+CutSurface cut_open(const Mesh &mesh, std::span<const int64_t> cut_edges, int threads) {
+  const Topology &t = mesh.topology;
+  const int64_t nc = t.num_cells();
+  std::vector<uint8_t> is_cut(static_cast<std::size_t>(t.num_edges()), 0);
+  for (int64_t e : cut_edges)
+    is_cut[e] = 1;
+  CornerCut corner_cut = cut_corners(t, cut_edges);
+  CutSurface out;
+  out.vertex_origin = std::move(corner_cut.vertex_origin);
+  out.group_offset = std::move(corner_cut.group_offset);
+  out.copies = std::move(corner_cut.copies);
+  MeshInput corners;
+  corners.points.resize(out.vertex_origin.size());
+  corners.cell_nodes.assign(corner_cut.corner_vertex.begin(), corner_cut.corner_vertex.end());
+  corner_cut.corner_vertex = {};
+  corners.cell_offsets.resize(static_cast<std::size_t>(nc) + 1);
+  corners.cell_degree.assign(static_cast<std::size_t>(nc), 1);
+  for (int64_t c = 0; c <= nc; ++c)
+    corners.cell_offsets[c] = 3 * c; // corner k of a degree-1 cell is its node k
 
   ProblemLog problems;
   Topology cut = Topology::build(corners, problems, threads);

@@ -22,6 +22,26 @@ namespace hoct {
 // sphere. Needs a manifold topology (two cells per interior edge, one fan per vertex).
 std::vector<int64_t> cut_graph_edges(const Topology &topology);
 
+// The corners of a triangle mesh cut open along `cut_edges`: each vertex on the cut copied once
+// per wedge of cells between cut (or boundary) edges around it, its copies numbered
+// consecutively in the order of the original vertices (so no edge changes orientation).
+struct CornerCut {
+  // Per corner (3 per cell, in the cell's corner order), the vertex of the cut mesh there.
+  std::vector<int64_t> corner_vertex;
+  // Per vertex of the cut mesh, the vertex of the original it is a copy of (ascending).
+  std::vector<int64_t> vertex_origin;
+  // Vertices of the cut mesh that are copies of one original vertex: group i is
+  // copies[group_offset[i] .. group_offset[i + 1]) (vertices on the cut only, 2 or more each).
+  std::vector<int64_t> group_offset{0}, copies;
+};
+
+CornerCut cut_corners(const Topology &topology, std::span<const int64_t> cut_edges);
+
+// Each cut edge (lo, hi) of the original as its two copies in the cut mesh, {lo1, hi1, lo2, hi2}:
+// the copies at its first cell's corners, then at its second's.
+std::vector<std::array<int64_t, 4>> seam_vertices(const Topology &topology, const CornerCut &cut,
+                                                  std::span<const int64_t> cut_edges);
+
 struct CutSurface {
   // The same cells, field and geometry; each vertex on the cut duplicated once per wedge of
   // cells between cut edges around it (its copies numbered consecutively, in the order of the

@@ -30,6 +30,9 @@ TreeResult method_tree(const Mesh &mesh, const TreeRequest &rq, const MeshInput 
   // An augmented tree's arcs join consecutive nodes of a contour-tree arc, which may lie
   // anywhere on its band: a path between them would wander over it. They are drawn straight.
   const bool graph = rq.arcs != ArcGeometry::None && !rq.augmented;
+  // Not a disk or a sphere: the Reeb graph, from the surface cut open into disks (the PL mesh
+  // of the linear and refine methods covers the same surface).
+  const bool reeb = !domain_shape(mesh.topology).empty();
   Stopwatch clock;
   if (rq.method == TreeMethod::Exact) {
     ExactTreeOptions eo;
@@ -38,8 +41,6 @@ TreeResult method_tree(const Mesh &mesh, const TreeRequest &rq, const MeshInput 
     eo.threads = threads;
     eo.arc_geometry = graph;
     eo.progress = rq.progress;
-    // Not a disk or a sphere: the Reeb graph, from the surface cut open into disks.
-    const bool reeb = !domain_shape(mesh.topology).empty();
     const std::vector<int64_t> cut_edges =
         reeb ? cut_graph_edges(mesh.topology) : std::vector<int64_t>{};
     std::optional<CutSurface> cut;
@@ -60,7 +61,7 @@ TreeResult method_tree(const Mesh &mesh, const TreeRequest &rq, const MeshInput 
   const double pl_seconds = clock.lap();
   if (rq.progress)
     rq.progress("piecewise-linear mesh", pl_seconds);
-  TreeResult tree = pl_contour_tree(pl, rq.augmented, method_name(rq), graph, threads);
+  TreeResult tree = pl_contour_tree(pl, rq.augmented, method_name(rq), graph, threads, reeb);
   tree.stats.time.pl_mesh = pl_seconds;
   tree.stats.time.tree = clock.seconds();
   return tree;
@@ -96,7 +97,7 @@ std::string method_name(const TreeRequest &rq) {
 TreeOutcome compute_tree(const Mesh &mesh, const TreeRequest &rq, const MeshInput *input) {
   check_request(rq, input);
   TreeOutcome out;
-  out.warnings = check_domain(mesh, rq.force, rq.method == TreeMethod::Exact);
+  out.warnings = check_domain(mesh, rq.force);
   const int threads = thread_count(rq.threads);
   TreeResult tree = method_tree(mesh, rq, input, threads);
   // Plateaus (equal values, ordered by node id) give arcs of length zero and leaf branches of

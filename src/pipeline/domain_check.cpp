@@ -42,26 +42,13 @@ void require_valid_mesh(const Mesh &m, bool allow_forceable) {
                      : ""));
 }
 
-std::vector<std::string> check_domain(const Mesh &m, bool force, bool reeb_graph) {
+std::vector<std::string> check_domain(const Mesh &m, bool force) {
   require_valid_mesh(m, force);
   std::vector<std::string> reasons;
   for (const auto &[kind, p] : m.problems.kinds())
     if (p.severity == Severity::Error) // forceable, and forced (else thrown above)
       reasons.push_back(std::to_string(p.count) + " " + to_string(kind) + " (" +
                         p.examples.front() + ")");
-  const std::string why = reeb_graph ? "" : domain_shape(m.topology);
-  if (!why.empty()) {
-    if (!force)
-      throw Error(name_of(m) + ": the domain is not a disk or a sphere but " + why +
-                  "; its level-set graph is a Reeb graph (with loops), not a contour tree, and "
-                  "the piecewise-linear methods (--linear, --refine) compute contour trees only. "
-                  "Use the exact method (the default) for the Reeb graph, or --force (Python: "
-                  "force=True; ParaView: Force) to compute the join/split merge anyway (one tree "
-                  "per component; for holes or handles the result is not the Reeb graph).");
-    reasons.push_back("the domain is not a disk or a sphere but " + why +
-                      ": the join/split merge is computed (one tree per component), not the "
-                      "Reeb graph");
-  }
   return reasons;
 }
 

@@ -1,7 +1,6 @@
 // The level-set graph needs a valid mesh of a surface. On one disk or one sphere it is the
-// contour tree; on any other surface (holes, handles, a twist, several components) the exact
-// method computes the Reeb graph (mesh/cut_surface), and the piecewise-linear methods, which
-// compute contour trees only, need force (then the join/split merge is computed and labelled).
+// contour tree; on any other surface (holes, handles, a twist, several components) every method
+// computes the Reeb graph (mesh/cut_surface, pl/pl_cut), so the domain's shape is no problem.
 // With force, what is still well defined is computed past forceable problems (inverted or
 // folded cells, unmerged duplicate vertices) and labelled; what nothing can go past (a mesh that
 // is not a surface, broken input data) is always refused.
@@ -25,8 +24,7 @@ void require_valid_mesh(const Mesh &mesh, bool allow_forceable);
 
 // Checks the mesh for the tree. Without force, throws hoct::Error explaining the first kind of
 // problem; with force, returns the reasons the result is forced (empty if none) and throws only
-// for problems nothing can go past. `reeb_graph`: the method computes Reeb graphs, so a domain
-// that is not a disk or a sphere is no problem. Messages start with the mesh's source.
-std::vector<std::string> check_domain(const Mesh &mesh, bool force, bool reeb_graph = false);
+// for problems nothing can go past. Messages start with the mesh's source.
+std::vector<std::string> check_domain(const Mesh &mesh, bool force);
 
 } // namespace hoct

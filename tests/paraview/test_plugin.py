@@ -384,18 +384,29 @@ def main():
     kind = fetch(f, 0).GetFieldData().GetAbstractArray("Kind")
     check(kind is not None and kind.GetValue(0) == "Reeb graph", "two components: Kind")
     pv.Delete(f)
-    # The linear method computes contour trees only: refused, and with Force the same forced
-    # tree as `hoct tree --linear --force`, its reasons in the field data.
-    check_error("two components, linear", two, "the domain is not a disk or a sphere but 2 "
-                "separate components", Method="Linear (input nodes)")
-    f = apply_filter(two, Force=1, Method="Linear (input nodes)")
-    tree = cli_tree(two_path, "--linear", "--force")
-    check(tree.get("forced") is True, "two components --linear --force: labelled forced")
-    compare_nodes("two components, linear, Force", fetch(f, 0), tree)
-    compare_arcs("two components, linear, Force", fetch(f, 1), tree)
+    # The linear method computes the Reeb graph too.
+    f = apply_filter(two, Method="Linear (input nodes)")
+    tree = cli_tree(two_path, "--linear")
+    check(tree["kind"] == "Reeb graph" and "forced" not in tree, "two components, linear")
+    compare_nodes("two components, linear", fetch(f, 0), tree)
+    compare_arcs("two components, linear", fetch(f, 1), tree)
+    pv.Delete(f)
+    # An inverted cell (a fan whose centre lies outside its square): refused, and with Force the
+    # same forced tree as `hoct tree --force`, its reasons in the field data.
+    fan_points = [(0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0), (0.5, -0.3, 0)]
+    fan = grid_source(fan_points, [(5, [4, 0, 1]), (5, [4, 1, 2]), (5, [4, 2, 3]), (5, [4, 3, 0])],
+                      [x + 2 * y for x, y, _ in fan_points])
+    fan_path = os.path.join(OUT, "inverted.vtu")
+    pv.SaveData(fan_path, proxy=fan)
+    check_error("inverted cell", fan, "inverted cell")
+    f = apply_filter(fan, Force=1)
+    tree = cli_tree(fan_path, "--force")
+    check(tree.get("forced") is True, "inverted cell --force: labelled forced")
+    compare_nodes("inverted cell, Force", fetch(f, 0), tree)
+    compare_arcs("inverted cell, Force", fetch(f, 1), tree)
     reasons = fetch(f, 0).GetFieldData().GetAbstractArray("ForcedReasons")
     check(reasons is not None and reasons.GetNumberOfValues() == len(tree["forced_reasons"]) and
-          "separate components" in reasons.GetValue(0), "two components, Force: ForcedReasons")
+          "inverted" in reasons.GetValue(0), "inverted cell, Force: ForcedReasons")
     pv.Delete(f)
     check_error("tetrahedron", grid_source(tri + [(0, 0, 1)], [(10, [0, 1, 2, 3])], [0, 1, 2, 3]),
                 "cell 0 has VTK cell type 10, which is not a supported surface cell")

@@ -53,8 +53,6 @@ def cli_json(path, flags):
 def test_cli_and_python_write_the_same_bytes(data, name, flags, kwargs):
     _, paths = data
     path = paths[name]
-    if name == "plate" and ("--linear" in flags or "--refine" in flags):
-        flags, kwargs = flags + ["--force"], dict(kwargs, force=True)  # PL: contour trees only
     expected = cli_json(path, flags)
     got = hoct.contour_tree(hoct.read(path), **kwargs).to_json(timings=False) + "\n"
     assert got == expected
@@ -77,24 +75,31 @@ def refused_by_both(path, words):
         hoct.contour_tree(hoct.read(path))
 
 
-def test_forced_domains_are_the_same_too(data):
-    # Two separate triangles: the same Reeb graph (a forest) from both; the piecewise-linear
-    # methods refused by both without force, the same forced tree with it.
+def test_reeb_graphs_and_forced_meshes_are_the_same_too(data):
+    # Two separate triangles: the same Reeb graph (a forest) from both, by every method.
     d, _ = data
     path = os.path.join(d, "two.vtu")
     two_triangles(path, [[0, 0, 0], [1, 0, 0], [0, 1, 0], [3, 0, 0], [4, 0, 0], [3, 1, 0]],
                   [0, 1, 2, 3, 4, 5])
-    expected = cli_json(path, [])
-    assert '"kind": "Reeb graph"' in expected and '"forced"' not in expected
-    assert hoct.contour_tree(hoct.read(path)).to_json(timings=False) + "\n" == expected
-    r = subprocess.run([HOCT, "tree", path, "-q", "--linear"], capture_output=True, text=True)
-    assert r.returncode == 1 and "2 separate components" in r.stderr, r.stderr
-    with pytest.raises(hoct.HoctError, match="2 separate components"):
-        hoct.contour_tree(hoct.read(path), method="linear")
-    expected = cli_json(path, ["--linear", "--force"])
-    assert '"forced": true' in expected
-    assert hoct.contour_tree(hoct.read(path), method="linear",
-                             force=True).to_json(timings=False) + "\n" == expected
+    for flags, kwargs in (([], {}), (["--linear"], {"method": "linear"})):
+        expected = cli_json(path, flags)
+        assert '"kind": "Reeb graph"' in expected and '"forced"' not in expected
+        assert hoct.contour_tree(hoct.read(path), **kwargs).to_json(timings=False) + "\n" == expected
+    # An inverted cell (a fan whose centre lies outside the square): refused by both without
+    # force, the same forced tree with it.
+    import meshio
+    import numpy as np
+
+    path = os.path.join(d, "inverted.vtu")
+    points = np.array([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0], [0.5, -0.3, 0]], float)
+    meshio.write(path, meshio.Mesh(points, [("triangle", np.array([[4, 0, 1], [4, 1, 2], [4, 2, 3],
+                                   [4, 3, 0]]))], point_data={"f": points[:, 0] + 2 * points[:, 1]}))
+    refused_by_both(path, "inverted cell")
+    for flags, kwargs in ((["--force"], {"force": True}),
+                          (["--linear", "--force"], {"method": "linear", "force": True})):
+        expected = cli_json(path, flags)
+        assert '"forced": true' in expected
+        assert hoct.contour_tree(hoct.read(path), **kwargs).to_json(timings=False) + "\n" == expected
 
 
 def test_bad_requests_fail_the_same_way(data):

@@ -146,18 +146,16 @@ def test_computation_releases_the_gil():
 
 def test_non_simply_connected_domain_is_a_reeb_graph():
     # Two separate triangles: not one disk, so a Reeb graph (here a forest: one min and max per
-    # triangle); the linear method, contour trees only, is refused unless forced.
+    # triangle), by the linear method too.
     points = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0], [3, 0, 0], [4, 0, 0], [3, 1, 0]], float)
     cells = np.array([[0, 1, 2], [3, 4, 5]])
     mesh = hoct.from_arrays(points, cells, np.array([0.0, 1.0, 2.0, 3.0, 4.0, 5.0]))
     g = hoct.contour_tree(mesh)
     assert g.kind == "Reeb graph" and g.loops == 0
     assert sorted(g.values.tolist()) == [0.0, 2.0, 3.0, 5.0]
-    with pytest.raises(hoct.HoctError, match="not a disk or a sphere but 2 separate components"):
-        hoct.contour_tree(mesh, method="linear")
-    forced = hoct.contour_tree(mesh, method="linear", force=True)
-    assert forced.kind == "contour tree"
-    assert sorted(forced.values.tolist()) == [0.0, 2.0, 3.0, 5.0]
+    linear = hoct.contour_tree(mesh, method="linear")
+    assert linear.kind == "Reeb graph" and linear.loops == 0
+    assert sorted(linear.values.tolist()) == [0.0, 2.0, 3.0, 5.0]
 
 
 def test_annulus_reeb_graph_has_its_loop_in_networkx():

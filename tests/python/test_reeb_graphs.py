@@ -12,11 +12,13 @@ of genus g: g; a near-linear function on a planar domain with h holes: h; a near
 annulus: 0); its components are the domain's; its leaves are minima or maxima and the sum over
 nodes of (degree - 2) is 2 (loops - components); the level-set oracle of level_sets.py (the
 number of contours of VTK's own PL refinement at levels between node values equals the number of
-arcs crossing them) agrees; and the JSON's "kind" and "loops" and `hoct check` agree (see
-reeb_fields). First, the VTK node order written here is checked by `hoct eval` on straight cells
+arcs crossing them) agrees; the JSON's "kind" and "loops" and `hoct check` agree (see
+reeb_fields); and the PL Reeb graphs of the refinements --refine 4 and 16 converge to it
+(converges). First, the VTK node order written here is checked by `hoct eval` on straight cells
 (a field that is a polynomial of the cell's degree is reproduced exactly) and on curved ones
 (positions on the true surface). A failing case's .vtu is kept in /tmp/reeb_failures/.
 """
+import json
 import math
 import os
 import shutil
@@ -314,6 +316,30 @@ def reeb_fields(name, tree, json_path, vtu, loops):
                                f"{(r.stdout + r.stderr).strip()[-600:]}")
 
 
+def converges(name, vtu, exact_json, exact):
+    """The PL Reeb graphs of refinements (`--refine k`) converge to the exact one: at k = 16 the
+    same number of loops, a bottleneck distance of all their diagrams (ordinary and loop pairs)
+    no larger than at k = 4 and within 1e-3 of the range. Returns the two distances."""
+    values = [n["value"] for n in exact["nodes"]]
+    span = max(values) - min(values)
+    dist = {}
+    for k in (4, 16):
+        out = f"{vtu}.refine{k}.json"
+        run("tree", vtu, "-q", "--refine", str(k), "--json", out, "--no-timings")
+        with open(out) as f:
+            pl = json.load(f)
+        R.check(pl["kind"] == "Reeb graph" and "forced" not in pl,
+                f"{name} --refine {k}: {pl['kind']}, forced {pl.get('forced')}")
+        d = json.loads(run("compare", exact_json, out, "--json").stdout)["bottleneck"]
+        dist[k] = (d["max"], pl["loops"])
+    R.check(dist[16][1] == exact["loops"],
+            f"{name}: --refine 16 has {dist[16][1]} loops, the exact graph {exact['loops']}")
+    R.check(dist[16][0] <= dist[4][0] + 1e-12 * span and dist[16][0] <= 1e-3 * span,
+            f"{name}: bottleneck distance to --refine 4, 16: {dist[4][0]:.3g}, {dist[16][0]:.3g} "
+            f"(range {span:.3g})")
+    return dist[4][0], dist[16][0]
+
+
 def keep_failure(name, vtu):
     os.makedirs(FAILURES, exist_ok=True)
     target = os.path.join(FAILURES, name.replace(" ", "_").replace(",", "") + ".vtu")
@@ -371,11 +397,13 @@ def case(tmp, name, mesh, f, loops, components=1, level=2, surface=None, tol=1e-
                 f"not 2 (loops - components) = {2 * (loops - components)}")
     reeb_fields(name, tree, info["json"], vtu, got if loops is None else loops)
     dev = check_positions(name, vtu, len(cells), surface, f, tol)
+    d4, d16 = converges(name, vtu, info["json"], tree)
     bad = info["bad"]
     print(f"{name}: degree {int(round((math.sqrt(8 * cells.shape[1] + 1) - 3) / 2))}, "
           f"{len(cells)} cells; {len(tree['nodes'])} nodes, {len(tree['arcs'])} arcs, {got} loop(s), "
           f"{comps} component(s); {len(info['levels'])} levels checked, {len(bad)} disagree "
           f"(refinement error ~{info['err']:.2g}); eval deviation {dev:.2g}; "
+          f"PL --refine 4, 16 at bottleneck {d4:.2g}, {d16:.2g}; "
           f"{time.time() - t0:.1f} s", flush=True)
     for c, arcs, contours in bad[:5]:
         print(f"  level {c!r}: {arcs} arcs cross it, {contours} contours", flush=True)
@@ -534,6 +562,8 @@ with tempdir() as tmp:
             f"plate: {info['tree']['loops']} loops, expected 100")
     r = run("check", info["json"], plate, check=False)
     R.check(r.returncode == 0, f"plate: hoct check {r.stdout[-300:]}")
+    d4, d16 = converges("plate", plate, info["json"], info["tree"])
+    print(f"plate: PL --refine 4, 16 at bottleneck {d4:.2g}, {d16:.2g}", flush=True)
 
     if gmsh is None:
         print("the Gmsh cases are skipped: python3-gmsh is missing")

@@ -1,7 +1,7 @@
 // The Reeb graph (docs/ALGORITHM.md §8): the cut graph makes every component a disk, the exact
 // Reeb graph of a linear field on a square annulus has its one loop between the hole's lowest and
 // highest corners, the loops' essential pairs count the loops of every band of values (a brute
-// force over random graphs), and two components give one graph each without --force.
+// force over random graphs), and two components give one graph each, by every method.
 #include "analysis/tree_check.hpp"
 #include "datasets/datasets.hpp"
 #include "mesh/cut_surface.hpp"
@@ -148,7 +148,7 @@ TEST(ReebGraph, AWavyFieldOnTheAnnulusPassesTheChecker) {
   EXPECT_TRUE(rs.ok()) << rs.summary(10);
 }
 
-TEST(ReebGraph, TwoComponentsGiveTwoGraphsWithoutForce) {
+TEST(ReebGraph, TwoComponentsGiveTwoGraphsByEveryMethod) {
   MeshInput two;
   two.points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {5, 0, 0}, {6, 0, 0}, {5, 1, 0}};
   two.values = {0, 1, 2, 3, 4, 5};
@@ -162,11 +162,18 @@ TEST(ReebGraph, TwoComponentsGiveTwoGraphsWithoutForce) {
   EXPECT_EQ(out.tree.loops, 0);
   EXPECT_EQ(out.tree.nodes.size(), 4u);
   EXPECT_EQ(out.tree.arcs.size(), 2u);
-  // The piecewise-linear methods compute contour trees only: refused without --force.
-  TreeRequest linear;
-  linear.method = TreeMethod::Refine;
-  linear.refine = 2;
-  EXPECT_THROW(compute_tree(mesh, linear), Error);
+  // The piecewise-linear methods compute the same graph (a linear field: their nodes are its).
+  TreeRequest refined;
+  refined.method = TreeMethod::Refine;
+  refined.refine = 2;
+  const TreeOutcome pl = compute_tree(mesh, refined);
+  EXPECT_TRUE(pl.warnings.empty());
+  EXPECT_TRUE(pl.tree.reeb_graph);
+  EXPECT_EQ(pl.tree.loops, 0);
+  ASSERT_EQ(pl.tree.nodes.size(), 4u);
+  for (std::size_t i = 0; i < 4; ++i)
+    EXPECT_EQ(pl.tree.nodes[i].value, out.tree.nodes[i].value);
+  EXPECT_EQ(pl.tree.arcs, out.tree.arcs);
 }
 
 // The checker counts loops: an extra parallel arc is a second loop the annulus does not allow,
