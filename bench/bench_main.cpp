@@ -17,6 +17,7 @@
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
+#include <fstream>
 #include <map>
 #include <sstream>
 #include <stdexcept>
@@ -37,6 +38,7 @@ struct Settings {
   std::vector<double> sizes = {1e4, 1e5, 1e6, 4e6};
   std::vector<int> threads = {1, 2};
   std::string ttk_ftm; // an external TTK FTM driver to time side by side (see pl_section)
+  std::string ttk_ftr; // an external TTK FTR driver, the Reeb graph (see reeb_section)
 };
 
 bool wants(const Settings &s, const std::string &section) {
@@ -313,69 +315,6 @@ void quads_section(const Settings &s) {
 // work is the cut into disks and the gluing (both inside the tree's time); the rest is the
 // contour tree of the disks, which is what the tree costs on a disk of those cells. Against a
 // genus-0 mesh there is nothing to compare: the contour tree path runs untouched there.
-void reeb_section(const Settings &s) {
-  const int runs = s.quick ? s.runs : std::min(std::max(s.runs, 3), 5);
-  const std::vector<double> sizes =
-      s.quick ? std::vector<double>{1e4} : std::vector<double>{1e5, 1e6};
-  std::printf(
-      "## Reeb graphs: `plate --degree 3` (100 holes), `hoct tree FILE.vtu --json J`, 1 "
-      "thread (seconds, medians of %d runs; peak memory: GNU time's maximum resident set)\n\n",
-      runs);
-  std::printf("| cells | loops | edges cut | mesh | cut | disks' tree | gluing | tree (all) | "
-              "total | tree / disks' tree | peak MiB (bytes per cell) |\n"
-              "|---|---|---|---|---|---|---|---|---|---|---|\n");
-  for (double size : sizes) {
-    ScratchDir scratch;
-    const std::string vtu = scratch.file("plate.vtu");
-    DatasetOptions o;
-    o.cells = static_cast<long long>(size);
-    o.degree = 3;
-    long long cells = 0;
-    {
-      const MeshInput in = generate_dataset("plate", o);
-      cells = static_cast<long long>(in.num_cells());
-      write_vtu(vtu, in);
-    }
-    std::vector<PipelineResult> r;
-    std::vector<double> ratios;
-    for (int i = 0; i < runs; ++i) {
-      r.push_back(run_pipeline(vtu, 1, false, scratch));
-      const PipelineResult &x = r.back();
-      ratios.push_back(x.tree / (x.tree - x.cut - x.gluing));
-    }
-    const PipelineResult m = median_of(r);
-    const ProcessPeak peak = run_process({executable_dir() + "/hoct", "tree", vtu, "--json",
-                                          scratch.file("cli.json"), "--threads", "1", "-q"});
-    std::printf("| %lld | %lld | %lld | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f | %.2fx | %.0f "
-                "(%.0f) |\n",
-                cells, static_cast<long long>(m.loops), static_cast<long long>(m.seam_edges),
-                m.mesh, m.cut, m.tree - m.cut - m.gluing, m.gluing, m.tree, m.total,
-                median(std::move(ratios)), peak.max_rss_kib / 1024.0,
-                1024.0 * peak.max_rss_kib / static_cast<double>(cells));
-    std::fflush(stdout);
-  }
-  std::printf("\n");
-}
-
-// Peak memory of `hoct tree FILE.vtu --json J --threads 1` in a process of its own (GNU time).
-void memory_section(const Settings &s) {
-  std::printf("## Peak memory of `hoct tree FILE.vtu --json J` (random fields; GNU time's maximum "
-              "resident set)\n\n| degree | cells | peak MiB | bytes per cell | wall time (s) "
-              "|\n|---|---|---|---|---|\n");
-  for (int degree : s.degrees)
-    for (double size : s.sizes) {
-      ScratchDir scratch;
-      const std::string vtu = scratch.file("random.vtu");
-      const long long cells = write_random(vtu, size, degree);
-      const ProcessPeak peak = run_process({executable_dir() + "/hoct", "tree", vtu, "--json",
-                                            scratch.file("cli.json"), "--threads", "1", "-q"});
-      std::printf("| %d | %lld | %.0f | %.0f | %.2f |\n", degree, cells, peak.max_rss_kib / 1024.0,
-                  1024.0 * peak.max_rss_kib / static_cast<double>(cells), peak.seconds);
-      std::fflush(stdout);
-    }
-  std::printf("\n");
-}
-
 // The PL mesh in the binary layout the external FTM driver reads: "HOCTPL1\n", u64 vertices,
 // u64 triangles, xyz doubles, scalar doubles, int64 vertex ids per triangle.
 void write_pl_binary(const std::string &path, const PlMesh &pl) {
@@ -416,6 +355,123 @@ std::string capture(const std::string &command) {
   if (pclose(p) != 0)
     throw std::runtime_error(command + " failed");
   return out;
+}
+
+// "time_tree_s" of a tree's JSON, -1 if absent.
+double json_tree_seconds(const std::string &path) {
+  std::ifstream in(path);
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string s = text.str();
+  const auto at = s.find("\"time_tree_s\":");
+  return at == std::string::npos ? -1 : std::stod(s.substr(at + 14));
+}
+
+void reeb_section(const Settings &s) {
+  const int runs = s.quick ? s.runs : std::min(std::max(s.runs, 3), 5);
+  const std::vector<double> sizes =
+      s.quick ? std::vector<double>{1e4} : std::vector<double>{1e5, 1e6};
+  const bool ttk = !s.ttk_ftr.empty();
+  std::printf(
+      "## Reeb graphs: `plate --degree 3` (100 holes), `hoct tree FILE.vtu --json J`, 1 "
+      "thread (seconds, medians of %d runs; peak memory: GNU time's maximum resident set)\n\n",
+      runs);
+  std::printf("| cells | loops | edges cut | mesh | cut | disks' tree | gluing | tree (all) | "
+              "total | tree / disks' tree | peak MiB (bytes per cell) |\n"
+              "|---|---|---|---|---|---|---|---|---|---|---|\n");
+  std::vector<std::string> ttk_rows;
+  for (double size : sizes) {
+    ScratchDir scratch;
+    const std::string vtu = scratch.file("plate.vtu");
+    DatasetOptions o;
+    o.cells = static_cast<long long>(size);
+    o.degree = 3;
+    long long cells = 0;
+    std::string bin;
+    std::size_t pl_triangles = 0;
+    {
+      MeshInput in = generate_dataset("plate", o);
+      cells = static_cast<long long>(in.num_cells());
+      write_vtu(vtu, in);
+      if (ttk) { // the PL 16x refinement (k = 4) of the same field, for TTK
+        const PlMesh pl = refine(build_mesh(std::move(in)), 4);
+        bin = scratch.file("pl.bin");
+        write_pl_binary(bin, pl);
+        pl_triangles = pl.triangles.size();
+      }
+    }
+    std::vector<PipelineResult> r;
+    std::vector<double> ratios;
+    for (int i = 0; i < runs; ++i) {
+      r.push_back(run_pipeline(vtu, 1, false, scratch));
+      const PipelineResult &x = r.back();
+      ratios.push_back(x.tree / (x.tree - x.cut - x.gluing));
+    }
+    const PipelineResult m = median_of(r);
+    const ProcessPeak peak = run_process({executable_dir() + "/hoct", "tree", vtu, "--json",
+                                          scratch.file("cli.json"), "--threads", "1", "-q"});
+    std::printf("| %lld | %lld | %lld | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f | %.2fx | %.0f "
+                "(%.0f) |\n",
+                cells, static_cast<long long>(m.loops), static_cast<long long>(m.seam_edges),
+                m.mesh, m.cut, m.tree - m.cut - m.gluing, m.gluing, m.tree, m.total,
+                median(std::move(ratios)), peak.max_rss_kib / 1024.0,
+                1024.0 * peak.max_rss_kib / static_cast<double>(cells));
+    std::fflush(stdout);
+    if (!ttk)
+      continue;
+    // Cold against cold: each run a fresh `hoct tree` process (its tree time from the JSON)
+    // and a fresh driver process (its graph time, reading excluded), alternated.
+    std::vector<double> hoct_cold, ftr, ratio;
+    bool same = true;
+    for (int i = 0; i < runs; ++i) {
+      const std::string json = scratch.file("cold.json");
+      run_process(
+          {executable_dir() + "/hoct", "tree", vtu, "--json", json, "--threads", "1", "-q"});
+      hoct_cold.push_back(json_tree_seconds(json));
+      const std::string out = capture(s.ttk_ftr + " " + bin + " --runs 1 --threads 1 2>/dev/null");
+      ftr.push_back(field(out, "median", "total"));
+      ratio.push_back(hoct_cold.back() / ftr.back());
+      same = same && field(out, "graph:", "loops") == static_cast<double>(m.loops);
+    }
+    char row[512];
+    std::snprintf(row, sizeof row, "| %lld | %zu | %.3f | %.3f | %.3f | %s |\n", cells,
+                  pl_triangles, median(hoct_cold), median(ftr), median(std::move(ratio)),
+                  same ? "yes" : "NO");
+    ttk_rows.push_back(row);
+  }
+  std::printf("\n");
+  if (!ttk)
+    return;
+  std::printf("Side by side with TTK's Reeb graph (FTR; `%s`, an external driver built outside "
+              "this repository from topology-tool-kit/ttk) on the PL 16x refinement (k = 4) of "
+              "the same field; both cold (a fresh process per run, runs alternated, reading "
+              "excluded: hoct's `time_tree_s`, TTK's triangulation preconditioning + order array "
+              "+ FTRGraph::build), 1 thread, medians of %d runs:\n\n"
+              "| cells | PL 16x triangles | hoct exact tree (s) | TTK FTR on PL 16x (s) | "
+              "exact / FTR | same loops |\n|---|---|---|---|---|---|\n",
+              s.ttk_ftr.c_str(), runs);
+  for (const std::string &row : ttk_rows)
+    std::printf("%s", row.c_str());
+  std::printf("\n");
+}
+
+// Peak memory of `hoct tree FILE.vtu --json J --threads 1` in a process of its own (GNU time).
+void memory_section(const Settings &s) {
+  std::printf("## Peak memory of `hoct tree FILE.vtu --json J` (random fields; GNU time's maximum "
+              "resident set)\n\n| degree | cells | peak MiB | bytes per cell | wall time (s) "
+              "|\n|---|---|---|---|---|\n");
+  for (int degree : s.degrees)
+    for (double size : s.sizes) {
+      ScratchDir scratch;
+      const std::string vtu = scratch.file("random.vtu");
+      const long long cells = write_random(vtu, size, degree);
+      const ProcessPeak peak = run_process({executable_dir() + "/hoct", "tree", vtu, "--json",
+                                            scratch.file("cli.json"), "--threads", "1", "-q"});
+      std::printf("| %d | %lld | %.0f | %.0f | %.2f |\n", degree, cells, peak.max_rss_kib / 1024.0,
+                  1024.0 * peak.max_rss_kib / static_cast<double>(cells), peak.seconds);
+      std::fflush(stdout);
+    }
+  std::printf("\n");
 }
 
 void pl_section(const Settings &s) {
@@ -492,6 +548,9 @@ int main(int argc, char **argv) {
       ->delimiter(',');
   app.add_option("--sizes", s.sizes, "Cell counts of the scaling section, e.g. 1e4,1e5")
       ->delimiter(',');
+  app.add_option("--ttk-ftr", s.ttk_ftr,
+                 "An external TTK FTR driver (reads the binary PL mesh, prints 'median ... "
+                 "total=S' and 'graph: ... loops=N') to time side by side in the reeb section");
   app.add_option("--ttk-ftm", s.ttk_ftm,
                  "An external TTK FTM driver (reads the binary PL mesh, prints 'median ... "
                  "ftm=S total=S' and 'tree: minima=N maxima=N saddles=N') to time side by side");

@@ -88,7 +88,8 @@ void run_tree(const TreeOptions &o) {
   if (!o.svg.empty())
     write_tree_svg(o.svg, tree,
                    std::filesystem::path(o.file).filename().string() + ": " + tree.method +
-                       " contour tree, " + std::to_string(tree.nodes.size()) + " nodes");
+                       (tree.reeb_graph ? " Reeb graph, " : " contour tree, ") +
+                       std::to_string(tree.nodes.size()) + " nodes");
   if (!o.quiet)
     print_tree_summary(o.file, lm.mesh, tree, total.seconds());
   if (o.branches)

@@ -27,70 +27,55 @@ int64_t find(std::vector<int64_t> &parent, int64_t x) {
 
 std::vector<int64_t> cut_graph_edges(const Topology &t) {
   const int64_t nc = t.num_cells(), ne = t.num_edges(), nv = t.num_vertices();
-  // A spanning tree of the dual graph, by breadth-first search from each component's first cell.
-  std::vector<uint8_t> dual_tree(static_cast<std::size_t>(ne), 0), seen(nc, 0);
-  std::vector<int64_t> queue;
-  queue.reserve(static_cast<std::size_t>(nc));
-  for (int64_t root = 0; root < nc; ++root) {
-    if (seen[root])
-      continue;
-    seen[root] = 1;
-    queue.clear();
-    queue.push_back(root);
-    for (std::size_t q = 0; q < queue.size(); ++q) {
-      const int64_t c = queue[q];
-      for (int k = 0; k < 3; ++k) {
-        const int64_t d = t.neighbor(c, k);
-        if (d >= 0 && !seen[d]) {
-          seen[d] = 1;
-          dual_tree[t.cell_edge(c, k)] = 1;
-          queue.push_back(d);
+  // A spanning forest of the dual graph (cells across interior edges), by union-find over the
+  // interior edges in edge order: the edges it does not take are the cut before pruning.
+  std::vector<int64_t> parent(static_cast<std::size_t>(nc));
+  std::iota(parent.begin(), parent.end(), int64_t{0});
+  std::vector<uint8_t> cut(static_cast<std::size_t>(ne), 0);
+  // Per vertex: its cut and boundary edges, its cut edges, and the exclusive or of their ids (so
+  // a vertex left with one cut edge knows which, without an incidence list).
+  std::vector<int32_t> degree(static_cast<std::size_t>(nv), 0), cut_degree(nv, 0);
+  std::vector<int64_t> cut_xor(static_cast<std::size_t>(nv), 0);
+  for (int64_t e = 0; e < ne; ++e) {
+    const int cells = t.edge_cell_count(e);
+    if (cells == 2) {
+      const int64_t a = find(parent, t.edge_cells_begin(e)[0]);
+      const int64_t b = find(parent, t.edge_cells_begin(e)[1]);
+      if (a != b)
+        parent[std::max(a, b)] = std::min(a, b);
+      else
+        cut[e] = 1;
+    }
+    if (cut[e] || cells == 1)
+      for (int64_t v : t.edge_vertices(e)) {
+        ++degree[v];
+        if (cut[e]) {
+          ++cut_degree[v];
+          cut_xor[v] ^= e;
         }
       }
-    }
   }
-  // The cut: interior edges off the dual tree. Dangling ones (an end of no other cut or boundary
-  // edge) are pruned until none is left: uncutting them keeps each component a disk.
-  std::vector<uint8_t> cut(static_cast<std::size_t>(ne), 0);
-  std::vector<int32_t> degree(static_cast<std::size_t>(nv), 0);
-  std::vector<int64_t> offset(static_cast<std::size_t>(nv) + 1, 0);
-  for (int64_t e = 0; e < ne; ++e) {
-    cut[e] = t.edge_cell_count(e) == 2 && !dual_tree[e];
-    if (cut[e] || t.is_boundary_edge(e))
-      for (int64_t v : t.edge_vertices(e))
-        ++degree[v];
-    if (cut[e])
-      for (int64_t v : t.edge_vertices(e))
-        ++offset[v + 1];
-  }
-  for (int64_t v = 0; v < nv; ++v)
-    offset[v + 1] += offset[v];
-  std::vector<int64_t> incident(static_cast<std::size_t>(offset[nv]));
-  {
-    std::vector<int64_t> fill(offset.begin(), offset.end() - 1);
-    for (int64_t e = 0; e < ne; ++e)
-      if (cut[e])
-        for (int64_t v : t.edge_vertices(e))
-          incident[fill[v]++] = e;
-  }
+  parent = {};
+  // Dangling cut edges (an end of no other cut or boundary edge) are pruned until none is left:
+  // uncutting them keeps each component a disk.
   std::vector<int64_t> leaves;
+  const auto dangling = [&](int64_t v) { return degree[v] == 1 && cut_degree[v] == 1; };
   for (int64_t v = 0; v < nv; ++v)
-    if (degree[v] == 1)
+    if (dangling(v))
       leaves.push_back(v);
   while (!leaves.empty()) {
     const int64_t v = leaves.back();
     leaves.pop_back();
-    if (degree[v] != 1)
+    if (!dangling(v))
       continue;
-    for (int64_t k = offset[v]; k < offset[v + 1]; ++k) {
-      const int64_t e = incident[k];
-      if (!cut[e])
-        continue;
-      cut[e] = 0;
-      for (int64_t w : t.edge_vertices(e))
-        if (--degree[w] == 1)
-          leaves.push_back(w);
-      break;
+    const int64_t e = cut_xor[v];
+    cut[e] = 0;
+    for (int64_t w : t.edge_vertices(e)) {
+      --degree[w];
+      --cut_degree[w];
+      cut_xor[w] ^= e;
+      if (dangling(w))
+        leaves.push_back(w);
     }
   }
   std::vector<int64_t> edges;
@@ -100,38 +85,120 @@ std::vector<int64_t> cut_graph_edges(const Topology &t) {
   return edges;
 }
 
+namespace {
+
+// The cells around vertex v in order (a cycle inside, a path from boundary edge to boundary edge
+// on the boundary), each with the edge crossed from it to the next (-1 after the last of a path).
+struct Fan {
+  std::vector<int64_t> cells, crossed;
+  bool closed = false;
+};
+
+void walk_fan(const Topology &t, int64_t v, Fan &fan) {
+  // From cell c, entered across `entered`, the other edge at v: its local index.
+  const auto exit_edge = [&](int64_t c, int64_t entered, bool forward) {
+    const int j = corner_of(t, c, v);
+    const int ahead = j, behind = (j + 2) % 3; // local edges j -> j+1 and j+2 -> j
+    if (entered < 0)
+      return forward ? ahead : behind;
+    return t.cell_edge(c, ahead) == entered ? behind : ahead;
+  };
+  const int64_t start = t.vertex_cell(v);
+  fan.cells.assign(1, start);
+  fan.crossed.clear();
+  fan.closed = false;
+  int64_t c = start, entered = -1;
+  for (;;) {
+    const int k = exit_edge(c, entered, true);
+    const int64_t d = t.neighbor(c, k);
+    if (d < 0)
+      break;
+    fan.crossed.push_back(t.cell_edge(c, k));
+    if (d == start) {
+      fan.closed = true;
+      return;
+    }
+    entered = t.cell_edge(c, k);
+    fan.cells.push_back(c = d);
+  }
+  fan.crossed.push_back(-1);
+  // On the boundary: the cells behind the start, walked back to the other boundary edge.
+  std::vector<int64_t> back_cells, back_crossed;
+  c = start;
+  entered = -1;
+  for (;;) {
+    const int k = exit_edge(c, entered, false);
+    const int64_t d = t.neighbor(c, k);
+    if (d < 0)
+      break;
+    back_crossed.push_back(t.cell_edge(c, k));
+    entered = t.cell_edge(c, k);
+    back_cells.push_back(c = d);
+  }
+  std::reverse(back_cells.begin(), back_cells.end());
+  std::reverse(back_crossed.begin(), back_crossed.end());
+  back_cells.insert(back_cells.end(), fan.cells.begin(), fan.cells.end());
+  back_crossed.insert(back_crossed.end(), fan.crossed.begin(), fan.crossed.end());
+  fan.cells = std::move(back_cells);
+  fan.crossed = std::move(back_crossed);
+}
+
+} // namespace
+
 CornerCut cut_corners(const Topology &t, std::span<const int64_t> cut_edges) {
   const int64_t nc = t.num_cells(), nv = t.num_vertices();
   std::vector<uint8_t> is_cut(static_cast<std::size_t>(t.num_edges()), 0), on_cut(nv, 0);
+  std::vector<int64_t> cut_vertices;
   for (int64_t e : cut_edges) {
     is_cut[e] = 1;
     for (int64_t v : t.edge_vertices(e))
-      on_cut[v] = 1;
-  }
-  // The cells' corners at vertices on the cut, joined across the uncut edges: each set is a
-  // wedge of cells between two cut (or boundary) edges, and gets its own copy of the vertex.
-  std::vector<int64_t> parent(static_cast<std::size_t>(3 * nc));
-  std::iota(parent.begin(), parent.end(), int64_t{0});
-  for (int64_t e = 0; e < t.num_edges(); ++e) {
-    if (is_cut[e] || t.edge_cell_count(e) != 2)
-      continue;
-    const int64_t c1 = t.edge_cells_begin(e)[0], c2 = t.edge_cells_begin(e)[1];
-    for (int64_t v : t.edge_vertices(e))
-      if (on_cut[v]) {
-        const int64_t a = find(parent, 3 * c1 + corner_of(t, c1, v));
-        const int64_t b = find(parent, 3 * c2 + corner_of(t, c2, v));
-        parent[std::max(a, b)] = std::min(a, b);
+      if (!on_cut[v]) {
+        on_cut[v] = 1;
+        cut_vertices.push_back(v);
       }
   }
-  // Copies per vertex: one per wedge (the roots are each wedge's lowest corner).
+  std::sort(cut_vertices.begin(), cut_vertices.end());
+  // Each vertex on the cut: the wedges of its fan between cut (or boundary) edges, one copy
+  // each, numbered in the order of the wedges' lowest corners (3 cell + corner). Recorded as
+  // (corner, wedge rank) per corner at the vertex.
   std::vector<int64_t> wedges(static_cast<std::size_t>(nv), 1);
-  for (int64_t v = 0; v < nv; ++v)
-    if (on_cut[v])
-      wedges[v] = 0;
-  for (int64_t k = 0; k < 3 * nc; ++k) {
-    const int64_t v = t.cell_vertices(k / 3)[k % 3];
-    if (on_cut[v] && find(parent, k) == k)
-      ++wedges[v];
+  std::vector<std::pair<int64_t, int64_t>> corner_rank; // (corner, rank among v's copies)
+  std::vector<int64_t> wedge_of, lowest, order;
+  Fan fan;
+  for (int64_t v : cut_vertices) {
+    walk_fan(t, v, fan);
+    const std::size_t m = fan.cells.size();
+    // A cycle starts after one of its cut crossings (an interior vertex on the cut has two).
+    std::size_t first_cell = 0;
+    if (fan.closed)
+      for (std::size_t i = 0; i < m; ++i)
+        if (is_cut[fan.crossed[i]]) {
+          first_cell = (i + 1) % m;
+          break;
+        }
+    wedge_of.assign(m, 0);
+    lowest.clear();
+    int64_t w = 0;
+    for (std::size_t s = 0; s < m; ++s) {
+      const std::size_t i = (first_cell + s) % m;
+      if (s > 0 && is_cut[fan.crossed[(i + m - 1) % m]])
+        ++w;
+      const int64_t corner = 3 * fan.cells[i] + corner_of(t, fan.cells[i], v);
+      if (static_cast<int64_t>(lowest.size()) <= w)
+        lowest.push_back(corner);
+      lowest[w] = std::min(lowest[w], corner);
+      wedge_of[i] = w;
+    }
+    order.resize(lowest.size());
+    std::iota(order.begin(), order.end(), int64_t{0});
+    std::sort(order.begin(), order.end(),
+              [&](int64_t a, int64_t b) { return lowest[a] < lowest[b]; });
+    std::vector<int64_t> rank(lowest.size());
+    for (std::size_t r = 0; r < order.size(); ++r)
+      rank[order[r]] = static_cast<int64_t>(r);
+    for (std::size_t i = 0; i < m; ++i)
+      corner_rank.push_back({3 * fan.cells[i] + corner_of(t, fan.cells[i], v), rank[wedge_of[i]]});
+    wedges[v] = static_cast<int64_t>(lowest.size());
   }
   std::vector<int64_t> first(static_cast<std::size_t>(nv) + 1, 0);
   for (int64_t v = 0; v < nv; ++v)
@@ -141,22 +208,13 @@ CornerCut cut_corners(const Topology &t, std::span<const int64_t> cut_edges) {
   for (int64_t v = 0; v < nv; ++v)
     for (int64_t i = first[v]; i < first[v + 1]; ++i)
       out.vertex_origin[i] = v;
-  // Each wedge's copy: in the order of the wedges' lowest corners.
-  std::vector<int64_t> copy_of_root(static_cast<std::size_t>(3 * nc), -1);
-  std::vector<int64_t> next(first.begin(), first.end() - 1);
   out.corner_vertex.resize(static_cast<std::size_t>(3 * nc));
-  for (int64_t k = 0; k < 3 * nc; ++k) {
-    const int64_t v = t.cell_vertices(k / 3)[k % 3];
-    int64_t id = first[v];
-    if (on_cut[v]) {
-      const int64_t r = find(parent, k);
-      if (copy_of_root[r] < 0)
-        copy_of_root[r] = next[v]++;
-      id = copy_of_root[r];
-    }
-    out.corner_vertex[k] = id;
-  }
-  for (int64_t v = 0; v < nv; ++v)
+  for (int64_t c = 0; c < nc; ++c)
+    for (int k = 0; k < 3; ++k)
+      out.corner_vertex[3 * c + k] = first[t.cell_vertices(c)[k]];
+  for (const auto &[corner, rank] : corner_rank)
+    out.corner_vertex[corner] += rank;
+  for (int64_t v : cut_vertices)
     if (wedges[v] > 1) {
       for (int64_t i = first[v]; i < first[v + 1]; ++i)
         out.copies.push_back(i);
@@ -182,7 +240,7 @@ std::vector<std::array<int64_t, 4>> seam_vertices(const Topology &t, const Corne
   return seams;
 }
 
-CutSurface cut_open(const Mesh &mesh, std::span<const int64_t> cut_edges, int threads) {
+CutSurface cut_open(const Mesh &mesh, std::span<const int64_t> cut_edges) {
   const Topology &t = mesh.topology;
   const int64_t nc = t.num_cells();
   std::vector<uint8_t> is_cut(static_cast<std::size_t>(t.num_edges()), 0);
@@ -193,22 +251,14 @@ CutSurface cut_open(const Mesh &mesh, std::span<const int64_t> cut_edges, int th
   out.vertex_origin = std::move(corner_cut.vertex_origin);
   out.group_offset = std::move(corner_cut.group_offset);
   out.copies = std::move(corner_cut.copies);
-  MeshInput corners;
-  corners.points.resize(out.vertex_origin.size());
-  corners.cell_nodes.assign(corner_cut.corner_vertex.begin(), corner_cut.corner_vertex.end());
+  Topology cut =
+      t.cut_open(corner_cut.corner_vertex, static_cast<int64_t>(out.vertex_origin.size()), is_cut);
   corner_cut.corner_vertex = {};
-  corners.cell_offsets.resize(static_cast<std::size_t>(nc) + 1);
-  corners.cell_degree.assign(static_cast<std::size_t>(nc), 1);
-  for (int64_t c = 0; c <= nc; ++c)
-    corners.cell_offsets[c] = 3 * c; // corner k of a degree-1 cell is its node k
-
-  ProblemLog problems;
-  Topology cut = Topology::build(corners, problems, threads);
   const auto disks = [&](const Topology &x) {
     return x.components() == t.components() && x.euler_characteristic() == x.components() &&
            x.boundary_loops() == x.components();
   };
-  if (problems.has_errors() || !disks(cut))
+  if (!disks(cut))
     throw Error((mesh.source.empty() ? std::string("the mesh") : mesh.source) +
                 ": cutting the surface open along " + std::to_string(cut_edges.size()) +
                 " edges did not give one disk per component (Euler characteristic " +

@@ -58,6 +58,6 @@ struct CutSurface {
 
 // Cuts `mesh` open along `cut_edges` (from cut_graph_edges). Throws hoct::Error if the result is
 // not one disk per component (a mesh the topology checks should have refused).
-CutSurface cut_open(const Mesh &mesh, std::span<const int64_t> cut_edges, int threads = 1);
+CutSurface cut_open(const Mesh &mesh, std::span<const int64_t> cut_edges);
 
 } // namespace hoct

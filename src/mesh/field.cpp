@@ -219,11 +219,12 @@ void Field::assemble_cells(const Topology &topo, const std::vector<int> &cell_de
     max_degree_ = std::max(max_degree_, static_cast<int>(degree_[c]));
     offset_[c + 1] = offset_[c] + lattice_size(degree_[c]);
   }
-  coef_.resize(offset_[nc]);
+  auto coef = std::make_shared<UninitializedVector<double>>();
+  coef->resize(offset_[nc]);
   parallel_for(nc, threads_for(nc, threads, 4096), [&](int64_t begin, int64_t end, int) {
     for (int64_t c = begin; c < end; ++c) {
       const int d = degree_[c];
-      double *out = coef_.data() + offset_[c];
+      double *out = coef->data() + offset_[c];
       cell(c, d, out);
       for (int k = 0; k < 3; ++k) {
         const int64_t e = topo.cell_edge(c, k);
@@ -240,6 +241,7 @@ void Field::assemble_cells(const Topology &topo, const std::vector<int> &cell_de
       }
     }
   });
+  coef_ = std::move(coef);
 }
 
 Field Field::build_from_polynomials(const Topology &topo,
@@ -343,7 +345,18 @@ void Field::pin_edge_ends(const Topology &topo, int threads) {
 
 Field Field::on_cut_topology(const Topology &cut, std::span<const int64_t> edge_origin,
                              std::span<const int64_t> vertex_origin) const {
-  Field f = *this;
+  // Everything but the edges and vertices, which the cut renumbers (the cells' coefficients
+  // shared, not copied).
+  Field f;
+  f.degree_ = degree_;
+  f.input_degree_ = input_degree_;
+  f.offset_ = offset_;
+  f.coef_ = coef_;
+  f.min_value_ = min_value_;
+  f.max_value_ = max_value_;
+  f.reference_ = reference_;
+  f.precision_ = precision_;
+  f.max_degree_ = max_degree_;
   const int64_t ne = cut.num_edges();
   f.edge_degree_.resize(static_cast<std::size_t>(ne));
   f.edge_offset_.assign(static_cast<std::size_t>(ne) + 1, 0);

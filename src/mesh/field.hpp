@@ -13,6 +13,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <span>
 #include <vector>
 
@@ -54,7 +55,8 @@ public:
                                       ProblemLog &problems, double value_precision = 0);
 
   // The same field on `cut`, a copy of its topology with some vertices and edges duplicated
-  // (mesh/cut_surface): the same cells and polynomials; edge e of `cut` carries the polynomial
+  // (mesh/cut_surface): the same cells and polynomials (their coefficients shared, not copied);
+  // edge e of `cut` carries the polynomial
   // of edge edge_origin[e] (in the same orientation), vertex v the value of vertex_origin[v].
   Field on_cut_topology(const Topology &cut, std::span<const int64_t> edge_origin,
                         std::span<const int64_t> vertex_origin) const;
@@ -63,7 +65,7 @@ public:
   int degree(int64_t c) const { return degree_[c]; }
   int input_degree(int64_t c) const { return input_degree_[c]; }
   std::span<const double> coefficients(int64_t c) const {
-    return {coef_.data() + offset_[c], static_cast<std::size_t>(offset_[c + 1] - offset_[c])};
+    return {coef_->data() + offset_[c], static_cast<std::size_t>(offset_[c + 1] - offset_[c])};
   }
   BernsteinTriangle cell_polynomial(int64_t c) const;
 
@@ -110,8 +112,12 @@ private:
 
   std::vector<uint8_t> degree_, input_degree_, edge_degree_;
   std::vector<int64_t> offset_, edge_offset_;
-  // Filled completely by parallel loops right after sizing (first touched by their threads).
-  UninitializedVector<double> coef_, edge_coef_;
+  // Filled completely by parallel loops right after sizing (first touched by their threads). The
+  // cells' coefficients, never changed once built, are shared by copies of the field (the field
+  // of a surface cut open has the same cells: on_cut_topology).
+  std::shared_ptr<UninitializedVector<double>> coef_ =
+      std::make_shared<UninitializedVector<double>>();
+  UninitializedVector<double> edge_coef_;
   std::vector<double> vertex_value_;
   double min_value_ = 0, max_value_ = 0, reference_ = 0, precision_ = 0;
   int max_degree_ = 0;

@@ -24,6 +24,16 @@ public:
   // `threads`: most passes run in parallel; the result and the report do not depend on it.
   static Topology build(const MeshInput &input, ProblemLog &problems, int threads = 1);
 
+  // This topology cut open along the interior edges e with is_cut[e] (mesh/cut_surface.hpp):
+  // corner k of cell c becomes vertex corner_vertex[3 c + k] of `num_vertices` (the vertices'
+  // copies numbered in the order of the originals, vertex i its own point i), each cut edge one
+  // boundary edge per side. The same as build() of those corners would give, derived from this
+  // one without sorting the edges again (src/mesh/topology_cut.cpp). The components are this
+  // one's (the caller cuts no component apart); Euler characteristic and boundary loops are
+  // counted. Throws std::logic_error where the numbering would reverse an edge.
+  Topology cut_open(std::span<const int64_t> corner_vertex, int64_t num_vertices,
+                    std::span<const uint8_t> is_cut) const;
+
   int64_t num_vertices() const { return static_cast<int64_t>(vertex_point_.size()); }
   int64_t num_edges() const { return static_cast<int64_t>(edge_vertices_.size()); }
   int64_t num_cells() const { return static_cast<int64_t>(cell_vertices_.size()); }

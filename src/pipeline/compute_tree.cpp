@@ -45,7 +45,7 @@ TreeResult method_tree(const Mesh &mesh, const TreeRequest &rq, const MeshInput 
         reeb ? cut_graph_edges(mesh.topology) : std::vector<int64_t>{};
     std::optional<CutSurface> cut;
     if (!cut_edges.empty()) {
-      cut = cut_open(mesh, cut_edges, threads);
+      cut = cut_open(mesh, cut_edges);
       eo.cut = &*cut;
     }
     const double cut_seconds = clock.lap();

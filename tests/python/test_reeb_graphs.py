@@ -24,6 +24,7 @@ import os
 import shutil
 import sys
 import time
+import xml.etree.ElementTree as ET
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from hoct_testing import Results, evaluate, run, tempdir  # noqa: E402
@@ -340,6 +341,42 @@ def converges(name, vtu, exact_json, exact):
     return dist[4][0], dist[16][0]
 
 
+def bridges(tree):
+    """The arcs whose removal disconnects their ends (brute force, parallel arcs included)."""
+    n, arcs = len(tree["nodes"]), tree["arcs"]
+    out = set()
+    for k in range(len(arcs)):
+        parent = list(range(n))
+
+        def find(a):
+            while parent[a] != a:
+                parent[a] = parent[parent[a]]
+                a = parent[a]
+            return a
+        for j, (a, b) in enumerate(arcs):
+            if j != k:
+                parent[find(a)] = find(b)
+        if find(arcs[k][0]) != find(arcs[k][1]):
+            out.add(k)
+    return out
+
+
+def check_svg(name, vtu, tree):
+    """`hoct tree --svg` of a graph with loops: a circle per node (and 3 in the legend), a path
+    per arc, the arcs on loops (no bridge, by brute force) exactly those drawn as loops."""
+    svg = vtu + ".svg"
+    run("tree", vtu, "-q", "--svg", svg)
+    root = ET.parse(svg).getroot()
+    ns = "{http://www.w3.org/2000/svg}"
+    circles = root.findall(f".//{ns}circle")
+    paths = root.findall(f".//{ns}path")
+    loops = sum(p.get("class") == "loop" for p in paths)
+    expected = len(tree["arcs"]) - len(bridges(tree))
+    R.check(len(circles) == len(tree["nodes"]) + 3 and len(paths) == len(tree["arcs"]) and
+            loops == expected, f"{name}: svg has {len(circles)} circles, {len(paths)} paths, "
+            f"{loops} on loops; expected {len(tree['nodes'])} + 3, {len(tree['arcs'])}, {expected}")
+
+
 def keep_failure(name, vtu):
     os.makedirs(FAILURES, exist_ok=True)
     target = os.path.join(FAILURES, name.replace(" ", "_").replace(",", "") + ".vtu")
@@ -397,6 +434,8 @@ def case(tmp, name, mesh, f, loops, components=1, level=2, surface=None, tol=1e-
                 f"not 2 (loops - components) = {2 * (loops - components)}")
     reeb_fields(name, tree, info["json"], vtu, got if loops is None else loops)
     dev = check_positions(name, vtu, len(cells), surface, f, tol)
+    if got > 0:
+        check_svg(name, vtu, tree)
     d4, d16 = converges(name, vtu, info["json"], tree)
     bad = info["bad"]
     print(f"{name}: degree {int(round((math.sqrt(8 * cells.shape[1] + 1) - 3) / 2))}, "
@@ -563,6 +602,7 @@ with tempdir() as tmp:
     r = run("check", info["json"], plate, check=False)
     R.check(r.returncode == 0, f"plate: hoct check {r.stdout[-300:]}")
     d4, d16 = converges("plate", plate, info["json"], info["tree"])
+    check_svg("plate", plate, info["tree"])
     print(f"plate: PL --refine 4, 16 at bottleneck {d4:.2g}, {d16:.2g}", flush=True)
 
     if gmsh is None:

@@ -6,6 +6,7 @@
 #include "datasets/datasets.hpp"
 #include "mesh/cut_surface.hpp"
 #include "mesh/mesh.hpp"
+#include "mesh/topology.hpp"
 #include "pipeline/compute_tree.hpp"
 #include "pipeline/threshold.hpp"
 #include "tree/loop_pairs.hpp"
@@ -174,6 +175,100 @@ TEST(ReebGraph, TwoComponentsGiveTwoGraphsByEveryMethod) {
   for (std::size_t i = 0; i < 4; ++i)
     EXPECT_EQ(pl.tree.nodes[i].value, out.tree.nodes[i].value);
   EXPECT_EQ(pl.tree.arcs, out.tree.arcs);
+}
+
+// Quadrilaterals of an nu x nv grid wrapped in u (and in v for a torus; twisted once in u for a
+// Moebius strip, whose v runs 0..nv), two triangles each, linear, on the surface in 3D.
+MeshInput wrapped_grid(int nu, int nv, bool torus, bool twist) {
+  MeshInput in;
+  const int rows = torus ? nv : nv + 1;
+  for (int j = 0; j < rows; ++j)
+    for (int i = 0; i < nu; ++i) {
+      const double u = 2 * M_PI * i / nu, w = torus ? 2 * M_PI * j / nv : (j - nv / 2.0) / nv;
+      if (torus)
+        in.points.push_back({(2 + 0.7 * std::cos(w)) * std::cos(u),
+                             (2 + 0.7 * std::cos(w)) * std::sin(u), 0.7 * std::sin(w)});
+      else
+        in.points.push_back({(2 + w * std::cos(u / 2)) * std::cos(u),
+                             (2 + w * std::cos(u / 2)) * std::sin(u), w * std::sin(u / 2)});
+      in.values.push_back(in.points.back()[0] + 0.1 * in.points.back()[2]);
+    }
+  auto id = [&](int i, int j) {
+    if (i == nu && twist) // the seam of the twist: across it, v runs the other way
+      return static_cast<int64_t>((nv - j) * nu);
+    return static_cast<int64_t>((j % rows) * nu + i % nu);
+  };
+  for (int j = 0; j < nv; ++j)
+    for (int i = 0; i < nu; ++i) {
+      const int64_t a = id(i, j), b = id(i + 1, j), c = id(i + 1, j + 1), d = id(i, j + 1);
+      const int64_t t1[3] = {a, b, c}, t2[3] = {a, c, d};
+      in.add_cell(1, t1);
+      in.add_cell(1, t2);
+    }
+  return in;
+}
+
+// Topology::cut_open, which derives the cut topology, gives what building it from the cut
+// corners gives: every vertex, edge (in the same order), incidence, orientation and count.
+TEST(ReebGraph, TheDerivedCutTopologyIsTheBuiltOne) {
+  DatasetOptions plate;
+  plate.cells = 2000;
+  plate.degree = 1;
+  const std::vector<std::pair<std::string, MeshInput>> meshes = {
+      {"annulus", square_annulus(1, [](double x, double y) { return x + y; })},
+      {"torus", wrapped_grid(12, 8, true, false)},
+      {"moebius", wrapped_grid(16, 3, false, true)},
+      {"plate", generate_dataset("plate", plate)}};
+  for (const auto &[name, input] : meshes) {
+    ProblemLog problems;
+    const Topology t = Topology::build(input, problems);
+    const std::vector<int64_t> cut = cut_graph_edges(t);
+    ASSERT_FALSE(cut.empty()) << name;
+    const CornerCut corners = cut_corners(t, cut);
+    std::vector<uint8_t> is_cut(static_cast<std::size_t>(t.num_edges()), 0);
+    for (int64_t e : cut)
+      is_cut[e] = 1;
+    const int64_t nv = static_cast<int64_t>(corners.vertex_origin.size());
+    const Topology derived = t.cut_open(corners.corner_vertex, nv, is_cut);
+    MeshInput cut_input;
+    cut_input.points.resize(static_cast<std::size_t>(nv));
+    for (int64_t c = 0; c < t.num_cells(); ++c)
+      cut_input.add_cell(1, &corners.corner_vertex[3 * c]);
+    ProblemLog cut_problems;
+    const Topology built = Topology::build(cut_input, cut_problems);
+    EXPECT_FALSE(cut_problems.has_errors()) << name << cut_problems.summary();
+    ASSERT_EQ(derived.num_vertices(), built.num_vertices()) << name;
+    ASSERT_EQ(derived.num_edges(), built.num_edges()) << name;
+    for (int64_t v = 0; v < nv; ++v) {
+      EXPECT_EQ(derived.vertex_point(v), built.vertex_point(v)) << name;
+      EXPECT_EQ(derived.vertex_cell(v), built.vertex_cell(v)) << name;
+      EXPECT_EQ(derived.vertex_corner(v), built.vertex_corner(v)) << name;
+    }
+    for (int64_t e = 0; e < built.num_edges(); ++e) {
+      EXPECT_EQ(derived.edge_vertices(e), built.edge_vertices(e)) << name << " edge " << e;
+      ASSERT_EQ(derived.edge_cell_count(e), built.edge_cell_count(e)) << name << " edge " << e;
+      for (int i = 0; i < built.edge_cell_count(e); ++i)
+        EXPECT_EQ(derived.edge_cells_begin(e)[i], built.edge_cells_begin(e)[i]) << name;
+    }
+    for (int64_t c = 0; c < t.num_cells(); ++c) {
+      EXPECT_EQ(derived.cell_vertices(c), built.cell_vertices(c)) << name;
+      EXPECT_EQ(derived.cell_parity(c), built.cell_parity(c)) << name << " cell " << c;
+      for (int k = 0; k < 3; ++k) {
+        EXPECT_EQ(derived.cell_edge(c, k), built.cell_edge(c, k)) << name;
+        EXPECT_EQ(derived.edge_reversed(c, k), built.edge_reversed(c, k)) << name;
+      }
+    }
+    EXPECT_EQ(derived.boundary_edges(), built.boundary_edges()) << name;
+    EXPECT_EQ(derived.boundary_loops(), built.boundary_loops()) << name;
+    EXPECT_EQ(derived.components(), built.components()) << name;
+    EXPECT_EQ(derived.orientable(), built.orientable()) << name;
+    EXPECT_EQ(derived.euler_characteristic(), 1) << name;
+    EXPECT_EQ(derived.boundary_loops(), 1) << name;
+  }
+  // The strip is non-orientable and its cut is not; the torus has genus 1.
+  ProblemLog p1, p2;
+  EXPECT_FALSE(Topology::build(wrapped_grid(16, 3, false, true), p1).orientable());
+  EXPECT_EQ(Topology::build(wrapped_grid(12, 8, true, false), p2).euler_characteristic(), 0);
 }
 
 // The checker counts loops: an extra parallel arc is a second loop the annulus does not allow,
