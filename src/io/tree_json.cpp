@@ -1,11 +1,13 @@
 #include "io/tree_json.hpp"
 
 #include "io/atomic_file.hpp"
+#include "io/json_numbers.hpp"
 #include "util/error.hpp"
 
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <fstream>
 #include <map>
@@ -22,12 +24,15 @@ using json = nlohmann::ordered_json;
 // whole document dumped with one value per line.
 class TreeJsonWriter {
 public:
+  // `bytes`: about what the document will take, reserved at once (growing a string of hundreds
+  // of megabytes by doubling copies it and touches fresh pages each time).
+  explicit TreeJsonWriter(std::size_t bytes) { out_.reserve(bytes); }
   void field(const std::string &key, const json &value) {
     open_field(key);
     out_ += value.dump(1);
     indent_nested();
   }
-  // An array whose element i is element(i), one per line.
+  // An array whose element i is written by element(out, i) (compact JSON), one per line.
   template <class Element> void array(const std::string &key, std::size_t n, Element element) {
     open_field(key);
     if (n == 0) {
@@ -37,7 +42,7 @@ public:
     out_ += "[\n";
     for (std::size_t i = 0; i < n; ++i) {
       out_ += "  ";
-      out_ += element(i).dump();
+      element(out_, i);
       out_ += i + 1 < n ? ",\n" : "\n";
     }
     out_ += " ]";
@@ -70,7 +75,9 @@ private:
 };
 
 std::string to_json_text(const TreeResult &t, bool timings) {
-  TreeJsonWriter w;
+  // A node line takes up to about 250 bytes, an arc's 20, a pair's 90, a branch's 100.
+  TreeJsonWriter w(4096 + 256 * t.nodes.size() + 24 * t.arcs.size() + 96 * t.pairs.size() +
+                   112 * t.branches.size());
   w.field("format", "hoct-contour-tree");
   w.field("version", 1);
   w.field("method", t.method);
@@ -87,63 +94,86 @@ std::string to_json_text(const TreeResult &t, bool timings) {
     w.field("forced", true);
     w.field("forced_reasons", t.forced);
   }
-  // One object per kind of element, its fields overwritten for each (building each element
-  // anew would allocate its keys and arrays every time).
+  // The elements' text is written directly (io/json_numbers: the numbers as nlohmann writes
+  // them); their names and enumerations are plain ASCII, nothing to escape.
+  const auto integer = [](std::string &o, int64_t v) { append_json_int(o, v); };
+  const auto real = [](std::string &o, double v) { append_json_double(o, v); };
   std::map<std::string, int64_t> by_type, by_location;
-  json node = {{"id", 0},   {"type", ""},       {"value", 0.0},   {"position", {0.0, 0.0, 0.0}},
-               {"cell", 0}, {"uv", {0.0, 0.0}}, {"location", ""}, {"fallback", false}};
-  json merged_node = node;
-  merged_node["merged"] = 0;
-  w.array("nodes", t.nodes.size(), [&](std::size_t i) -> const json & {
+  std::array<int64_t, 4> type_count{}, location_count{};
+  w.array("nodes", t.nodes.size(), [&](std::string &o, std::size_t i) {
     const TreeNode &n = t.nodes[i];
-    json &o = n.merged > 1 ? merged_node : node;
-    o["id"] = i;
-    o["type"] = to_string(n.type);
-    o["value"] = n.value;
-    for (int k = 0; k < 3; ++k)
-      o["position"][k] = n.position[k];
-    o["cell"] = n.cell;
-    o["uv"][0] = n.uv[0];
-    o["uv"][1] = n.uv[1];
-    o["location"] = to_string(n.location);
-    o["fallback"] = n.fallback;
-    if (n.merged > 1)
-      o["merged"] = n.merged;
-    ++by_type[to_string(n.type)];
-    ++by_location[to_string(n.location)];
-    return o;
+    o += "{\"id\":";
+    integer(o, static_cast<int64_t>(i));
+    o += ",\"type\":\"";
+    o += to_string(n.type);
+    o += "\",\"value\":";
+    real(o, n.value);
+    o += ",\"position\":[";
+    real(o, n.position[0]);
+    o += ',';
+    real(o, n.position[1]);
+    o += ',';
+    real(o, n.position[2]);
+    o += "],\"cell\":";
+    integer(o, n.cell);
+    o += ",\"uv\":[";
+    real(o, n.uv[0]);
+    o += ',';
+    real(o, n.uv[1]);
+    o += "],\"location\":\"";
+    o += to_string(n.location);
+    o += n.fallback ? "\",\"fallback\":true" : "\",\"fallback\":false";
+    if (n.merged > 1) {
+      o += ",\"merged\":";
+      integer(o, n.merged);
+    }
+    o += '}';
+    ++type_count[static_cast<int>(n.type)];
+    ++location_count[static_cast<int>(n.location)];
   });
-  json arc = {0, 0};
-  w.array("arcs", t.arcs.size(), [&](std::size_t i) -> const json & {
-    arc[0] = t.arcs[i][0];
-    arc[1] = t.arcs[i][1];
-    return arc;
+  for (NodeType k : {NodeType::Minimum, NodeType::Maximum, NodeType::Saddle, NodeType::Regular})
+    if (type_count[static_cast<int>(k)] > 0)
+      by_type[to_string(k)] = type_count[static_cast<int>(k)];
+  for (NodeLocation k :
+       {NodeLocation::Vertex, NodeLocation::Edge, NodeLocation::Interior, NodeLocation::Unknown})
+    if (location_count[static_cast<int>(k)] > 0)
+      by_location[to_string(k)] = location_count[static_cast<int>(k)];
+  w.array("arcs", t.arcs.size(), [&](std::string &o, std::size_t i) {
+    o += '[';
+    integer(o, t.arcs[i][0]);
+    o += ',';
+    integer(o, t.arcs[i][1]);
+    o += ']';
   });
   // A pair at or below the input's precision, or within the fallback stand-in's slack, says so
   // ("uncertain": true).
-  json pair = {{"birth", 0}, {"death", 0}, {"persistence", 0.0}, {"kind", ""}};
-  json uncertain_pair = pair;
-  uncertain_pair["uncertain"] = true;
-  w.array("pairs", t.pairs.size(), [&](std::size_t i) -> const json & {
+  w.array("pairs", t.pairs.size(), [&](std::string &o, std::size_t i) {
     const PersistencePair &p = t.pairs[i];
-    json &o = t.uncertain(p) ? uncertain_pair : pair;
-    o["birth"] = p.birth;
-    o["death"] = p.death;
-    o["persistence"] = p.persistence();
-    o["kind"] = to_string(p.kind);
-    return o;
+    o += "{\"birth\":";
+    integer(o, p.birth);
+    o += ",\"death\":";
+    integer(o, p.death);
+    o += ",\"persistence\":";
+    real(o, p.persistence());
+    o += ",\"kind\":\"";
+    o += to_string(p.kind);
+    o += t.uncertain(p) ? "\",\"uncertain\":true}" : "\"}";
   });
-  json branch = {{"id", 0},     {"extremum", 0}, {"saddle", 0}, {"persistence", 0.0},
-                 {"parent", 0}, {"depth", 0}};
-  w.array("branches", t.branches.size(), [&](std::size_t b) -> const json & {
+  w.array("branches", t.branches.size(), [&](std::string &o, std::size_t b) {
     const Branch &br = t.branches[b];
-    branch["id"] = b;
-    branch["extremum"] = br.extremum;
-    branch["saddle"] = br.saddle;
-    branch["persistence"] = br.persistence;
-    branch["parent"] = br.parent;
-    branch["depth"] = br.depth;
-    return branch;
+    o += "{\"id\":";
+    integer(o, static_cast<int64_t>(b));
+    o += ",\"extremum\":";
+    integer(o, br.extremum);
+    o += ",\"saddle\":";
+    integer(o, br.saddle);
+    o += ",\"persistence\":";
+    real(o, br.persistence);
+    o += ",\"parent\":";
+    integer(o, br.parent);
+    o += ",\"depth\":";
+    integer(o, br.depth);
+    o += '}';
   });
   json stats;
   stats["nodes"] = t.nodes.size();
