@@ -79,7 +79,89 @@ void elder_sweep(const ScalarGraph &g, const Order &order, PersistencePair::Kind
   }
 }
 
+// The elder rule along nodes 0 .. n-1 (ascending) or n-1 .. 0 (descending), the earlier
+// neighbours of each node listed in a CSR (`offset`, `adj`): the same steps as elder_sweep.
+void elder_sweep_sorted(std::span<const double> values, const std::vector<int64_t> &offset,
+                        const std::vector<int64_t> &adj, bool ascending, PersistencePair::Kind kind,
+                        std::vector<PersistencePair> &out, std::vector<int64_t> &oldest_out) {
+  const int64_t n = static_cast<int64_t>(values.size());
+  std::vector<int64_t> oldest(n);
+  UnionFind uf(n);
+  std::vector<int64_t> roots;
+  // Born earlier in the sweep.
+  const auto older = [ascending](int64_t a, int64_t b) { return ascending ? a < b : a > b; };
+  for (int64_t i = 0; i < n; ++i) {
+    const int64_t v = ascending ? i : n - 1 - i;
+    oldest[v] = v;
+    roots.clear();
+    for (int64_t k = offset[v]; k < offset[v + 1]; ++k)
+      roots.push_back(uf.find(adj[k]));
+    std::sort(roots.begin(), roots.end());
+    roots.erase(std::unique(roots.begin(), roots.end()), roots.end());
+    if (roots.empty())
+      continue;
+    int64_t elder = roots[0];
+    for (int64_t r : roots)
+      if (older(oldest[r], oldest[elder]))
+        elder = r;
+    for (int64_t r : roots)
+      if (r != elder)
+        out.push_back({kind, oldest[r], v, values[oldest[r]], values[v]});
+    const int64_t keep = oldest[elder];
+    for (int64_t r : roots)
+      uf.unite(r, v);
+    oldest[uf.find(v)] = keep;
+  }
+  oldest_out.assign(n, -1);
+  for (int64_t v = 0; v < n; ++v)
+    oldest_out[v] = oldest[uf.find(v)];
+}
+
 } // namespace
+
+PersistenceDiagram persistence_diagram_ascending(std::span<const double> values,
+                                                 std::span<const std::array<int64_t, 2>> edges) {
+  const int64_t n = static_cast<int64_t>(values.size());
+  // Lower neighbours per node (for the join sweep) and upper ones (for the split sweep).
+  std::vector<int64_t> lo_offset(n + 1, 0), hi_offset(n + 1, 0);
+  for (const auto &e : edges)
+    if (e[0] != e[1]) {
+      ++lo_offset[std::max(e[0], e[1]) + 1];
+      ++hi_offset[std::min(e[0], e[1]) + 1];
+    }
+  for (int64_t v = 0; v < n; ++v) {
+    lo_offset[v + 1] += lo_offset[v];
+    hi_offset[v + 1] += hi_offset[v];
+  }
+  std::vector<int64_t> lower(static_cast<std::size_t>(lo_offset[n])),
+      upper(static_cast<std::size_t>(hi_offset[n]));
+  {
+    std::vector<int64_t> lo_fill(lo_offset.begin(), lo_offset.end() - 1),
+        hi_fill(hi_offset.begin(), hi_offset.end() - 1);
+    for (const auto &e : edges)
+      if (e[0] != e[1]) {
+        const int64_t a = std::min(e[0], e[1]), b = std::max(e[0], e[1]);
+        lower[lo_fill[b]++] = a;
+        upper[hi_fill[a]++] = b;
+      }
+  }
+  PersistenceDiagram d;
+  std::vector<int64_t> global_min, global_max;
+  elder_sweep_sorted(values, lo_offset, lower, true, PersistencePair::Kind::Join, d.pairs,
+                     global_min);
+  elder_sweep_sorted(values, hi_offset, upper, false, PersistencePair::Kind::Split, d.pairs,
+                     global_max);
+  std::vector<char> done(n, 0);
+  for (int64_t v = 0; v < n; ++v) {
+    const int64_t lo = global_min[v];
+    if (done[lo])
+      continue;
+    done[lo] = 1;
+    d.pairs.push_back(
+        {PersistencePair::Kind::Global, lo, global_max[v], values[lo], values[global_max[v]]});
+  }
+  return d;
+}
 
 PersistenceDiagram persistence_diagram(const ScalarGraph &g) {
   PersistenceDiagram d;

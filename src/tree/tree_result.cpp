@@ -5,6 +5,7 @@
 #include "tree/flat_regions.hpp"
 #include "util/parallel_for.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numeric>
@@ -33,6 +34,14 @@ std::array<int64_t, 4> TreeResult::type_counts() const {
 }
 
 std::vector<PersistencePair> tree_pairs(const ContourTree &tree) {
+  // Nodes ascending in the total order (as every tree and graph here has them): no sort.
+  if (std::is_sorted(tree.values.begin(), tree.values.end())) {
+    std::vector<PersistencePair> pairs =
+        persistence_diagram_ascending(tree.values, tree.arcs).pairs;
+    for (const PersistencePair &p : loop_pairs(tree))
+      pairs.push_back(p);
+    return pairs;
+  }
   std::vector<GraphEdge> edges;
   edges.reserve(tree.arcs.size());
   for (const auto &a : tree.arcs)
@@ -82,8 +91,12 @@ TreeResult derived_result(const TreeResult &t, const ContourTree &tree,
     n.type = types[i];
     r.nodes.push_back(n);
   }
+  // Nothing changed (no flat region on a noisy field, say): t's pairs are the tree's.
+  bool same = kept.size() == t.nodes.size() && tree.arcs == t.arcs;
+  for (std::size_t i = 0; same && i < kept.size(); ++i)
+    same = kept[i] == static_cast<int64_t>(i);
   r.arcs = tree.arcs;
-  r.pairs = tree_pairs(tree);
+  r.pairs = same ? t.pairs : tree_pairs(tree);
   r.reeb_graph = t.reeb_graph;
   r.loops = graph_loops(tree);
   r.stats = t.stats;

@@ -373,5 +373,41 @@ TEST(Persistence, BottleneckMatchesBruteForce) {
   EXPECT_DOUBLE_EQ(bottleneck_distance({{0, 1}}, {{0.1, 1.05}}), 0.1);
 }
 
+// The sort-free diagram of a graph whose nodes are ascending (tree_pairs' path) gives the same
+// pairs, in the same order, as the general one: random multigraphs (parallel edges, several
+// components, ties in the values), random edge order.
+TEST(Persistence, TheAscendingDiagramIsTheGeneralOne) {
+  std::mt19937 rng(11);
+  for (int trial = 0; trial < 300; ++trial) {
+    const int n = 2 + static_cast<int>(rng() % 60);
+    std::vector<double> values(n);
+    for (double &v : values)
+      v = static_cast<double>(rng() % 12); // ties
+    std::sort(values.begin(), values.end());
+    std::vector<std::array<int64_t, 2>> edges;
+    const int m = static_cast<int>(rng() % (2 * n));
+    for (int k = 0; k < m; ++k) {
+      const int64_t a = rng() % n, b = rng() % n;
+      if (a != b)
+        edges.push_back({std::min(a, b), std::max(a, b)});
+      if (a != b && rng() % 5 == 0)
+        edges.push_back({std::min(a, b), std::max(a, b)}); // a parallel edge
+    }
+    std::vector<GraphEdge> ge;
+    for (const auto &e : edges)
+      ge.push_back({e[0], e[1]});
+    const auto general = persistence_diagram(ScalarGraph(values, ge)).pairs;
+    const auto sorted = persistence_diagram_ascending(values, edges).pairs;
+    ASSERT_EQ(general.size(), sorted.size()) << trial;
+    for (std::size_t i = 0; i < general.size(); ++i) {
+      EXPECT_EQ(general[i].kind, sorted[i].kind) << trial;
+      EXPECT_EQ(general[i].birth, sorted[i].birth) << trial;
+      EXPECT_EQ(general[i].death, sorted[i].death) << trial;
+      EXPECT_EQ(general[i].birth_value, sorted[i].birth_value) << trial;
+      EXPECT_EQ(general[i].death_value, sorted[i].death_value) << trial;
+    }
+  }
+}
+
 } // namespace
 } // namespace hoct
