@@ -385,13 +385,16 @@ PYBIND11_MODULE(_hoct, m) {
              return r;
            })
       .def(
-          "to_json", [](const PyTree &t, bool timings) { return tree_to_json(t.tree, timings); },
+          "to_json",
+          [](const PyTree &t, bool timings) {
+            return tree_to_json(t.tree, timings, thread_count(0));
+          },
           py::arg("timings") = true)
       // The files `hoct tree` writes (--json, --vtp, --svg), atomically.
       .def(
           "write_json",
           [](const PyTree &t, const std::string &path, bool timings) {
-            write_tree_json(no_nul(path, "write_json: path"), t.tree, timings);
+            write_tree_json(no_nul(path, "write_json: path"), t.tree, timings, thread_count(0));
           },
           py::arg("path"), py::arg("timings") = true, py::call_guard<py::gil_scoped_release>())
       .def(

@@ -12,6 +12,7 @@
 #include "pl/refinement.hpp"
 #include "tree_summary.hpp"
 #include "util/error.hpp"
+#include "util/parallel_for.hpp"
 #include "util/stopwatch.hpp"
 
 #include <cstdio>
@@ -82,7 +83,7 @@ void run_tree(const TreeOptions &o) {
   if (!o.svg.empty() && tree.branches.empty())
     throw Error("--svg draws the reduced tree (drop --augmented)");
   if (!o.json.empty())
-    write_tree_json(o.json, tree, /*timings=*/!o.no_timings);
+    write_tree_json(o.json, tree, /*timings=*/!o.no_timings, thread_count(o.threads));
   if (!o.vtp.empty())
     write_tree_vtp(o.vtp, tree);
   if (!o.svg.empty())

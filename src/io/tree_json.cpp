@@ -3,6 +3,7 @@
 #include "io/atomic_file.hpp"
 #include "io/json_numbers.hpp"
 #include "util/error.hpp"
+#include "util/parallel_for.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -24,15 +25,22 @@ using json = nlohmann::ordered_json;
 // whole document dumped with one value per line.
 class TreeJsonWriter {
 public:
-  // `bytes`: about what the document will take, reserved at once (growing a string of hundreds
-  // of megabytes by doubling copies it and touches fresh pages each time).
-  explicit TreeJsonWriter(std::size_t bytes) { out_.reserve(bytes); }
+  // Into a string (`sink` null; `bytes`: about what the document will take, reserved at once,
+  // as growing a string of hundreds of megabytes by doubling copies it), or streamed to `sink`
+  // a megabyte at a time (a file never needs the whole text in memory).
+  TreeJsonWriter(std::size_t bytes, std::ostream *sink, int threads)
+      : sink_(sink), threads_(threads) {
+    out_.reserve(sink ? kChunk + 4096 : bytes);
+  }
   void field(const std::string &key, const json &value) {
     open_field(key);
     out_ += value.dump(1);
     indent_nested();
   }
-  // An array whose element i is written by element(out, i) (compact JSON), one per line.
+  // An array whose element i is written by element(out, i) (compact JSON), one per line. Long
+  // arrays are formatted in blocks on `threads` threads (each block into its own string, the
+  // blocks appended in order: the same text for any thread count); `element` must then be safe
+  // to call concurrently.
   template <class Element> void array(const std::string &key, std::size_t n, Element element) {
     open_field(key);
     if (n == 0) {
@@ -40,13 +48,41 @@ public:
       return;
     }
     out_ += "[\n";
-    for (std::size_t i = 0; i < n; ++i) {
-      out_ += "  ";
-      element(out_, i);
-      out_ += i + 1 < n ? ",\n" : "\n";
+    const auto line = [&](std::string &o, std::size_t i) {
+      o += "  ";
+      element(o, i);
+      o += i + 1 < n ? ",\n" : "\n";
+    };
+    constexpr std::size_t kBlock = 8192;
+    if (threads_ < 2 || n < 4 * kBlock) {
+      for (std::size_t i = 0; i < n; ++i) {
+        line(out_, i);
+        flush_if_full();
+      }
+    } else {
+      // Rounds of a few blocks per thread, so that a round's text stays small.
+      const std::size_t per_round = 4 * static_cast<std::size_t>(threads_);
+      std::vector<std::string> blocks(per_round);
+      for (std::size_t first = 0; first < n; first += per_round * kBlock) {
+        const std::size_t count = std::min(per_round, (n - first + kBlock - 1) / kBlock);
+        parallel_for(static_cast<int64_t>(count), threads_, [&](int64_t b0, int64_t b1, int) {
+          for (int64_t b = b0; b < b1; ++b) {
+            std::string &o = blocks[b];
+            o.clear();
+            const std::size_t begin = first + b * kBlock, end = std::min(n, begin + kBlock);
+            for (std::size_t i = begin; i < end; ++i)
+              line(o, i);
+          }
+        });
+        for (std::size_t b = 0; b < count; ++b) {
+          out_ += blocks[b];
+          flush_if_full();
+        }
+      }
     }
     out_ += " ]";
   }
+  // The rest of the text (all of it without a sink).
   std::string finish() {
     out_ += "\n}";
     return std::move(out_);
@@ -70,14 +106,26 @@ private:
     out_.replace(field_start_, std::string::npos, shifted);
   }
 
+  void flush_if_full() {
+    if (sink_ && out_.size() >= kChunk) {
+      sink_->write(out_.data(), static_cast<std::streamsize>(out_.size()));
+      out_.clear();
+    }
+  }
+
+  static constexpr std::size_t kChunk = 1 << 20;
+  std::ostream *sink_;
+  int threads_;
   std::string out_;
   std::size_t field_start_ = 0;
 };
 
-std::string to_json_text(const TreeResult &t, bool timings) {
+std::string to_json_text(const TreeResult &t, bool timings, int threads,
+                         std::ostream *sink = nullptr) {
   // A node line takes up to about 250 bytes, an arc's 20, a pair's 90, a branch's 100.
   TreeJsonWriter w(4096 + 256 * t.nodes.size() + 24 * t.arcs.size() + 96 * t.pairs.size() +
-                   112 * t.branches.size());
+                       112 * t.branches.size(),
+                   sink, threads);
   w.field("format", "hoct-contour-tree");
   w.field("version", 1);
   w.field("method", t.method);
@@ -100,6 +148,10 @@ std::string to_json_text(const TreeResult &t, bool timings) {
   const auto real = [](std::string &o, double v) { append_json_double(o, v); };
   std::map<std::string, int64_t> by_type, by_location;
   std::array<int64_t, 4> type_count{}, location_count{};
+  for (const TreeNode &n : t.nodes) {
+    ++type_count[static_cast<int>(n.type)];
+    ++location_count[static_cast<int>(n.location)];
+  }
   w.array("nodes", t.nodes.size(), [&](std::string &o, std::size_t i) {
     const TreeNode &n = t.nodes[i];
     o += "{\"id\":";
@@ -128,8 +180,6 @@ std::string to_json_text(const TreeResult &t, bool timings) {
       integer(o, n.merged);
     }
     o += '}';
-    ++type_count[static_cast<int>(n.type)];
-    ++location_count[static_cast<int>(n.location)];
   });
   for (NodeType k : {NodeType::Minimum, NodeType::Maximum, NodeType::Saddle, NodeType::Regular})
     if (type_count[static_cast<int>(k)] > 0)
@@ -216,14 +266,19 @@ PersistencePair::Kind parse_kind(const std::string &s) {
 
 } // namespace
 
-std::string tree_to_json(const TreeResult &tree, bool timings) {
-  return to_json_text(tree, timings);
+std::string tree_to_json(const TreeResult &tree, bool timings, int threads) {
+  return to_json_text(tree, timings, threads);
 }
 
-void write_tree_json(const std::string &path, const TreeResult &tree, bool timings) {
-  const std::string text = tree_to_json(tree, timings);
+void write_tree_json(const std::string &path, const TreeResult &tree, bool timings, int threads) {
   write_file_atomic(
-      path, [&](std::ostream &out) { out << text << "\n"; }, false);
+      path,
+      [&](std::ostream &out) {
+        // The arrays streamed to `out` as they are formatted, then the rest.
+        const std::string rest = to_json_text(tree, timings, threads, &out);
+        out << rest << "\n";
+      },
+      false);
 }
 
 TreeResult read_tree_json(const std::string &path) {

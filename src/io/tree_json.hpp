@@ -19,10 +19,13 @@ namespace hoct {
 
 // Writes atomically (temporary file, then rename). Without `timings` the time_* statistics are
 // left out: the same tree then gives the same bytes, whatever the threads or the front end.
-void write_tree_json(const std::string &path, const TreeResult &tree, bool timings = true);
+// The arrays are streamed to the file as they are formatted, long ones on `threads` threads
+// (the same text for any number).
+void write_tree_json(const std::string &path, const TreeResult &tree, bool timings = true,
+                     int threads = 1);
 // The same text as write_tree_json writes: the header's fields and "stats" one per line, each
 // node, arc, pair and branch compact on a line of its own.
-std::string tree_to_json(const TreeResult &tree, bool timings = true);
+std::string tree_to_json(const TreeResult &tree, bool timings = true, int threads = 1);
 
 // Reads a file written by write_tree_json; throws InputError naming the file and the problem.
 TreeResult read_tree_json(const std::string &path);

@@ -5,6 +5,9 @@
 // or, where nlohmann's Grisu2 digits are not the shortest (about 0.14% of random doubles),
 // shorter.
 #include "io/json_numbers.hpp"
+#include "io/tree_json.hpp"
+#include "test_temp_dir.hpp"
+#include "tree/contour_tree.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -13,8 +16,10 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <fstream>
 #include <limits>
 #include <random>
+#include <sstream>
 
 namespace hoct {
 namespace {
@@ -88,6 +93,48 @@ TEST(JsonNumbers, IntegersAreWrittenAsNlohmannWritesThem) {
     std::string s;
     append_json_int(s, x);
     EXPECT_EQ(s, nlohmann::json(x).dump());
+  }
+}
+
+// The tree writer's arrays, long ones formatted in blocks on threads and streamed to the file:
+// the same text for 1, 2 and 3 threads, in the file as in the string, and read back as the tree.
+TEST(TreeJson, TheSameTextForAnyThreadCountStreamedOrNot) {
+  TreeResult t;
+  t.method = "exact";
+  std::mt19937_64 rng(3);
+  const int64_t n = 100000; // more than the 4 blocks of 8192 lines that go to threads
+  for (int64_t i = 0; i < n; ++i) {
+    TreeNode node;
+    node.type = i == 0 ? NodeType::Minimum : (i + 1 == n ? NodeType::Maximum : NodeType::Regular);
+    node.value = static_cast<double>(i) + std::ldexp(static_cast<double>(rng() % 1000), -12);
+    node.position = {std::ldexp(static_cast<double>(rng()), -64), 1.5, -0.0};
+    node.cell = static_cast<int64_t>(rng() % 1000);
+    node.location = NodeLocation::Interior;
+    node.merged = i % 7 == 0 ? 3 : 1;
+    t.nodes.push_back(node);
+    if (i > 0)
+      t.arcs.push_back({i - 1, i});
+  }
+  t.pairs.push_back(
+      {PersistencePair::Kind::Global, 0, n - 1, t.nodes.front().value, t.nodes.back().value});
+  t.branches.push_back({n - 1, 0, t.nodes.back().value - t.nodes.front().value, -1, 0});
+  const std::string one = tree_to_json(t, false, 1);
+  EXPECT_EQ(tree_to_json(t, false, 2), one);
+  EXPECT_EQ(tree_to_json(t, false, 3), one);
+  EXPECT_EQ(nlohmann::json::parse(one)["nodes"].size(), static_cast<std::size_t>(n));
+  testing::TempDir dir("hoct-json");
+  const std::string path = dir.file("t.json");
+  write_tree_json(path, t, false, 2);
+  std::ifstream in(path);
+  std::stringstream text;
+  text << in.rdbuf();
+  EXPECT_EQ(text.str(), one + "\n");
+  const TreeResult back = read_tree_json(path);
+  ASSERT_EQ(back.nodes.size(), t.nodes.size());
+  for (int64_t i = 0; i < n; i += 997) {
+    EXPECT_EQ(back.nodes[i].value, t.nodes[i].value);
+    EXPECT_EQ(back.nodes[i].position[0], t.nodes[i].position[0]);
+    EXPECT_EQ(back.nodes[i].merged, t.nodes[i].merged);
   }
 }
 
