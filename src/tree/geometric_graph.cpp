@@ -1,5 +1,7 @@
 #include "tree/geometric_graph.hpp"
 
+#include "tree/node_order.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <numeric>
@@ -52,19 +54,103 @@ void GeometricGraph::finish() {
   }
 }
 
-std::vector<Vec3> GeometricGraph::path(int64_t a, int64_t b, Search &scratch,
-                                       int64_t max_visits) const {
+std::vector<Vec3> GeometricGraph::near_path(int64_t a, int64_t b, Search &scratch,
+                                            int64_t below_visits) const {
   const double lo = std::min(value_[a], value_[b]), hi = std::max(value_[a], value_[b]);
-  std::vector<Vec3> p = search(a, b, lo, hi, max_visits, scratch);
-  // No path within the arc's values (the graph is sparser than the surface): below the upper
-  // end's value, where the join tree connects the two ends of an arc (common on a field with
-  // many features; a search for any path would visit far more nodes); then any path on the
-  // surface rather than a chord through it.
-  if (p.size() == 2 && a != b)
-    p = search(a, b, -INFINITY, hi, max_visits, scratch);
-  if (p.size() == 2 && a != b)
-    p = search(a, b, -INFINITY, INFINITY, max_visits, scratch);
+  std::vector<Vec3> p = search(a, b, lo, hi, kMaxVisits, scratch);
+  // No path within the arc's values (the graph is sparser than the surface: the contours of a
+  // narrow arc may cross no node of it): below the upper end's value, where the join tree
+  // connects the two ends of an arc.
+  if (scratch.nodes.empty() && (below_visits > 0 || !scratch.avoid.empty()))
+    p = search(a, b, -INFINITY, hi, scratch.avoid.empty() ? below_visits : kMaxVisits, scratch);
   return p;
+}
+
+std::vector<Vec3> GeometricGraph::path(int64_t a, int64_t b, Search &scratch,
+                                       int64_t below_visits) const {
+  std::vector<Vec3> p = near_path(a, b, scratch, below_visits);
+  // On a field with many features, whose sublevel sets wind through much of the surface, a
+  // search below may visit most of it: the forests' paths instead, below the upper end's value
+  // or above the lower end's (where the split tree connects the ends), found without a search;
+  // then any path on the surface rather than a chord through it.
+  if (scratch.nodes.empty() && scratch.avoid.empty())
+    p = forest_path(a, b, std::min(value_[a], value_[b]), std::max(value_[a], value_[b]), scratch);
+  if (scratch.nodes.empty())
+    p = search(a, b, -INFINITY, INFINITY, kMaxVisits, scratch);
+  return p;
+}
+
+std::vector<Vec3> GeometricGraph::forest_path(int64_t a, int64_t b, double lo, double hi,
+                                              Search &s) const {
+  std::call_once(forest_->built, [&] {
+    const std::vector<int64_t> order = ascending_order(value_);
+    using Side = SublevelForest::Side;
+    forest_->sublevel = SublevelForest(Side::Sublevel, order, offset_, adj_, adj_edge_);
+    forest_->superlevel = SublevelForest(Side::Superlevel, order, offset_, adj_, adj_edge_);
+  });
+  std::vector<Vec3> out;
+  std::vector<int64_t> edges, up_nodes, up_edges;
+  const bool below =
+      forest_->sublevel.path(a, b, s.nodes, edges) &&
+      std::none_of(s.nodes.begin(), s.nodes.end(), [&](int64_t v) { return value_[v] > hi; });
+  const bool above =
+      forest_->superlevel.path(a, b, up_nodes, up_edges) &&
+      std::none_of(up_nodes.begin(), up_nodes.end(), [&](int64_t v) { return value_[v] < lo; });
+  if (above && (!below || up_nodes.size() < s.nodes.size())) {
+    s.nodes = std::move(up_nodes);
+    edges = std::move(up_edges);
+  } else if (!below) {
+    s.nodes.clear();
+    return out;
+  }
+  // The forest's paths wander (they follow the order in which the sublevel sets merged): cut
+  // short from each node to the furthest later node of the path it has an edge to, a
+  // subsequence of the path's nodes (within its values), each step an edge of the graph.
+  if (s.stamp.size() != value_.size() || s.generation >= UINT32_MAX - 2) {
+    s.stamp.assign(value_.size(), 0);
+    s.from.assign(value_.size(), -1);
+    s.generation = 0;
+  }
+  s.generation += 2;
+  const std::vector<int64_t> &nodes = s.nodes;
+  for (std::size_t i = 0; i < nodes.size(); ++i) {
+    s.stamp[nodes[i]] = s.generation;
+    s.from[nodes[i]] = static_cast<int64_t>(i);
+  }
+  out.push_back(position(a));
+  std::vector<int64_t> kept = {a};
+  for (int64_t i = 0, last = static_cast<int64_t>(nodes.size()) - 1; i < last;) {
+    int64_t best = i + 1, edge = edges[i];
+    for (int64_t k = offset_[nodes[i]]; k < offset_[nodes[i] + 1]; ++k) {
+      const int64_t w = adj_[k];
+      if (s.stamp[w] == s.generation && s.from[w] > best) {
+        best = s.from[w];
+        edge = adj_edge_[k];
+      }
+    }
+    append_edge(edge, nodes[i], out);
+    kept.push_back(nodes[best]);
+    i = best;
+  }
+  s.nodes = std::move(kept);
+  return out;
+}
+
+int64_t GeometricGraph::append_edge(int64_t e, int64_t u, std::vector<Vec3> &out) const {
+  const auto &ends = ends_[e];
+  const bool forward = ends[0] == u; // the points run ends[0] -> ends[1]
+  const int64_t placed = geometry_ ? geometry_->edges() : 0;
+  if (e < placed)
+    geometry_->edge_points(e, forward, out);
+  else if (forward)
+    for (int64_t i = point_offset_[e - placed]; i < point_offset_[e - placed + 1]; ++i)
+      out.push_back(points_[i]);
+  else
+    for (int64_t i = point_offset_[e - placed + 1] - 1; i >= point_offset_[e - placed]; --i)
+      out.push_back(points_[i]);
+  const int64_t next = forward ? ends[1] : ends[0];
+  out.push_back(position(next));
+  return next;
 }
 
 std::vector<Vec3> GeometricGraph::search(int64_t a, int64_t b, double lo, double hi,
@@ -123,22 +209,8 @@ std::vector<Vec3> GeometricGraph::search(int64_t a, int64_t b, double lo, double
     out = {position(a), position(b)};
     return out;
   }
-  // Edge e's polyline from its end u to its other end (u excluded), appended to out; returns
-  // that other end.
   auto walk = [&](int64_t e, int64_t u) {
-    const auto &ends = ends_[e];
-    const bool forward = ends[0] == u; // the points run ends[0] -> ends[1]
-    const int64_t placed = geometry_ ? geometry_->edges() : 0;
-    if (e < placed)
-      geometry_->edge_points(e, forward, out);
-    else if (forward)
-      for (int64_t i = point_offset_[e - placed]; i < point_offset_[e - placed + 1]; ++i)
-        out.push_back(points_[i]);
-    else
-      for (int64_t i = point_offset_[e - placed + 1] - 1; i >= point_offset_[e - placed]; --i)
-        out.push_back(points_[i]);
-    const int64_t next = forward ? ends[1] : ends[0];
-    out.push_back(position(next));
+    const int64_t next = append_edge(e, u, out);
     s.nodes.push_back(next);
     return next;
   };

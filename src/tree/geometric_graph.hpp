@@ -5,12 +5,14 @@
 // whose values lie between theirs.
 #pragma once
 
+#include "tree/sublevel_forest.hpp"
 #include "util/uninitialized_vector.hpp"
 #include "util/vec.hpp"
 
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <mutex>
 #include <vector>
 
 namespace hoct {
@@ -74,16 +76,30 @@ public:
   };
 
   // The polyline from a to b through a path of nodes with values within [min, max] of the two
-  // ends' values (breadth-first from both ends until they meet, at most `max_visits` nodes
-  // visited); failing that (the graph is sparser
-  // than the surface), through nodes below the larger of the two values, where the nodes of an
-  // arc of the graph's contour tree are always connected; failing that too, through any path;
-  // just {a, b} if there is none. Several threads may search at once, each with its scratch.
-  std::vector<Vec3> path(int64_t a, int64_t b, Search &scratch, int64_t max_visits = 2000000) const;
+  // ends' values (breadth-first from both ends until they meet, at most kMaxVisits nodes
+  // visited); failing that (the graph is sparser than the surface), through nodes below the
+  // larger of the two values or above the smaller (the join and the split tree connect the
+  // ends of an arc of the graph's contour tree or Reeb graph that way): by a search below, at
+  // most `below_visits` nodes visited (none: 0; kMaxVisits while `avoid` is set), then the shorter
+  // path of the two SublevelForests, built at the first such call (not while `avoid` is set);
+  // failing that too, through any path; just {a, b} if there is none. Several threads may
+  // search at once, each with its scratch.
+  static constexpr int64_t kMaxVisits = 2000000;
+  std::vector<Vec3> path(int64_t a, int64_t b, Search &scratch,
+                         int64_t below_visits = kMaxVisits) const;
+  // path() as far as its searches within the values and below them reach (no forest, no path
+  // beyond): scratch.nodes is empty where they fail.
+  std::vector<Vec3> near_path(int64_t a, int64_t b, Search &scratch, int64_t below_visits) const;
 
 private:
   std::vector<Vec3> search(int64_t a, int64_t b, double lo, double hi, int64_t max_visits,
                            Search &s) const;
+  // The shorter of the sublevel forest's path from a to b if its nodes stay at or below hi and
+  // the superlevel forest's if they stay at or above lo (s.nodes empty if neither does).
+  std::vector<Vec3> forest_path(int64_t a, int64_t b, double lo, double hi, Search &s) const;
+  // Appends edge e's polyline from its end u to its other end (u excluded) to out; returns that
+  // other end.
+  int64_t append_edge(int64_t e, int64_t u, std::vector<Vec3> &out) const;
 
   std::vector<Vec3> position_; // unless geometry_ places the nodes
   std::vector<double> value_;
@@ -92,6 +108,12 @@ private:
   std::vector<int64_t> point_offset_{0};
   UninitializedVector<Vec3> points_;
   std::vector<int64_t> offset_, adj_, adj_edge_;
+  // Built by the first path() that needs it (shared by copies of the graph).
+  struct LazyForest {
+    std::once_flag built;
+    SublevelForest sublevel, superlevel;
+  };
+  std::shared_ptr<LazyForest> forest_ = std::make_shared<LazyForest>();
 };
 
 } // namespace hoct

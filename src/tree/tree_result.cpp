@@ -174,21 +174,41 @@ void compute_arc_paths(TreeResult &t, int threads) {
   for (int64_t k = 1; k < n; ++k)
     if (t.arcs[by_ends[k]] == t.arcs[by_ends[k - 1]])
       parallel[by_ends[k]] = parallel[by_ends[k - 1]] = 1;
-  auto draw = [&](int64_t i, GeometricGraph::Search &search) {
+  // A search below the arc visits at most `below_visits` nodes before the forests' paths take
+  // over (GeometricGraph::path). First every arc with a short search (`near`, no forest); then
+  // the arcs it did not draw with searches that together visit about as many nodes as building
+  // the forests costs: a few such arcs get the short paths of a search, the many of a noisy
+  // field the forests' paths, without searching much of the surface for each (and the choice
+  // depends on no thread's timing).
+  constexpr int64_t near = 1024;
+  std::vector<uint8_t> undrawn(t.arcs.size(), 0);
+  auto draw = [&](int64_t i, GeometricGraph::Search &search, int64_t below_visits, bool first) {
     const auto &a = t.arcs[i];
     const int64_t x = t.nodes[a[0]].graph_node, y = t.nodes[a[1]].graph_node;
-    t.arc_paths[i] = x < 0 || y < 0
-                         ? std::vector<Vec3>{t.nodes[a[0]].position, t.nodes[a[1]].position}
-                         : t.graph->path(x, y, search);
+    if (x < 0 || y < 0) {
+      t.arc_paths[i] = {t.nodes[a[0]].position, t.nodes[a[1]].position};
+      return;
+    }
+    t.arc_paths[i] = first ? t.graph->near_path(x, y, search, below_visits)
+                           : t.graph->path(x, y, search, below_visits);
+    undrawn[i] = first && search.nodes.empty();
   };
   const int used = threads_for(n, thread_count(threads), 16);
   std::vector<GeometricGraph::Search> scratch(static_cast<std::size_t>(used));
-  parallel_chunks(n, std::min<int64_t>(n, int64_t{used} * 256), used,
-                  [&](int64_t, int64_t begin, int64_t end, int worker) {
-                    for (int64_t i = begin; i < end; ++i)
-                      if (!parallel[i])
-                        draw(i, scratch[static_cast<std::size_t>(worker)]);
-                  });
+  auto draw_all = [&](int64_t below_visits, bool first) {
+    parallel_chunks(n, std::min<int64_t>(n, int64_t{used} * 256), used,
+                    [&](int64_t, int64_t begin, int64_t end, int worker) {
+                      for (int64_t i = begin; i < end; ++i)
+                        if (!parallel[i] && (first || undrawn[i]))
+                          draw(i, scratch[static_cast<std::size_t>(worker)], below_visits, first);
+                    });
+  };
+  draw_all(near, true);
+  const int64_t left = std::count(undrawn.begin(), undrawn.end(), uint8_t{1});
+  // (No second search where it would visit no more nodes than the first.)
+  const int64_t budget = left > 0 ? t.graph->size() / left : 0;
+  if (left > 0)
+    draw_all(budget <= near ? 0 : std::min(budget, GeometricGraph::kMaxVisits), false);
   GeometricGraph::Search &search = scratch.front();
   for (int64_t k = 0; k < n; ++k) {
     const int64_t i = by_ends[k];
@@ -196,7 +216,7 @@ void compute_arc_paths(TreeResult &t, int threads) {
       continue;
     if (k == 0 || t.arcs[i] != t.arcs[by_ends[k - 1]])
       search.avoid.assign(static_cast<std::size_t>(t.graph->size()), 0);
-    draw(i, search);
+    draw(i, search, GeometricGraph::kMaxVisits, false);
     for (int64_t v : search.nodes)
       search.avoid[v] = 1;
   }

@@ -1,5 +1,6 @@
 // The geometric graph's arc paths: within the arc's values where the graph allows it, else below
-// the upper end's value (where the join tree connects an arc's ends), else any path; one scratch
+// the upper end's value or above the lower's (where the join or the split tree connects an arc's
+// ends), else any path; one scratch
 // serves searches on different graphs; long paths and random grids as walks through the graph.
 #include "tree/geometric_graph.hpp"
 
@@ -119,7 +120,7 @@ TEST(GeometricGraph, PathsAreWalksThroughTheGraphWithinTheValues) {
   // A 40 x 40 grid with a fifth of its edges missing and random values: every path between
   // random pairs of nodes in one piece steps from node to adjacent node, stays within the two
   // ends' values when it can (checked against a plain search of the nodes within them), and
-  // otherwise below the upper end's value.
+  // otherwise below the upper end's value or above the lower's (both seen).
   const int side = 40;
   std::mt19937_64 rng(5);
   std::uniform_real_distribution<double> u(0, 1);
@@ -158,33 +159,44 @@ TEST(GeometricGraph, PathsAreWalksThroughTheGraphWithinTheValues) {
   };
   auto node_at = [&](const Vec3 &p) { return int(p[1]) * side + int(p[0]); };
   GeometricGraph::Search scratch;
-  int within = 0, below = 0;
-  for (int trial = 0; trial < 300; ++trial) {
+  int within = 0, below = 0, above = 0;
+  for (int trial = 0; trial < 600; ++trial) {
     const int a = int(u(rng) * nodes.size()), b = int(u(rng) * nodes.size());
     const double lo = std::min(values[a], values[b]), hi = std::max(values[a], values[b]);
     const bool can_within = reachable(a, lo, hi)[b];
-    if (!reachable(a, -INFINITY, hi)[b])
+    const bool can_below = reachable(a, -INFINITY, hi)[b],
+               can_above = reachable(a, lo, INFINITY)[b];
+    if (!can_below && !can_above)
       continue;
     const std::vector<Vec3> p = g.path(a, b, scratch);
     ASSERT_GE(p.size(), 1u);
     EXPECT_EQ(node_at(p.front()), a);
     EXPECT_EQ(node_at(p.back()), b);
+    double path_lo = INFINITY, path_hi = -INFINITY;
     for (std::size_t i = 0; i < p.size(); ++i) {
       const int v = node_at(p[i]);
-      EXPECT_LE(values[v], hi);
-      if (can_within) {
-        EXPECT_GE(values[v], lo);
-      }
+      path_lo = std::min(path_lo, values[v]);
+      path_hi = std::max(path_hi, values[v]);
       if (i > 0) {
         const int w = node_at(p[i - 1]);
         EXPECT_NE(std::find(adjacent[v].begin(), adjacent[v].end(), w), adjacent[v].end())
             << "step " << i << " of the path from " << a << " to " << b;
       }
     }
-    (can_within ? within : below)++;
+    if (can_within) {
+      EXPECT_GE(path_lo, lo);
+      EXPECT_LE(path_hi, hi);
+      ++within;
+    } else {
+      EXPECT_TRUE(path_hi <= hi || path_lo >= lo) << a << " to " << b;
+      EXPECT_FALSE(path_hi <= hi && path_lo >= lo) << "a path within the values, found late";
+      below += path_hi <= hi;
+      above += path_lo >= lo;
+    }
   }
   EXPECT_GT(within, 10);
   EXPECT_GT(below, 10);
+  EXPECT_GT(above, 10);
 }
 
 } // namespace
