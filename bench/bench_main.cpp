@@ -1,8 +1,8 @@
 // hoct's benchmark (not a test; run it with bench/run): the exact contour tree on the thesis'
 // datasets against the thesis' times and against hoct's PL tree of the 16x refinement, its
 // scaling on random fields up to 4 million cells for degrees 2, 3 and 5 with one and two
-// threads, phase by phase, the CLI's peak memory, and the PL tree on large meshes. Prints Markdown
-// for docs/PERFORMANCE.md; medians of --runs runs.
+// threads, phase by phase, the CLI's peak memory, the PL tree on large meshes, and whole CLI runs
+// on large noisy trees. Prints Markdown for docs/PERFORMANCE.md; medians of --runs runs.
 #include "bench_pipeline.hpp"
 #include "bench_support.hpp"
 
@@ -32,8 +32,8 @@ namespace {
 struct Settings {
   int runs = 5;
   bool quick = false;
-  std::vector<std::string> sections = {"datasets", "scaling", "density", "plateau",
-                                       "quads",    "reeb",    "memory",  "pl"};
+  std::vector<std::string> sections = {"datasets", "scaling", "density", "plateau", "quads",
+                                       "reeb",     "memory",  "pl",      "large"};
   std::vector<int> degrees = {2, 3, 5};
   std::vector<double> sizes = {1e4, 1e5, 1e6, 4e6};
   std::vector<int> threads = {1, 2};
@@ -455,6 +455,90 @@ void reeb_section(const Settings &s) {
   std::printf("\n");
 }
 
+// A number of a tree JSON's "stats" (written last: only the file's tail is read), -1 if absent.
+double json_stat(const std::string &path, const std::string &key) {
+  std::ifstream in(path, std::ios::binary | std::ios::ate);
+  const std::streamoff size = in.tellg(), tail = std::min<std::streamoff>(size, 1 << 16);
+  std::string text(static_cast<std::size_t>(tail), '\0');
+  in.seekg(size - tail);
+  in.read(text.data(), tail);
+  const std::string quoted = "\"" + key + "\":";
+  const auto at = text.rfind(quoted);
+  return at == std::string::npos ? -1 : std::stod(text.substr(at + quoted.size()));
+}
+
+std::uintmax_t file_bytes(const std::string &path) {
+  std::ifstream in(path, std::ios::binary | std::ios::ate);
+  return static_cast<std::uintmax_t>(in.tellg());
+}
+
+// Large trees: the whole `hoct tree FILE --linear --json J` run on noisy degree-1 fields (a
+// tree node for every few vertices), each run a fresh process (cold), 1 and 2 threads
+// alternated; the phases from the JSON's stats, the rest of the run (start, output) as the
+// difference; then one run with `--vtp V` too (arcs drawn on the surface).
+void large_section(const Settings &s) {
+  const int runs = s.quick ? 1 : std::min(std::max(s.runs, 3), 5);
+  struct Case {
+    double cells, frequency;
+  };
+  const std::vector<Case> cases =
+      s.quick ? std::vector<Case>{{2e5, 120}} : std::vector<Case>{{2e6, 400}, {8e6, 800}};
+  std::printf("## Large trees: `hoct tree FILE.vtu --linear --json J --threads T` on noisy "
+              "fields (`random --degree 1 --frequency F`), a fresh process per run, 1 and 2 "
+              "threads alternated (seconds, medians of %d runs; whole: the process's wall time; "
+              "rest: whole - read - check - tree, the output above all)\n\n",
+              runs);
+  std::printf("| points | tree nodes | threads | read | check | tree | sweeps | pairs | rest | "
+              "whole | whole / (read + tree) | pairs / sweeps | JSON MB (MB/s of the rest) | "
+              "peak MiB |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+  std::vector<std::string> vtp_rows;
+  for (const Case &c : cases) {
+    ScratchDir scratch;
+    const std::string vtu = scratch.file("noisy.vtu"), json = scratch.file("t.json");
+    write_random(vtu, c.cells, 1, c.frequency);
+    std::map<int, std::vector<double>> read, check, tree, sweeps, pairs, whole, peak;
+    double nodes = 0, points = 0, bytes = 0;
+    for (int i = 0; i < runs; ++i)
+      for (int threads : {1, 2}) {
+        const ProcessPeak p =
+            run_process({executable_dir() + "/hoct", "tree", vtu, "--linear", "--json", json,
+                         "--threads", std::to_string(threads), "-q"});
+        read[threads].push_back(json_stat(json, "time_read_s"));
+        check[threads].push_back(json_stat(json, "time_check_s"));
+        tree[threads].push_back(json_stat(json, "time_tree_s"));
+        sweeps[threads].push_back(json_stat(json, "time_sweeps_s"));
+        pairs[threads].push_back(json_stat(json, "time_pairs_s"));
+        whole[threads].push_back(p.seconds);
+        peak[threads].push_back(p.max_rss_kib / 1024.0);
+        nodes = json_stat(json, "nodes");
+        points = json_stat(json, "pl_vertices");
+        bytes = static_cast<double>(file_bytes(json));
+      }
+    for (int threads : {1, 2}) {
+      const double r = median(read[threads]), k = median(check[threads]), t = median(tree[threads]),
+                   w = median(whole[threads]), rest = w - r - k - t;
+      std::printf("| %.0f | %.0f | %d | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f | %.2fx | "
+                  "%.2f | %.0f (%.0f) | %.0f |\n",
+                  points, nodes, threads, r, k, t, median(sweeps[threads]), median(pairs[threads]),
+                  rest, w, w / (r + t), median(pairs[threads]) / median(sweeps[threads]),
+                  bytes / 1e6, rest > 0 ? bytes / 1e6 / rest : 0.0, median(peak[threads]));
+      std::fflush(stdout);
+    }
+    const std::string vtp = scratch.file("t.vtp");
+    const ProcessPeak p = run_process({executable_dir() + "/hoct", "tree", vtu, "--linear",
+                                       "--json", json, "--vtp", vtp, "--threads", "2", "-q"});
+    char row[256];
+    std::snprintf(row, sizeof row, "| %.0f | %.0f | %.3f | %.0f | %.0f |\n", points, nodes,
+                  p.seconds, static_cast<double>(file_bytes(vtp)) / 1e6, p.max_rss_kib / 1024.0);
+    vtp_rows.push_back(row);
+  }
+  std::printf("\nWith `--vtp V` too (every arc drawn on the surface), 2 threads, one run:\n\n"
+              "| points | tree nodes | whole (s) | .vtp MB | peak MiB |\n|---|---|---|---|---|\n");
+  for (const std::string &row : vtp_rows)
+    std::printf("%s", row.c_str());
+  std::printf("\n");
+}
+
 // Peak memory of `hoct tree FILE.vtu --json J --threads 1` in a process of its own (GNU time).
 void memory_section(const Settings &s) {
   std::printf("## Peak memory of `hoct tree FILE.vtu --json J` (random fields; GNU time's maximum "
@@ -542,7 +626,8 @@ int main(int argc, char **argv) {
       ->check(CLI::Range(1, 1000));
   app.add_flag("--quick", s.quick, "A smoke run: small sizes, few runs");
   app.add_option("--sections", s.sections,
-                 "Sections to run: datasets, scaling, density, plateau, quads, reeb, memory, pl")
+                 "Sections to run: datasets, scaling, density, plateau, quads, reeb, memory, pl, "
+                 "large")
       ->delimiter(',');
   app.add_option("--degrees", s.degrees, "Degrees of the scaling, density and memory sections")
       ->delimiter(',');
@@ -576,6 +661,8 @@ int main(int argc, char **argv) {
     memory_section(s);
   if (wants(s, "pl"))
     pl_section(s);
+  if (wants(s, "large"))
+    large_section(s);
   std::printf("peak resident memory of the benchmark: %.1f MiB\n", peak_rss_kib() / 1024.0);
   return 0;
 }

@@ -86,6 +86,19 @@ std::vector<uint8_t> arcs_on_loops(std::size_t nodes,
 // A Reeb graph with loops: every node at its value, x from a spanning forest (leaves in
 // depth-first order, inner nodes at their children's mean), every arc a straight line, the arcs
 // on loops in their own colour.
+// The legend of the node types from x = lx along the top; returns where the next entry goes.
+double node_legend(std::ostream &s, double lx) {
+  for (auto [type, label] :
+       {std::pair{NodeType::Maximum, "maximum"}, std::pair{NodeType::Saddle, "saddle"},
+        std::pair{NodeType::Minimum, "minimum"}}) {
+    s << "<circle cx=\"" << num(lx) << "\" cy=\"40\" r=\"5\" fill=\"" << colour(type)
+      << "\" stroke=\"black\" stroke-width=\"0.6\"/><text x=\"" << num(lx + 9)
+      << "\" y=\"44\" font-size=\"12\">" << label << "</text>\n";
+    lx += 80;
+  }
+  return lx;
+}
+
 void write_graph_svg(const std::string &path, const TreeResult &t, const std::string &title) {
   const std::size_t n = t.nodes.size();
   std::vector<std::vector<int64_t>> adj(n);
@@ -170,15 +183,7 @@ void write_graph_svg(const std::string &path, const TreeResult &t, const std::st
       << node.cell << "</title></circle>\n";
   }
   s << "</g>\n";
-  double lx = W - 330;
-  for (auto [type, label] :
-       {std::pair{NodeType::Maximum, "maximum"}, std::pair{NodeType::Saddle, "saddle"},
-        std::pair{NodeType::Minimum, "minimum"}}) {
-    s << "<circle cx=\"" << num(lx) << "\" cy=\"40\" r=\"5\" fill=\"" << colour(type)
-      << "\" stroke=\"black\" stroke-width=\"0.6\"/><text x=\"" << num(lx + 9)
-      << "\" y=\"44\" font-size=\"12\">" << label << "</text>\n";
-    lx += 80;
-  }
+  const double lx = node_legend(s, W - 330);
   s << "<line x1=\"" << num(lx - 6) << "\" y1=\"40\" x2=\"" << num(lx + 6)
     << "\" y2=\"40\" stroke=\"#ff7f0e\" stroke-width=\"2\"/><text x=\"" << num(lx + 10)
     << "\" y=\"44\" font-size=\"12\">arc on a loop</text>\n";
@@ -267,16 +272,7 @@ void write_tree_svg(const std::string &path, const TreeResult &t, const std::str
       << " of cell " << n.cell << "</title></circle>\n";
   }
   s << "</g>\n";
-  // Legend.
-  double lx = W - 250;
-  for (auto [type, label] :
-       {std::pair{NodeType::Maximum, "maximum"}, std::pair{NodeType::Saddle, "saddle"},
-        std::pair{NodeType::Minimum, "minimum"}}) {
-    s << "<circle cx=\"" << num(lx) << "\" cy=\"40\" r=\"5\" fill=\"" << colour(type)
-      << "\" stroke=\"black\" stroke-width=\"0.6\"/><text x=\"" << num(lx + 9)
-      << "\" y=\"44\" font-size=\"12\">" << label << "</text>\n";
-    lx += 80;
-  }
+  node_legend(s, W - 250);
   s << "</svg>\n";
   const std::string text = s.str();
   write_file_atomic(

@@ -117,6 +117,21 @@ void elder_sweep_sorted(std::span<const double> values, const std::vector<int64_
     oldest_out[v] = oldest[uf.find(v)];
 }
 
+// One (min, max) pair per component: the component's oldest minimum and oldest maximum (each
+// node's, from the two sweeps).
+template <class Value>
+void global_pairs(const std::vector<int64_t> &global_min, const std::vector<int64_t> &global_max,
+                  const Value &value, std::vector<PersistencePair> &pairs) {
+  std::vector<char> done(global_min.size(), 0);
+  for (std::size_t v = 0; v < global_min.size(); ++v) {
+    const int64_t lo = global_min[v], hi = global_max[v];
+    if (done[lo])
+      continue;
+    done[lo] = 1;
+    pairs.push_back({PersistencePair::Kind::Global, lo, hi, value(lo), value(hi)});
+  }
+}
+
 } // namespace
 
 PersistenceDiagram persistence_diagram_ascending(std::span<const double> values,
@@ -151,15 +166,8 @@ PersistenceDiagram persistence_diagram_ascending(std::span<const double> values,
                      global_min);
   elder_sweep_sorted(values, hi_offset, upper, false, PersistencePair::Kind::Split, d.pairs,
                      global_max);
-  std::vector<char> done(n, 0);
-  for (int64_t v = 0; v < n; ++v) {
-    const int64_t lo = global_min[v];
-    if (done[lo])
-      continue;
-    done[lo] = 1;
-    d.pairs.push_back(
-        {PersistencePair::Kind::Global, lo, global_max[v], values[lo], values[global_max[v]]});
-  }
+  global_pairs(
+      global_min, global_max, [&](int64_t v) { return values[v]; }, d.pairs);
   return d;
 }
 
@@ -173,16 +181,8 @@ PersistenceDiagram persistence_diagram(const ScalarGraph &g) {
   elder_sweep(
       g, [&](int64_t i) { return asc[n - 1 - i]; }, PersistencePair::Kind::Split, d.pairs,
       &global_max);
-  // One (min, max) pair per component: the component's oldest minimum and oldest maximum.
-  std::vector<char> done(n, 0);
-  for (int64_t v = 0; v < n; ++v) {
-    const int64_t lo = global_min[v];
-    if (done[lo])
-      continue;
-    done[lo] = 1;
-    const int64_t hi = global_max[v];
-    d.pairs.push_back({PersistencePair::Kind::Global, lo, hi, g.value(lo), g.value(hi)});
-  }
+  global_pairs(
+      global_min, global_max, [&](int64_t v) { return g.value(v); }, d.pairs);
   return d;
 }
 
