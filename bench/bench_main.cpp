@@ -486,17 +486,19 @@ void large_section(const Settings &s) {
   std::printf("## Large trees: `hoct tree FILE.vtu --linear --json J --threads T` on noisy "
               "fields (`random --degree 1 --frequency F`), a fresh process per run, 1 and 2 "
               "threads alternated (seconds, medians of %d runs; whole: the process's wall time; "
-              "rest: whole - read - check - tree, the output above all)\n\n",
+              "branches: flat regions contracted, branches decomposed; rest: whole - read - "
+              "check - tree - branches, the output above all)\n\n",
               runs);
-  std::printf("| points | tree nodes | threads | read | check | tree | sweeps | pairs | rest | "
-              "whole | whole / (read + tree) | pairs / sweeps | JSON MB (MB/s of the rest) | "
-              "peak MiB |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+  std::printf(
+      "| points | tree nodes | threads | read | check | tree | sweeps | pairs | branches "
+      "| rest | whole | whole / (read + tree) | pairs / sweeps | JSON MB (MB/s of the "
+      "rest) | peak MiB |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   std::vector<std::string> vtp_rows;
   for (const Case &c : cases) {
     ScratchDir scratch;
     const std::string vtu = scratch.file("noisy.vtu"), json = scratch.file("t.json");
     write_random(vtu, c.cells, 1, c.frequency);
-    std::map<int, std::vector<double>> read, check, tree, sweeps, pairs, whole, peak;
+    std::map<int, std::vector<double>> read, check, tree, sweeps, pairs, branches, whole, peak;
     double nodes = 0, points = 0, bytes = 0;
     for (int i = 0; i < runs; ++i)
       for (int threads : {1, 2}) {
@@ -508,6 +510,7 @@ void large_section(const Settings &s) {
         tree[threads].push_back(json_stat(json, "time_tree_s"));
         sweeps[threads].push_back(json_stat(json, "time_sweeps_s"));
         pairs[threads].push_back(json_stat(json, "time_pairs_s"));
+        branches[threads].push_back(json_stat(json, "time_branches_s"));
         whole[threads].push_back(p.seconds);
         peak[threads].push_back(p.max_rss_kib / 1024.0);
         nodes = json_stat(json, "nodes");
@@ -516,11 +519,12 @@ void large_section(const Settings &s) {
       }
     for (int threads : {1, 2}) {
       const double r = median(read[threads]), k = median(check[threads]), t = median(tree[threads]),
-                   w = median(whole[threads]), rest = w - r - k - t;
-      std::printf("| %.0f | %.0f | %d | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f | %.2fx | "
-                  "%.2f | %.0f (%.0f) | %.0f |\n",
+                   b = median(branches[threads]), w = median(whole[threads]),
+                   rest = w - r - k - t - b;
+      std::printf("| %.0f | %.0f | %d | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f | "
+                  "%.2fx | %.2f | %.0f (%.0f) | %.0f |\n",
                   points, nodes, threads, r, k, t, median(sweeps[threads]), median(pairs[threads]),
-                  rest, w, w / (r + t), median(pairs[threads]) / median(sweeps[threads]),
+                  b, rest, w, w / (r + t), median(pairs[threads]) / median(sweeps[threads]),
                   bytes / 1e6, rest > 0 ? bytes / 1e6 / rest : 0.0, median(peak[threads]));
       std::fflush(stdout);
     }

@@ -100,12 +100,14 @@ TreeOutcome compute_tree(const Mesh &mesh, const TreeRequest &rq, const MeshInpu
   out.warnings = check_domain(mesh, rq.force);
   const int threads = thread_count(rq.threads);
   TreeResult tree = method_tree(mesh, rq, input, threads);
+  Stopwatch clock;
   // Plateaus (equal values, ordered by node id) give arcs of length zero and leaf branches of
   // persistence zero: artefacts of the tie-breaking. Each flat region becomes one node.
   if (!rq.augmented && !rq.keep_flat)
     tree = contract_flat(tree);
   else
     decompose_branches(tree);
+  tree.stats.time.branches = clock.lap();
   tree.forced = out.warnings;
   tree.input = mesh.fingerprint;
   tree.stats.input_cells =
@@ -126,10 +128,18 @@ TreeOutcome compute_tree(const Mesh &mesh, const TreeRequest &rq, const MeshInpu
     set_precision(*out.simplified, mesh.field.precision());
   }
   set_precision(tree, mesh.field.precision());
-  if (rq.arcs == ArcGeometry::AllPaths || (rq.arcs == ArcGeometry::Paths && !out.simplified))
+  clock.lap();
+  const bool all_paths = rq.arcs == ArcGeometry::AllPaths,
+             paths = all_paths || rq.arcs == ArcGeometry::Paths;
+  if (all_paths || (paths && !out.simplified))
     compute_arc_paths(tree, threads);
-  if (out.simplified && (rq.arcs == ArcGeometry::AllPaths || rq.arcs == ArcGeometry::Paths))
+  if (out.simplified && paths)
     compute_arc_paths(*out.simplified, threads);
+  if (paths) {
+    tree.stats.time.arc_paths = clock.lap();
+    if (out.simplified)
+      out.simplified->stats.time.arc_paths = tree.stats.time.arc_paths;
+  }
   if (rq.method != TreeMethod::Linear) {
     to_input_cells(tree, mesh.origins);
     if (out.simplified)

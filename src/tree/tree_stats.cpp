@@ -128,6 +128,8 @@ const std::vector<Entry> &table() {
     e.push_back(time_entry("time_pairs_s", &TreeTimings::pairs));
     e.push_back(time_entry("time_output_s", &TreeTimings::output));
     e.push_back(time_entry("time_tree_s", &TreeTimings::tree));
+    e.push_back(time_entry("time_branches_s", &TreeTimings::branches));
+    e.push_back(time_entry("time_arc_paths_s", &TreeTimings::arc_paths));
     return e;
   }();
   return t;

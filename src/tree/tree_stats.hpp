@@ -61,6 +61,9 @@ struct TreeTimings {
   // A Reeb graph: the surface cut open into disks, and the disks' tree glued along the seams.
   std::optional<double> cut, gluing;
   std::optional<double> tree; // the whole tree computation
+  // After it: flat regions contracted and branches decomposed; the arcs drawn on the surface
+  // (only when they are, for a .vtp or ParaView).
+  std::optional<double> branches, arc_paths;
 };
 
 struct TreeStats {
