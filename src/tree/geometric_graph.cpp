@@ -31,6 +31,7 @@ void GeometricGraph::set_edges(std::vector<std::array<int64_t, 2>> ends,
 }
 
 void GeometricGraph::finish() {
+  forest_ = std::make_shared<LazyForest>();
   const int64_t n = size();
   offset_.assign(n + 1, 0);
   for (const auto &e : ends_) {

@@ -108,7 +108,8 @@ private:
   std::vector<int64_t> point_offset_{0};
   UninitializedVector<Vec3> points_;
   std::vector<int64_t> offset_, adj_, adj_edge_;
-  // Built by the first path() that needs it (shared by copies of the graph).
+  // Built by the first path() that needs it (made anew by finish(); shared by the copies of a
+  // finished graph, which have its adjacency).
   struct LazyForest {
     std::once_flag built;
     SublevelForest sublevel, superlevel;

@@ -66,6 +66,25 @@ TEST(GeometricGraph, AnyPathWhenNoneBelowTheTop) {
   EXPECT_EQ(apart.path(0, 1, scratch), (std::vector<Vec3>{{0, 0, 0}, {1, 0, 0}}));
 }
 
+TEST(GeometricGraph, ForestPathsFollowEachGraphsOwnEdges) {
+  // a (0) and b (1) joined through e (5) above them in g; a copy of g taken before finish()
+  // also joins them through d (-1) below. With no search below (below_visits 0), the forests'
+  // paths: in g the superlevel forest's, through e (the sublevel one's passes e too, above b);
+  // in the copy the sublevel forest's through d (as short as the one through e, and preferred),
+  // from forests of its own edges even after g's were built.
+  GeometricGraph g({{0, 0, 0}, {1, 0, 0}, {0.5, -1, 0}, {0.5, 2, 0}}, {0.0, 1.0, -1.0, 5.0});
+  g.add_edge(0, 3);
+  g.add_edge(3, 1);
+  GeometricGraph copy = g;
+  copy.add_edge(0, 2);
+  copy.add_edge(2, 1);
+  g.finish();
+  copy.finish();
+  GeometricGraph::Search scratch;
+  EXPECT_EQ(g.path(0, 1, scratch, 0), (std::vector<Vec3>{{0, 0, 0}, {0.5, 2, 0}, {1, 0, 0}}));
+  EXPECT_EQ(copy.path(0, 1, scratch, 0), (std::vector<Vec3>{{0, 0, 0}, {0.5, -1, 0}, {1, 0, 0}}));
+}
+
 TEST(GeometricGraph, LongPathsKeepEveryEdgesPointsInOrder) {
   // A chain of 21 nodes, its edges added in alternating directions, each with an interior point
   // listed in its own direction: the path between the chain's ends (the two searches meet in
