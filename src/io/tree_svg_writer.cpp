@@ -86,6 +86,20 @@ std::vector<uint8_t> arcs_on_loops(std::size_t nodes,
 // A Reeb graph with loops: every node at its value, x from a spanning forest (leaves in
 // depth-first order, inner nodes at their children's mean), every arc a straight line, the arcs
 // on loops in their own colour.
+// The value axis at x = left from y = top to y = bottom, with six ticks from lo to hi placed by Y.
+template <class Place>
+void value_axis(std::ostream &s, double left, double top, double bottom, double lo, double hi,
+                const Place &Y) {
+  s << "<line x1=\"" << num(left) << "\" y1=\"" << num(top) << "\" x2=\"" << num(left) << "\" y2=\""
+    << num(bottom) << "\" stroke=\"#444\"/>\n";
+  for (int k = 0; k <= 5; ++k) {
+    const double v = lo + (hi - lo) * k / 5;
+    s << "<line x1=\"" << num(left - 5) << "\" y1=\"" << num(Y(v)) << "\" x2=\"" << num(left)
+      << "\" y2=\"" << num(Y(v)) << "\" stroke=\"#444\"/><text x=\"" << num(left - 8) << "\" y=\""
+      << num(Y(v) + 4) << "\" font-size=\"11\" text-anchor=\"end\">" << num(v) << "</text>\n";
+  }
+}
+
 // The legend of the node types from x = lx along the top; returns where the next entry goes.
 double node_legend(std::ostream &s, double lx) {
   for (auto [type, label] :
@@ -152,14 +166,7 @@ void write_graph_svg(const std::string &path, const TreeResult &t, const std::st
     << "<text x=\"" << num(left) << "\" y=\"24\" font-size=\"15\">" << xml_escape(title)
     << "</text>\n<text x=\"" << num(left) << "\" y=\"52\" font-size=\"11\">Reeb graph: " << t.loops
     << " loop" << (t.loops == 1 ? "" : "s") << ", " << t.arcs.size() << " arcs</text>\n";
-  s << "<line x1=\"" << num(left) << "\" y1=\"" << num(top) << "\" x2=\"" << num(left) << "\" y2=\""
-    << num(H - bottom) << "\" stroke=\"#444\"/>\n";
-  for (int k = 0; k <= 5; ++k) {
-    const double v = lo + (hi - lo) * k / 5;
-    s << "<line x1=\"" << num(left - 5) << "\" y1=\"" << num(Y(v)) << "\" x2=\"" << num(left)
-      << "\" y2=\"" << num(Y(v)) << "\" stroke=\"#444\"/><text x=\"" << num(left - 8) << "\" y=\""
-      << num(Y(v) + 4) << "\" font-size=\"11\" text-anchor=\"end\">" << num(v) << "</text>\n";
-  }
+  value_axis(s, left, top, H - bottom, lo, hi, Y);
   // Parallel arcs bow apart, so that a loop of two arcs shows as two.
   std::map<std::array<int64_t, 2>, int> seen;
   s << "<g stroke-width=\"1.5\" fill=\"none\">\n";
@@ -242,14 +249,7 @@ void write_tree_svg(const std::string &path, const TreeResult &t, const std::str
     << "<text x=\"" << num(left) << "\" y=\"24\" font-size=\"15\">" << xml_escape(title)
     << "</text>\n";
   // Value axis.
-  s << "<line x1=\"" << num(left) << "\" y1=\"" << num(top) << "\" x2=\"" << num(left) << "\" y2=\""
-    << num(H - bottom) << "\" stroke=\"#444\"/>\n";
-  for (int k = 0; k <= 5; ++k) {
-    const double v = lo + (hi - lo) * k / 5;
-    s << "<line x1=\"" << num(left - 5) << "\" y1=\"" << num(Y(v)) << "\" x2=\"" << num(left)
-      << "\" y2=\"" << num(Y(v)) << "\" stroke=\"#444\"/><text x=\"" << num(left - 8) << "\" y=\""
-      << num(Y(v) + 4) << "\" font-size=\"11\" text-anchor=\"end\">" << num(v) << "</text>\n";
-  }
+  value_axis(s, left, top, H - bottom, lo, hi, Y);
   // Branches: vertical segments, joined to the parent at the saddle.
   s << "<g stroke=\"#555\" stroke-width=\"1.5\" fill=\"none\">\n";
   for (std::size_t i = 0; i < b.size(); ++i) {
