@@ -17,6 +17,7 @@
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -467,11 +468,6 @@ double json_stat(const std::string &path, const std::string &key) {
   return at == std::string::npos ? -1 : std::stod(text.substr(at + quoted.size()));
 }
 
-std::uintmax_t file_bytes(const std::string &path) {
-  std::ifstream in(path, std::ios::binary | std::ios::ate);
-  return static_cast<std::uintmax_t>(in.tellg());
-}
-
 // Large trees: the whole `hoct tree FILE --linear --json J` run on noisy degree-1 fields (a
 // tree node for every few vertices), each run a fresh process (cold), 1 and 2 threads
 // alternated; the phases from the JSON's stats, the rest of the run (start, output) as the
@@ -515,7 +511,7 @@ void large_section(const Settings &s) {
         peak[threads].push_back(p.max_rss_kib / 1024.0);
         nodes = json_stat(json, "nodes");
         points = json_stat(json, "pl_vertices");
-        bytes = static_cast<double>(file_bytes(json));
+        bytes = static_cast<double>(std::filesystem::file_size(json));
       }
     for (int threads : {1, 2}) {
       const double r = median(read[threads]), k = median(check[threads]), t = median(tree[threads]),
@@ -533,7 +529,8 @@ void large_section(const Settings &s) {
                                        "--json", json, "--vtp", vtp, "--threads", "2", "-q"});
     char row[256];
     std::snprintf(row, sizeof row, "| %.0f | %.0f | %.3f | %.0f | %.0f |\n", points, nodes,
-                  p.seconds, static_cast<double>(file_bytes(vtp)) / 1e6, p.max_rss_kib / 1024.0);
+                  p.seconds, static_cast<double>(std::filesystem::file_size(vtp)) / 1e6,
+                  p.max_rss_kib / 1024.0);
     vtp_rows.push_back(row);
   }
   std::printf("\nWith `--vtp V` too (every arc drawn on the surface), 2 threads, one run:\n\n"

@@ -123,7 +123,10 @@ TreeOutcome compute_tree(const Mesh &mesh, const TreeRequest &rq, const MeshInpu
   if (rq.simplify) {
     const double range =
         tree.nodes.empty() ? 0 : tree.nodes.back().value - tree.nodes.front().value;
+    clock.lap();
     out.simplified = simplify_tree(tree, rq.simplify->absolute(range));
+    // Its branches: the whole tree's, then simplified and decomposed again.
+    out.simplified->stats.time.branches = *tree.stats.time.branches + clock.lap();
     out.simplified->forced = out.warnings;
     set_precision(*out.simplified, mesh.field.precision());
   }

@@ -55,27 +55,37 @@ void GeometricGraph::finish() {
   }
 }
 
+std::vector<Vec3> GeometricGraph::path(int64_t a, int64_t b, Search &scratch,
+                                       int64_t below_visits) const {
+  const double lo = std::min(value_[a], value_[b]), hi = std::max(value_[a], value_[b]);
+  std::vector<Vec3> p = search(a, b, lo, hi, kMaxVisits, scratch);
+  return scratch.nodes.empty() ? beyond_path(a, b, scratch, below_visits) : p;
+}
+
 std::vector<Vec3> GeometricGraph::near_path(int64_t a, int64_t b, Search &scratch,
                                             int64_t below_visits) const {
   const double lo = std::min(value_[a], value_[b]), hi = std::max(value_[a], value_[b]);
   std::vector<Vec3> p = search(a, b, lo, hi, kMaxVisits, scratch);
-  // No path within the arc's values (the graph is sparser than the surface: the contours of a
-  // narrow arc may cross no node of it): below the upper end's value, where the join tree
-  // connects the two ends of an arc.
-  if (scratch.nodes.empty() && (below_visits > 0 || !scratch.avoid.empty()))
-    p = search(a, b, -INFINITY, hi, scratch.avoid.empty() ? below_visits : kMaxVisits, scratch);
+  // No path within the arc's values (the contours of a narrow arc may cross no node of it):
+  // below the upper end's value, where the join tree connects the two ends of an arc.
+  if (scratch.nodes.empty() && below_visits > 0)
+    p = search(a, b, -INFINITY, hi, below_visits, scratch);
   return p;
 }
 
-std::vector<Vec3> GeometricGraph::path(int64_t a, int64_t b, Search &scratch,
-                                       int64_t below_visits) const {
-  std::vector<Vec3> p = near_path(a, b, scratch, below_visits);
+std::vector<Vec3> GeometricGraph::beyond_path(int64_t a, int64_t b, Search &scratch,
+                                              int64_t below_visits) const {
+  const double lo = std::min(value_[a], value_[b]), hi = std::max(value_[a], value_[b]);
+  std::vector<Vec3> p;
+  scratch.nodes.clear();
+  if (below_visits > 0)
+    p = search(a, b, -INFINITY, hi, below_visits, scratch);
   // On a field with many features, whose sublevel sets wind through much of the surface, a
   // search below may visit most of it: the forests' paths instead, below the upper end's value
   // or above the lower end's (where the split tree connects the ends), found without a search;
   // then any path on the surface rather than a chord through it.
   if (scratch.nodes.empty() && scratch.avoid.empty())
-    p = forest_path(a, b, std::min(value_[a], value_[b]), std::max(value_[a], value_[b]), scratch);
+    p = forest_path(a, b, lo, hi, scratch);
   if (scratch.nodes.empty())
     p = search(a, b, -INFINITY, INFINITY, kMaxVisits, scratch);
   return p;

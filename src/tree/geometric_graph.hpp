@@ -77,18 +77,20 @@ public:
 
   // The polyline from a to b through a path of nodes with values within [min, max] of the two
   // ends' values (breadth-first from both ends until they meet, at most kMaxVisits nodes
-  // visited); failing that (the graph is sparser than the surface), through nodes below the
-  // larger of the two values or above the smaller (the join and the split tree connect the
-  // ends of an arc of the graph's contour tree or Reeb graph that way): by a search below, at
-  // most `below_visits` nodes visited (none: 0; kMaxVisits while `avoid` is set), then the shorter
-  // path of the two SublevelForests, built at the first such call (not while `avoid` is set);
-  // failing that too, through any path; just {a, b} if there is none. Several threads may
-  // search at once, each with its scratch.
+  // visited); failing that (the graph is sparser than the surface), beyond_path(). Several
+  // threads may search at once, each with its scratch.
   static constexpr int64_t kMaxVisits = 2000000;
   std::vector<Vec3> path(int64_t a, int64_t b, Search &scratch,
                          int64_t below_visits = kMaxVisits) const;
-  // path() as far as its searches within the values and below them reach (no forest, no path
-  // beyond): scratch.nodes is empty where they fail.
+  // The path through nodes below the larger of the two values or above the smaller (the join
+  // and the split tree connect the ends of an arc of the graph's contour tree or Reeb graph that
+  // way): by a search below, at most `below_visits` nodes visited (none: 0), then the shorter
+  // path of the two SublevelForests, built at the first such call (not while `avoid` is set:
+  // the forests know nothing of it); failing that too, through any path; just {a, b} if there
+  // is none.
+  std::vector<Vec3> beyond_path(int64_t a, int64_t b, Search &scratch, int64_t below_visits) const;
+  // The searches within the values and below them alone (no forest, no path beyond):
+  // scratch.nodes is empty where they fail.
   std::vector<Vec3> near_path(int64_t a, int64_t b, Search &scratch, int64_t below_visits) const;
 
 private:

@@ -9,12 +9,13 @@ SublevelForest::SublevelForest(Side side, std::span<const int64_t> ascending,
                                std::span<const int64_t> offset, std::span<const int64_t> adj,
                                std::span<const int64_t> adj_edge) {
   const int64_t n = static_cast<int64_t>(ascending.size());
-  std::vector<int64_t> order(ascending.begin(), ascending.end());
-  if (side == Side::Superlevel)
-    std::reverse(order.begin(), order.end());
+  // The node of rank r in the sweep's order.
+  auto order = [&](int64_t r) {
+    return side == Side::Sublevel ? ascending[r] : ascending[n - 1 - r];
+  };
   std::vector<int64_t> rank(static_cast<std::size_t>(n));
   for (int64_t r = 0; r < n; ++r)
-    rank[order[r]] = r;
+    rank[order(r)] = r;
   // Kruskal's construction in the sweep's order: the forest's edges (v, w, edge id).
   std::vector<int64_t> set(static_cast<std::size_t>(n));
   for (int64_t v = 0; v < n; ++v)
@@ -26,8 +27,8 @@ SublevelForest::SublevelForest(Side side, std::span<const int64_t> ascending,
   };
   std::vector<std::array<int64_t, 3>> joins;
   joins.reserve(static_cast<std::size_t>(std::max<int64_t>(n - 1, 0)));
-  for (int64_t v : order)
-    for (int64_t k = offset[v]; k < offset[v + 1]; ++k) {
+  for (int64_t r = 0; r < n; ++r)
+    for (int64_t v = order(r), k = offset[v]; k < offset[v + 1]; ++k) {
       const int64_t w = adj[k];
       if (rank[w] >= rank[v])
         continue;
@@ -59,11 +60,12 @@ SublevelForest::SublevelForest(Side side, std::span<const int64_t> ascending,
   parent_edge_.assign(static_cast<std::size_t>(n), -1);
   depth_.assign(static_cast<std::size_t>(n), 0);
   std::vector<int64_t> queue;
-  for (auto it = order.rbegin(); it != order.rend(); ++it) {
-    if (parent_[*it] != -2)
+  for (int64_t r = n - 1; r >= 0; --r) {
+    const int64_t root = order(r);
+    if (parent_[root] != -2)
       continue;
-    parent_[*it] = -1;
-    queue.assign(1, *it);
+    parent_[root] = -1;
+    queue.assign(1, root);
     for (std::size_t q = 0; q < queue.size(); ++q) {
       const int64_t v = queue[q];
       for (int64_t k = start[v]; k < start[v + 1]; ++k) {

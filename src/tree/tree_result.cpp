@@ -174,49 +174,64 @@ void compute_arc_paths(TreeResult &t, int threads) {
   for (int64_t k = 1; k < n; ++k)
     if (t.arcs[by_ends[k]] == t.arcs[by_ends[k - 1]])
       parallel[by_ends[k]] = parallel[by_ends[k - 1]] = 1;
-  // A search below the arc visits at most `below_visits` nodes before the forests' paths take
-  // over (GeometricGraph::path). First every arc with a short search (`near`, no forest); then
+  // A search below the arc visits at most a given number of nodes before the forests' paths
+  // take over (GeometricGraph::beyond_path). First every arc with a short search (`near`, no
+  // forest); then
   // the arcs it did not draw with searches that together visit about as many nodes as building
   // the forests costs: a few such arcs get the short paths of a search, the many of a noisy
   // field the forests' paths, without searching much of the surface for each (and the choice
   // depends on no thread's timing).
   constexpr int64_t near = 1024;
-  std::vector<uint8_t> undrawn(t.arcs.size(), 0);
-  auto draw = [&](int64_t i, GeometricGraph::Search &search, int64_t below_visits, bool first) {
+  const GeometricGraph &g = *t.graph;
+  // Arc i by `how` (a GeometricGraph path between its nodes' graph nodes); straight where a node
+  // has none.
+  auto draw = [&](int64_t i, GeometricGraph::Search &search, const auto &how) {
     const auto &a = t.arcs[i];
     const int64_t x = t.nodes[a[0]].graph_node, y = t.nodes[a[1]].graph_node;
-    if (x < 0 || y < 0) {
-      t.arc_paths[i] = {t.nodes[a[0]].position, t.nodes[a[1]].position};
-      return;
-    }
-    t.arc_paths[i] = first ? t.graph->near_path(x, y, search, below_visits)
-                           : t.graph->path(x, y, search, below_visits);
-    undrawn[i] = first && search.nodes.empty();
+    t.arc_paths[i] = x < 0 || y < 0
+                         ? std::vector<Vec3>{t.nodes[a[0]].position, t.nodes[a[1]].position}
+                         : how(i, x, y, search);
   };
   const int used = threads_for(n, thread_count(threads), 16);
   std::vector<GeometricGraph::Search> scratch(static_cast<std::size_t>(used));
-  auto draw_all = [&](int64_t below_visits, bool first) {
+  // The arcs with which[i] set, on the threads.
+  auto draw_all = [&](const std::vector<uint8_t> &which, const auto &how) {
     parallel_chunks(n, std::min<int64_t>(n, int64_t{used} * 256), used,
                     [&](int64_t, int64_t begin, int64_t end, int worker) {
                       for (int64_t i = begin; i < end; ++i)
-                        if (!parallel[i] && (first || undrawn[i]))
-                          draw(i, scratch[static_cast<std::size_t>(worker)], below_visits, first);
+                        if (which[i])
+                          draw(i, scratch[static_cast<std::size_t>(worker)], how);
                     });
   };
-  draw_all(near, true);
+  std::vector<uint8_t> single(t.arcs.size()), undrawn(t.arcs.size(), 0);
+  for (int64_t i = 0; i < n; ++i)
+    single[i] = !parallel[i];
+  draw_all(single, [&](int64_t i, int64_t x, int64_t y, GeometricGraph::Search &search) {
+    std::vector<Vec3> p = g.near_path(x, y, search, near);
+    undrawn[i] = search.nodes.empty();
+    return p;
+  });
+  // The second pass does not repeat the first's search within the values. (No search below
+  // where it would visit no more nodes than the first.)
   const int64_t left = std::count(undrawn.begin(), undrawn.end(), uint8_t{1});
-  // (No second search where it would visit no more nodes than the first.)
-  const int64_t budget = left > 0 ? t.graph->size() / left : 0;
+  const int64_t budget = left > 0 ? g.size() / left : 0,
+                below = budget <= near ? 0 : std::min(budget, GeometricGraph::kMaxVisits);
   if (left > 0)
-    draw_all(budget <= near ? 0 : std::min(budget, GeometricGraph::kMaxVisits), false);
+    draw_all(undrawn, [&](int64_t, int64_t x, int64_t y, GeometricGraph::Search &search) {
+      return g.beyond_path(x, y, search, below);
+    });
+  // Parallel arcs one after the other, each avoiding its siblings' paths.
   GeometricGraph::Search &search = scratch.front();
+  auto full = [&](int64_t, int64_t x, int64_t y, GeometricGraph::Search &s) {
+    return g.path(x, y, s);
+  };
   for (int64_t k = 0; k < n; ++k) {
     const int64_t i = by_ends[k];
     if (!parallel[i])
       continue;
     if (k == 0 || t.arcs[i] != t.arcs[by_ends[k - 1]])
-      search.avoid.assign(static_cast<std::size_t>(t.graph->size()), 0);
-    draw(i, search, GeometricGraph::kMaxVisits, false);
+      search.avoid.assign(static_cast<std::size_t>(g.size()), 0);
+    draw(i, search, full);
     for (int64_t v : search.nodes)
       search.avoid[v] = 1;
   }
