@@ -1,11 +1,7 @@
 #include "exact/exact_contour_tree.hpp"
 
-#include "cell/edge_nodes.hpp"
-#include "exact/cell_phase.hpp"
-#include "exact/degenerate_cells.hpp"
-#include "exact/edge_chains.hpp"
 #include "exact/exact_arc_graph.hpp"
-#include "exact/graph_assembly.hpp"
+#include "exact/exact_graph_build.hpp"
 #include "exact/graph_sweeps.hpp"
 #include "exact/seam_gluing.hpp"
 #include "util/page_pool.hpp"
@@ -57,38 +53,13 @@ int64_t contract_stand_in(const DegenerateCells &degenerate, bool augmented, Con
 TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
   // Large arrays freed by one phase give their pages to the next.
   const PageReuseScope reuse_pages;
-  const Topology &topo = mesh.topology;
-  const int64_t nc = topo.num_cells();
-  const int threads = threads_for(nc, thread_count(opt.threads), opt.cells_per_thread);
   TreeTimings time;
+  ExactGraphBuild build = build_exact_graph(mesh, opt, time);
+  const EdgeNodes &en = build.edge_nodes;
+  ExactGraph &graph = build.graph;
+  const DegenerateCells &degenerate = build.degenerate;
+  const int threads = build.threads;
   Stopwatch clock;
-  auto done = [&](const char *phase, std::optional<double> &slot) {
-    slot = clock.lap();
-    if (opt.progress)
-      opt.progress(phase, *slot);
-  };
-
-  // 1. Edge nodes: the critical points of every mesh edge, once per edge.
-  EdgeNodeOptions edge_options;
-  edge_options.threads =
-      threads_for(topo.num_edges(), thread_count(opt.threads), 2 * opt.cells_per_thread);
-  const EdgeNodes en = find_edge_nodes(topo, mesh.field, edge_options);
-  done("edge critical points", time.edge_nodes);
-
-  // 2. The cell phase: interior critical points, degeneracy, certified connections.
-  CellPhase cells = run_cell_phase(mesh, en, opt, threads);
-  done("cells: interior critical points and certified connections", time.cells);
-
-  // 3. Graph assembly, 4. degenerate cells, 5. edge chains.
-  const int refinement = opt.fallback_refinement > 0
-                             ? opt.fallback_refinement
-                             : std::max(4, 2 * std::max(1, mesh.field.max_degree()));
-  CellTotals totals;
-  ExactGraph graph = assemble_graph(mesh, en, std::move(cells), refinement, opt, threads, totals);
-  const DegenerateCells degenerate =
-      refine_degenerate_cells(mesh, en, refinement, opt.arc_geometry, graph);
-  add_edge_chains(mesh, en, degenerate, opt, threads, graph);
-  done("graph assembly: fallback cells and edge chains", time.graph_assembly);
 
   // 6. The join and split sweeps, 7. their merge.
   SweepTimings sweep_time;
@@ -121,31 +92,14 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
     r.graph = exact_arc_graph(mesh, en, graph, opt, threads, seam_links(gluing));
   time.output = clock.lap();
 
-  ExactCounts &n = r.stats.exact.emplace();
-  n.cells = nc;
-  n.graph_nodes = graph.size();
-  n.edge_critical_points = static_cast<int64_t>(en.nodes.size());
-  n.interior_critical_points = totals.interior_nodes;
-  n.connections_direct = totals.counters.direct;
-  n.connections_traced = totals.counters.traced;
-  n.connections_failed = totals.counters.failed;
-  n.descent_steps = totals.counters.steps;
-  n.fallback_cells = static_cast<int64_t>(graph.fallback_cells.size());
-  n.fallback_by_reason = degenerate.reasons;
-  n.fallback_error = degenerate.max_error;
+  ExactCounts &n = r.stats.exact.emplace(exact_counts(mesh, build));
   n.fallback_arcs_contracted = contracted;
-  n.unresolved_interior_zeros = totals.unresolved_zeros;
   if (opt.cut) { // (compute_tree labels the result a Reeb graph, cut or not)
     r.loops = graph_loops(ct);
     r.stats.seam_edges = static_cast<int64_t>(opt.cut->seams.size());
     r.stats.seam_paths_nonmonotone = glued.nonmonotone_paths;
   }
-  // The cell phase's two passes: their shares of its wall time are their shares of the threads'
-  // time in them (on one thread, their own times).
-  const double passes = totals.critical_seconds + totals.connection_seconds;
-  const double critical_share = passes > 0 ? totals.critical_seconds / passes : 0.5;
-  time.interior_critical_points = *time.cells * critical_share;
-  time.connections = *time.cells * (1 - critical_share);
+  split_cell_time(build.totals, time);
   r.stats.time = time;
   return r;
 }

@@ -9,6 +9,11 @@
 
 namespace hoct {
 
+// The graph's edges as the sweeps take them (without arc geometry the edge chains are walked on
+// the mesh's edges themselves).
+SweepEdges exact_sweep_edges(const Mesh &mesh, const EdgeNodes &edge_nodes, const ExactGraph &graph,
+                             const ExactTreeOptions &options);
+
 ContourTree sweep_exact_graph(const Mesh &mesh, const EdgeNodes &edge_nodes,
                               const ExactGraph &graph, const ExactTreeOptions &options,
                               SweepTimings &timings, std::span<const uint8_t> keep = {});

@@ -1,5 +1,7 @@
 #include "mesh/field.hpp"
 
+#include "mesh/mesh.hpp"
+
 #include "poly/lagrange_to_bernstein.hpp"
 #include "poly/lattice.hpp"
 #include "util/parallel_for.hpp"
@@ -62,11 +64,15 @@ double Field::value(int64_t c, double u, double v) const {
   return reference_ + cell_polynomial(c)(u, v);
 }
 
-Field Field::build(const MeshInput &in, const Topology &topo, ProblemLog &problems, int threads) {
+Field Field::build(const MeshInput &in, const Topology &topo, ProblemLog &problems, int threads,
+                   const MeshScales *whole) {
   Field f;
   const int64_t nc = topo.num_cells(), ne = topo.num_edges();
   f.input_degree_.assign(in.cell_degree.begin(), in.cell_degree.end());
-  if (!in.values.empty()) {
+  if (whole && !whole->empty()) {
+    f.min_value_ = whole->min_value;
+    f.max_value_ = whole->max_value;
+  } else if (!in.values.empty()) {
     auto [lo, hi] = std::minmax_element(in.values.begin(), in.values.end());
     f.min_value_ = *lo;
     f.max_value_ = *hi;
@@ -76,6 +82,8 @@ Field Field::build(const MeshInput &in, const Topology &topo, ProblemLog &proble
   int max_input_degree = 1;
   for (const uint8_t d : f.input_degree_)
     max_input_degree = std::max(max_input_degree, static_cast<int>(d));
+  if (whole)
+    max_input_degree = std::max(max_input_degree, whole->max_degree);
   f.precision_ = data_precision(f.min_value_, f.max_value_,
                                 std::max(2.0, lagrange_to_bernstein_norm(max_input_degree)),
                                 in.value_precision);
@@ -196,6 +204,8 @@ Field Field::build(const MeshInput &in, const Topology &topo, ProblemLog &proble
         }
       },
       threads);
+  if (whole) // the whole mesh's highest degree (its fallback refinements' size)
+    f.max_degree_ = std::max(f.max_degree_, whole->max_degree);
   return f;
 }
 

@@ -42,8 +42,10 @@ public:
   // Builds the field from the Lagrange node values of `input`; records discontinuities across
   // edges in `problems`.
   // `threads`: the per-cell conversion runs in parallel (the result does not depend on it).
+  // `whole`: the range and degree of the whole mesh this is a piece of (mesh/mesh.hpp), for its
+  // reference, precision and tolerances.
   static Field build(const MeshInput &input, const Topology &topology, ProblemLog &problems,
-                     int threads = 1);
+                     int threads = 1, const struct MeshScales *whole = nullptr);
 
   // Builds the field from one polynomial per cell (the thesis' general case: e.g. fitted to
   // arbitrary samples with bernstein_from_samples). Each edge's polynomial is taken from the

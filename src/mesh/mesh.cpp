@@ -98,6 +98,23 @@ Mesh build(const MeshInput &original, MeshInput *consumed, const MeshBuildOption
     step_done(times.cell_split);
   }
   const MeshInput &input = *working;
+  // A piece of a larger mesh: the whole mesh's scales (every piece gets here, broken or not).
+  std::optional<MeshScales> whole;
+  if (options.whole_scales) {
+    MeshScales own;
+    if (structural_ok) {
+      if (!input.values.empty()) {
+        auto [lo, hi] = std::minmax_element(input.values.begin(), input.values.end());
+        own.min_value = *lo;
+        own.max_value = *hi;
+      }
+      for (const uint8_t d : input.cell_degree)
+        own.max_degree = std::max(own.max_degree, static_cast<int>(d));
+      if (!input.points.empty())
+        own.box = bounding_box(input.points, options.threads);
+    }
+    whole = options.whole_scales(own);
+  }
   // What the build finds in a split mesh names its triangles: kept apart, then renamed.
   ProblemLog split_problems;
   ProblemLog &problems = m.origins.identity() ? m.problems : split_problems;
@@ -105,14 +122,15 @@ Mesh build(const MeshInput &original, MeshInput *consumed, const MeshBuildOption
     m.topology = Topology::build(input, problems, options.threads);
     step_done(times.topology);
     // The points' bounding box, once for both (a pass over every point).
-    const std::array<Vec3, 2> box = bounding_box(input.points, options.threads);
+    const std::array<Vec3, 2> box =
+        whole ? whole->box : bounding_box(input.points, options.threads);
     check_duplicate_vertices(input, m.topology, problems, options.threads, &box);
     step_done(times.duplicate_vertices);
     m.geometry = Geometry::build(input, options.threads, &box);
     if (consumed)
       PooledVector<Vec3>().swap(consumed->points);
     step_done(times.geometry);
-    m.field = Field::build(input, m.topology, problems, options.threads);
+    m.field = Field::build(input, m.topology, problems, options.threads, whole ? &*whole : nullptr);
     step_done(times.field);
     check_geometry(m.geometry, m.topology, problems, options.threads);
     check_edge_geometry(m.geometry, m.topology, problems, options.threads);
@@ -151,6 +169,16 @@ std::string Mesh::describe_input_cells() const {
            ": " + std::to_string(n);
   }
   return out;
+}
+
+void MeshScales::include(const MeshScales &o) {
+  min_value = std::min(min_value, o.min_value);
+  max_value = std::max(max_value, o.max_value);
+  max_degree = std::max(max_degree, o.max_degree);
+  for (int k = 0; k < 3; ++k) {
+    box[0][k] = std::min(box[0][k], o.box[0][k]);
+    box[1][k] = std::max(box[1][k], o.box[1][k]);
+  }
 }
 
 Mesh build_mesh(const MeshInput &input, const MeshBuildOptions &options) {

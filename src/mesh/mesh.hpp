@@ -2,6 +2,8 @@
 // built from a MeshInput, with every problem found recorded.
 #pragma once
 
+#include <functional>
+#include <limits>
 #include <map>
 #include <string>
 #include <utility>
@@ -60,12 +62,33 @@ struct Mesh {
   MeshBuildTimes build_times;
 };
 
+// The scales a piece of a partitioned mesh takes from the whole mesh (mesh/mesh_partition): the
+// field's range and degree (its reference value, precision and relative tolerances) and the
+// points' bounding box (the geometry's tolerances). With them each piece computes, on its cells,
+// exactly what the whole mesh computes there.
+struct MeshScales {
+  double min_value = std::numeric_limits<double>::infinity();
+  double max_value = -std::numeric_limits<double>::infinity();
+  int max_degree = 0; // of the Lagrange triangles the field is built on (after the split)
+  std::array<Vec3, 2> box{
+      Vec3{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
+           std::numeric_limits<double>::infinity()},
+      Vec3{-std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity(),
+           -std::numeric_limits<double>::infinity()}};
+  bool empty() const { return !(min_value <= max_value); }
+  void include(const MeshScales &other);
+};
+
 struct MeshBuildOptions {
   // Throw hoct::Error listing the problems if any error-level problem is found. With false, the
   // mesh is returned with its problems recorded (for `hoct info`), as complete as possible.
   bool throw_on_error = true;
   // Threads for the per-cell work (Lagrange -> Bernstein conversion); same result for any.
   int threads = 1;
+  // A piece of a larger mesh: called once by every build (even one that fails) with the piece's
+  // own scales (empty if its input is broken), it returns the whole mesh's, which the field and
+  // the geometry then use (a collective step of a distributed build).
+  std::function<MeshScales(const MeshScales &)> whole_scales = {};
 };
 
 Mesh build_mesh(const MeshInput &input, const MeshBuildOptions &options = {});

@@ -207,24 +207,21 @@ std::size_t chain_pieces(const EdgeChains &c) {
                         : c.ends.size() + static_cast<std::size_t>(c.offset.back() - c.offset[0]);
 }
 
+// The join and split trees in rank space of the nodes in `order` (ascending).
+template <class I> struct RankTrees {
+  RankTree<I> join, split; // split in mirrored ranks n - 1 - r
+};
 template <class I>
-ContourTree sweep_ranked(std::span<const double> values, const SweepEdges &edges, bool augmented,
-                         int threads, SweepTimings *timings, std::span<const uint8_t> keep) {
-  const auto t0 = clock_type::now();
-  const int64_t n = static_cast<int64_t>(values.size());
-  UninitializedVector<int64_t> order;
-  order.resize(static_cast<std::size_t>(n));
-  ascending_order(values, order, threads);
+RankTrees<I> sweep_both(std::span<const int64_t> order, const SweepEdges &edges, int threads) {
+  const int64_t n = static_cast<int64_t>(order.size());
   UninitializedVector<I> rank;
   rank.resize(static_cast<std::size_t>(n));
   parallel_for(n, threads_for(n, threads, int64_t{1} << 16), [&](int64_t begin, int64_t end, int) {
     for (int64_t r = begin; r < end; ++r)
       rank[order[r]] = static_cast<I>(r);
   });
-  const auto t1 = clock_type::now();
-  // The split sweep runs upwards over mirrored ranks n - 1 - r.
   const I last = static_cast<I>(n - 1);
-  RankTree<I> join, split;
+  RankTrees<I> t;
   const int sweep_threads = std::min(threads, 2);
   const std::size_t max_edges = edges.common.size() + chain_pieces(edges.chains) +
                                 std::max(edges.join_only.size(), edges.split_only.size());
@@ -233,17 +230,70 @@ ContourTree sweep_ranked(std::span<const double> values, const SweepEdges &edges
     s.reserve(n, max_edges);
     for (int64_t k = begin; k < end; ++k)
       if (k == 0)
-        join = sweep_up<I>(
+        t.join = sweep_up<I>(
             n, {edges.common, edges.join_only}, edges.chains, [&](int64_t v) { return rank[v]; },
             s);
       else
-        split = sweep_up<I>(
+        t.split = sweep_up<I>(
             n, {edges.common, edges.split_only}, edges.chains,
             [&](int64_t v) { return static_cast<I>(last - rank[v]); }, s);
     if (s.bytes() > kKeptScratchBytes)
       s = {};
   });
-  rank = {};
+  return t;
+}
+
+template <class I>
+KeptMergeTrees kept_ranked(std::span<const int64_t> order, const SweepEdges &edges,
+                           std::span<const uint8_t> keep, int threads) {
+  const int64_t n = static_cast<int64_t>(order.size());
+  RankTrees<I> t = sweep_both<I>(order, edges, threads);
+  const RankTree<I> &join = t.join, &split = t.split;
+  auto split_parent = [&](int64_t r) -> int64_t {
+    const I p = split.parent[n - 1 - r];
+    return p < 0 ? -1 : n - 1 - p;
+  };
+  KeptMergeTrees out;
+  UninitializedVector<I> index, nearest;
+  index.resize(static_cast<std::size_t>(n));
+  nearest.resize(static_cast<std::size_t>(n));
+  for (int64_t r = 0; r < n; ++r) {
+    const bool regular = join.children[r] == 1 && split.children[n - 1 - r] == 1 && !keep[order[r]];
+    index[r] = regular ? I{-1} : static_cast<I>(out.nodes.size());
+    if (!regular)
+      out.nodes.push_back(order[r]);
+  }
+  const std::size_t k = out.nodes.size();
+  out.join_parent.resize(k);
+  out.split_parent.resize(k);
+  for (int64_t r = n - 1; r >= 0; --r) {
+    const I p = join.parent[r];
+    const I near_p = p < 0 ? I{-1} : nearest[p];
+    nearest[r] = index[r] >= 0 ? index[r] : near_p;
+    if (index[r] >= 0)
+      out.join_parent[index[r]] = near_p;
+  }
+  for (int64_t r = 0; r < n; ++r) {
+    const int64_t p = split_parent(r);
+    const I near_p = p < 0 ? I{-1} : nearest[p];
+    nearest[r] = index[r] >= 0 ? index[r] : near_p;
+    if (index[r] >= 0)
+      out.split_parent[index[r]] = near_p;
+  }
+  return out;
+}
+
+template <class I>
+ContourTree sweep_ranked(std::span<const double> values, const SweepEdges &edges, bool augmented,
+                         int threads, SweepTimings *timings, std::span<const uint8_t> keep) {
+  const auto t0 = clock_type::now();
+  const int64_t n = static_cast<int64_t>(values.size());
+  UninitializedVector<int64_t> order;
+  order.resize(static_cast<std::size_t>(n));
+  ascending_order(values, order, threads);
+  const auto t1 = clock_type::now();
+  RankTrees<I> trees = sweep_both<I>(order, edges, threads);
+  const RankTree<I> &join = trees.join, &split = trees.split;
   const auto t2 = clock_type::now();
   // Both trees in ascending ranks: join parents above, split parents below.
   auto split_parent = [&](int64_t r) -> int64_t {
@@ -333,6 +383,30 @@ ContourTree sweep_contour_tree(std::span<const double> values, const SweepEdges 
   if (n < (int64_t{1} << 31) - 1 && m < (std::size_t{1} << 31) - 1)
     return sweep_ranked<int32_t>(values, edges, augmented, threads, timings, keep);
   return sweep_ranked<int64_t>(values, edges, augmented, threads, timings, keep);
+}
+
+KeptMergeTrees sweep_merge_trees(std::span<const double> values, const SweepEdges &edges,
+                                 std::span<const uint8_t> keep, int threads,
+                                 std::span<const int64_t> order) {
+  const PageReuseScope reuse_pages;
+  const int64_t n = static_cast<int64_t>(values.size());
+  for (auto list : {edges.common, edges.join_only, edges.split_only})
+    check_edges(list, n);
+  check_chains(edges.chains, n);
+  if (static_cast<int64_t>(keep.size()) != n)
+    throw std::invalid_argument("sweep_merge_trees: one keep flag per node needed");
+  if (!order.empty() && static_cast<int64_t>(order.size()) != n)
+    throw std::invalid_argument("sweep_merge_trees: the order must list every node");
+  std::vector<int64_t> own;
+  if (order.empty()) {
+    own = ascending_order(values, threads);
+    order = own;
+  }
+  const std::size_t m = edges.common.size() + chain_pieces(edges.chains) +
+                        std::max(edges.join_only.size(), edges.split_only.size());
+  if (n < (int64_t{1} << 31) - 1 && m < (std::size_t{1} << 31) - 1)
+    return kept_ranked<int32_t>(order, edges, keep, threads);
+  return kept_ranked<int64_t>(order, edges, keep, threads);
 }
 
 ContourTree sweep_contour_tree_wide(std::span<const double> values, const SweepEdges &edges,

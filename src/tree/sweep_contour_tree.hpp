@@ -46,6 +46,23 @@ struct SweepTimings {
 ContourTree sweep_contour_tree(std::span<const double> values, const SweepEdges &edges,
                                bool augmented, int threads = 1, SweepTimings *timings = nullptr,
                                std::span<const uint8_t> keep = {});
+// The join and the split tree of the same graph restricted to a set of nodes: the graph's own
+// critical nodes (minima, maxima, join and split saddles: not exactly one child in each tree)
+// and those with keep[v] != 0. Two such restrictions of graphs sharing the kept nodes they
+// have in common, put together as one graph's join and split edges, have the join and split
+// trees of the union of the graphs restricted to those nodes (sublevel and superlevel
+// connectivity between kept nodes is preserved): the pieces of a partitioned mesh are merged
+// this way (exact/piece_trees). `order`, if given, is the nodes in ascending total order
+// (otherwise value, then id).
+struct KeptMergeTrees {
+  std::vector<int64_t> nodes;        // the kept nodes, in ascending order
+  std::vector<int64_t> join_parent;  // per kept node, the index of its join-tree parent, or -1
+  std::vector<int64_t> split_parent; // the same in the split tree (parents lie below)
+};
+KeptMergeTrees sweep_merge_trees(std::span<const double> values, const SweepEdges &edges,
+                                 std::span<const uint8_t> keep, int threads = 1,
+                                 std::span<const int64_t> order = {});
+
 // The same with 64-bit rank indices whatever the size (sweep_contour_tree uses them only for
 // more than 2^31 nodes or edges): lets the tests run that path on small graphs.
 ContourTree sweep_contour_tree_wide(std::span<const double> values, const SweepEdges &edges,

