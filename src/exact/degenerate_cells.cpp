@@ -25,8 +25,23 @@ DegenerateCells refine_degenerate_cells(const Mesh &mesh, const EdgeNodes &en, i
           std::max<std::size_t>(static_cast<std::size_t>(id) + 1, node_bound.size() * 3 / 2), -1.0);
     node_bound[id] = std::max(node_bound[id], error);
   };
+  // Pass 1: each cell's refinement, its sub-vertices' ids where they exist already (corners,
+  // edge nodes), its lattice points on edges collected. Then the lattice nodes get their ids in
+  // the order of their edges and steps (the whole mesh's edge order: a piece of the mesh numbers
+  // them alike, exact/piece_trees), each placed in the first cell that has it; pass 2 adds the
+  // cells' interior sub-vertices and sub-edges.
+  struct Prepared {
+    int64_t cell;
+    CellRefinement refinement;
+    std::vector<int64_t> ids; // -1: interior sub-vertex, -2 - k: lattice key k (below)
+  };
+  std::vector<Prepared> prepared;
+  struct LatticePlace {
+    int64_t cell;
+    double u, v;
+  };
+  std::map<std::pair<int64_t, int>, LatticePlace> lattice_place;
   std::array<std::vector<double>, 3> extra;
-  std::vector<int64_t> ids;
   for (const int64_t c : g.fallback_cells) {
     for (int b = 0; b < kFallbackReasons; ++b)
       if (g.fallback[c] & (1u << b))
@@ -47,7 +62,6 @@ DegenerateCells refine_degenerate_cells(const Mesh &mesh, const EdgeNodes &en, i
       }
       continue;
     }
-    const BernsteinTriangle poly = field.cell_polynomial(c);
     // Edge nodes of each local edge (local parameters, ascending), minus lattice coincidences.
     std::array<std::vector<int64_t>, 3> extra_ids;
     std::array<std::map<int, int64_t>, 3> lattice_hits; // local step -> edge node id
@@ -68,35 +82,55 @@ DegenerateCells refine_degenerate_cells(const Mesh &mesh, const EdgeNodes &en, i
         extra_ids[k].push_back(g.edge_base + gi);
       }
     }
-    const CellRefinement cr = refine_cell(K, extra);
-    ids.resize(cr.vertices.size());
+    Prepared p{c, refine_cell(K, extra), {}};
+    const CellRefinement &cr = p.refinement;
+    p.ids.resize(cr.vertices.size());
     for (std::size_t i = 0; i < cr.vertices.size(); ++i) {
       const CellSubVertex &sv = cr.vertices[i];
       switch (sv.kind) {
       case CellSubVertex::Kind::Corner:
-        ids[i] = topo.cell_vertices(c)[sv.corner];
+        p.ids[i] = topo.cell_vertices(c)[sv.corner];
         break;
       case CellSubVertex::Kind::EdgeExtra:
-        ids[i] = extra_ids[sv.edge][sv.index];
+        p.ids[i] = extra_ids[sv.edge][sv.index];
         break;
       case CellSubVertex::Kind::EdgeLattice: {
         auto hit = lattice_hits[sv.edge].find(sv.index);
         if (hit != lattice_hits[sv.edge].end()) {
-          ids[i] = hit->second;
+          p.ids[i] = hit->second;
           break;
         }
         const int64_t e = topo.cell_edge(c, sv.edge);
         const int step = topo.edge_reversed(c, sv.edge) ? K - sv.index : sv.index;
-        auto [it, fresh] = lattice_node.try_emplace({e, step}, -1);
-        if (fresh)
-          it->second = g.add_node(field.edge_polynomial(e)(static_cast<double>(step) / K), c,
-                                  {sv.u, sv.v}, NodeLocation::Edge);
-        ids[i] = it->second;
+        lattice_place.try_emplace({e, step}, LatticePlace{c, sv.u, sv.v});
+        p.ids[i] = -2; // resolved below
         break;
       }
       case CellSubVertex::Kind::Interior:
-        ids[i] = g.add_node(poly(sv.u, sv.v), c, {sv.u, sv.v}, NodeLocation::Interior);
+        p.ids[i] = -1;
         break;
+      }
+    }
+    prepared.push_back(std::move(p));
+  }
+  for (const auto &[key, at] : lattice_place)
+    lattice_node[key] =
+        g.add_node(field.edge_polynomial(key.first)(static_cast<double>(key.second) / K), at.cell,
+                   {at.u, at.v}, NodeLocation::Edge);
+
+  for (Prepared &p : prepared) {
+    const int64_t c = p.cell;
+    const CellRefinement &cr = p.refinement;
+    std::vector<int64_t> &ids = p.ids;
+    const BernsteinTriangle poly = field.cell_polynomial(c);
+    for (std::size_t i = 0; i < cr.vertices.size(); ++i) {
+      const CellSubVertex &sv = cr.vertices[i];
+      if (ids[i] == -1) {
+        ids[i] = g.add_node(poly(sv.u, sv.v), c, {sv.u, sv.v}, NodeLocation::Interior);
+      } else if (ids[i] == -2) {
+        const int64_t e = topo.cell_edge(c, sv.edge);
+        const int step = topo.edge_reversed(c, sv.edge) ? K - sv.index : sv.index;
+        ids[i] = lattice_node.at({e, step});
       }
     }
     for (int64_t id : ids)
@@ -128,6 +162,7 @@ DegenerateCells refine_degenerate_cells(const Mesh &mesh, const EdgeNodes &en, i
   for (std::size_t id = 0; id < node_bound.size(); ++id)
     if (node_bound[id] >= 0)
       node_error.emplace_back(static_cast<int64_t>(id), node_bound[id]);
+  out.node_bound = node_error;
   if (out.max_error > 0) {
     std::vector<uint8_t> wanted(static_cast<std::size_t>(topo.num_vertices()), 0);
     for (const auto &[id, error] : node_error)

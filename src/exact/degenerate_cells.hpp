@@ -24,6 +24,9 @@ struct DegenerateCells {
   // (0 for a constant cell's), sorted by node id, except the certain extrema
   // (cell/strict_extrema.hpp); and the largest of all.
   std::vector<std::pair<int64_t, double>> node_error;
+  // The same before the certain extrema are taken out (their certainty on a piece of a mesh
+  // depends on the cells beyond it: exact/piece_trees).
+  std::vector<std::pair<int64_t, double>> node_bound;
   double max_error = 0;
   // The lattice nodes the refinements put on mesh edges: (edge, parameter from its lower vertex,
   // node id), sorted.

@@ -1,5 +1,6 @@
 #include "exact/piece_trees.hpp"
 
+#include "cell/strict_extrema.hpp"
 #include "exact/exact_graph_build.hpp"
 #include "exact/graph_sweeps.hpp"
 #include "tree/node_order.hpp"
@@ -36,6 +37,8 @@ public:
     int64_t last_cell = -1, next = 0;
     bool last_fallback = false;
     for (std::size_t i = 0; i < g.tail_source.size(); ++i) {
+      if (lattice_.count(g.tail_base + static_cast<int64_t>(i)))
+        continue;
       const NodeSource &s = g.tail_source[i];
       if (s.cell != last_cell || s.fallback != last_fallback)
         next = 0;
@@ -57,14 +60,11 @@ public:
       const auto &ev = topo.edge_vertices(e);
       return {NodeKey::EdgeNode, point(ev[0]), point(ev[1]), i - off[e]};
     }
-    // A lattice node on an edge another piece may hold is named by the edge (both pieces make
-    // it); the other fallback nodes, as in the whole mesh's graph, by the cell that made them
-    // and their rank among its nodes.
+    // Fallback lattice nodes on edges by their edge and step (refine_degenerate_cells numbers
+    // them in that order), the other fallback nodes by their cell and rank among its nodes.
     if (auto it = lattice_.find(id); it != lattice_.end()) {
       const auto &ev = topo.edge_vertices(it->second.first);
-      const NodeKey k{NodeKey::EdgeLattice, point(ev[0]), point(ev[1]), it->second.second};
-      if (!within(span(k), place_.piece, place_.piece))
-        return k;
+      return {NodeKey::EdgeLattice, point(ev[0]), point(ev[1]), it->second.second};
     }
     const std::size_t t = static_cast<std::size_t>(id - g.tail_base);
     const NodeSource &s = g.tail_source[t];
@@ -131,15 +131,68 @@ PieceTrees piece_trees(const Mesh &mesh, const PiecePlace &place, const ExactTre
       keep[id] = !within(keys.span(keys.key(id)), place.piece, place.piece);
   for (const auto &[e, t, id] : b.degenerate.lattice_on_edge)
     keep[id] = eo.augmented || !within(keys.span(keys.key(id)), place.piece, place.piece);
-  const KeptMergeTrees kt = sweep_merge_trees(
-      g.values, exact_sweep_edges(mesh, b.edge_nodes, g, eo), keep, threads, order);
+  // The chains of edges other pieces may hold wait for the group that has all their cells
+  // (SharedChain): left out of this sweep, listed ones (with lattice nodes) too.
+  const Topology &topo = mesh.topology;
+  const EdgeNodes &en = b.edge_nodes;
+  auto edge_span = [&](int64_t e) {
+    const auto &ev = topo.edge_vertices(e);
+    const NodeKey k{NodeKey::EdgeNode, place.global_point[topo.vertex_point(ev[0])],
+                    place.global_point[topo.vertex_point(ev[1])], 0};
+    return keys.span(k);
+  };
+  std::vector<uint8_t> shared_edge(static_cast<std::size_t>(topo.num_edges()), 0);
+  for (int64_t e = 0; e < topo.num_edges(); ++e)
+    shared_edge[e] = !within(edge_span(e), place.piece, place.piece);
+  const std::vector<int64_t> &listed = g.listed_chains;
+  std::vector<int64_t> skip;
+  for (std::size_t e = 0, l = 0; e < shared_edge.size(); ++e) {
+    while (l < listed.size() && listed[l] < static_cast<int64_t>(e))
+      ++l;
+    if (shared_edge[e] || (l < listed.size() && listed[l] == static_cast<int64_t>(e)))
+      skip.push_back(static_cast<int64_t>(e));
+  }
+  // The listed chains' pieces close common_edges (add_edge_chains): those of shared edges out.
+  const auto &lattice = b.degenerate.lattice_on_edge;
+  std::vector<GraphEdge> common;
+  {
+    std::size_t listed_pieces = lattice.size();
+    for (const int64_t e : listed)
+      listed_pieces += static_cast<std::size_t>(1 + en.count(e));
+    const std::size_t prefix = g.common_edges.size() - listed_pieces;
+    common.assign(g.common_edges.begin(), g.common_edges.begin() + prefix);
+    std::size_t at = prefix, l = 0;
+    for (const int64_t e : listed) {
+      std::size_t n = static_cast<std::size_t>(1 + en.count(e));
+      for (; l < lattice.size() && std::get<0>(lattice[l]) <= e; ++l)
+        n += std::get<0>(lattice[l]) == e;
+      if (!shared_edge[e])
+        common.insert(common.end(), g.common_edges.begin() + at, g.common_edges.begin() + at + n);
+      at += n;
+    }
+  }
+  SweepEdges edges = exact_sweep_edges(mesh, en, g, eo);
+  edges.common = common;
+  edges.chains.skip = skip;
+  const KeptMergeTrees kt = sweep_merge_trees(g.values, edges, keep, threads, order);
 
   PieceTrees out;
   out.first_piece = out.last_piece = place.piece;
   out.join_parent = kt.join_parent;
   out.split_parent = kt.split_parent;
   out.nodes.resize(kt.nodes.size());
-  const auto &errors = b.degenerate.node_error;
+  // Vertices and edge nodes other pieces may hold: their slack before the certain extrema are
+  // taken out, and what this piece's edges and cells say of their certainty.
+  std::vector<uint8_t> wanted(static_cast<std::size_t>(mesh.topology.num_vertices()), 0);
+  for (const int64_t id : kt.nodes)
+    if (id < g.edge_base && keep[id])
+      wanted[id] = 1;
+  const std::vector<uint8_t> strict_vertex =
+      strict_vertex_extrema(mesh.topology, mesh.field, wanted);
+  auto slack_in = [](const std::vector<std::pair<int64_t, double>> &errors, int64_t id) {
+    auto it = std::lower_bound(errors.begin(), errors.end(), std::pair<int64_t, double>{id, -1.0});
+    return it != errors.end() && it->first == id ? it->second : -1.0;
+  };
   for (std::size_t i = 0; i < kt.nodes.size(); ++i) {
     const int64_t id = kt.nodes[i];
     PieceNode &p = out.nodes[i];
@@ -155,10 +208,55 @@ PieceTrees piece_trees(const Mesh &mesh, const PiecePlace &place, const ExactTre
     p.uv = c.uv;
     p.location = s.location;
     p.fallback = s.fallback;
-    auto it = std::lower_bound(errors.begin(), errors.end(), std::pair<int64_t, double>{id, -1.0});
-    if (it != errors.end() && it->first == id)
-      p.slack = it->second;
+    p.shared = id < g.tail_base && !within(p.span, place.piece, place.piece);
+    if (!p.shared) {
+      p.slack = slack_in(b.degenerate.node_error, id);
+      continue;
+    }
+    p.slack = slack_in(b.degenerate.node_bound, id);
+    if (id < g.edge_base) {
+      p.strict = strict_vertex[id];
+    } else {
+      const int64_t k = id - g.edge_base;
+      const auto &off = b.edge_nodes.offset;
+      const int64_t e = std::upper_bound(off.begin(), off.end(), k) - off.begin() - 1;
+      if (strict_edge_extremum(mesh.topology, mesh.field, b.edge_nodes, e, k))
+        p.strict = b.edge_nodes.nodes[k].second > 0 ? 1 : 2;
+    }
   }
+  // The shared edges' chains, by the kept nodes' indices.
+  std::unordered_map<int64_t, int64_t> index_of;
+  for (std::size_t i = 0; i < kt.nodes.size(); ++i)
+    index_of[kt.nodes[i]] = static_cast<int64_t>(i);
+  auto kept = [&](int64_t id) {
+    auto it = index_of.find(id);
+    if (it == index_of.end())
+      throw std::logic_error("piece_trees: a node of a shared edge was not kept");
+    return it->second;
+  };
+  std::size_t l = 0;
+  for (int64_t e = 0; e < topo.num_edges(); ++e) {
+    while (l < lattice.size() && std::get<0>(lattice[l]) < e)
+      ++l;
+    if (!shared_edge[e])
+      continue;
+    SharedChain c;
+    const auto &ev = topo.edge_vertices(e);
+    c.lo = place.global_point[topo.vertex_point(ev[0])];
+    c.hi = place.global_point[topo.vertex_point(ev[1])];
+    c.span = edge_span(e);
+    c.nodes.push_back({0.0, kept(ev[0])});
+    for (int64_t i = en.offset[e]; i < en.offset[e + 1]; ++i)
+      c.nodes.push_back({en.nodes[i].t, kept(g.edge_base + i)});
+    c.nodes.push_back({1.0, kept(ev[1])});
+    for (; l < lattice.size() && std::get<0>(lattice[l]) == e; ++l)
+      c.nodes.push_back({std::get<1>(lattice[l]), kept(std::get<2>(lattice[l]))});
+    std::sort(c.nodes.begin(), c.nodes.end());
+    out.chains.push_back(std::move(c));
+  }
+  std::sort(out.chains.begin(), out.chains.end(), [](const SharedChain &x, const SharedChain &y) {
+    return std::pair(x.lo, x.hi) < std::pair(y.lo, y.hi);
+  });
   out.counts = exact_counts(mesh, b);
   split_cell_time(b.totals, time);
   return out;
@@ -193,6 +291,7 @@ PieceTrees merge_piece_trees(const PieceTrees &a, const PieceTrees &b, bool augm
       PieceNode m = x.order_cell <= y.order_cell ? x : y;
       m.fallback = x.fallback || y.fallback;
       m.slack = std::max(x.slack, y.slack);
+      m.strict = x.strict & y.strict;
       from_a[i++] = from_b[j++] = static_cast<int64_t>(nodes.size());
       nodes.push_back(m);
       ++shared;
@@ -222,10 +321,60 @@ PieceTrees merge_piece_trees(const PieceTrees &a, const PieceTrees &b, bool augm
     keep[k] = augmented || !within(nodes[k].span, out.first_piece, out.last_piece);
     order[k] = k;
   }
+  // The shared chains of both, an edge's two joined into one: swept once the group has all the
+  // edge's cells, else passed on.
+  std::vector<SharedChain> chains;
+  {
+    auto mapped = [](const SharedChain &c, const std::vector<int64_t> &map) {
+      SharedChain m = c;
+      for (auto &[t, i] : m.nodes)
+        i = map[static_cast<std::size_t>(i)];
+      return m;
+    };
+    auto key = [](const SharedChain &c) { return std::pair(c.lo, c.hi); };
+    std::size_t i = 0, j = 0;
+    while (i < a.chains.size() || j < b.chains.size()) {
+      if (j == b.chains.size() || (i < a.chains.size() && key(a.chains[i]) < key(b.chains[j]))) {
+        chains.push_back(mapped(a.chains[i++], from_a));
+      } else if (i == a.chains.size() || key(b.chains[j]) < key(a.chains[i])) {
+        chains.push_back(mapped(b.chains[j++], from_b));
+      } else {
+        SharedChain m = mapped(a.chains[i++], from_a);
+        const SharedChain other = mapped(b.chains[j++], from_b);
+        m.nodes.insert(m.nodes.end(), other.nodes.begin(), other.nodes.end());
+        std::sort(m.nodes.begin(), m.nodes.end());
+        m.nodes.erase(
+            std::unique(m.nodes.begin(), m.nodes.end(),
+                        [](const auto &x, const auto &y) { return x.second == y.second; }),
+            m.nodes.end());
+        chains.push_back(std::move(m));
+      }
+    }
+  }
+  std::vector<SharedChain> waiting;
+  for (SharedChain &c : chains) {
+    if (within(c.span, out.first_piece, out.last_piece)) {
+      for (std::size_t k = 0; k + 1 < c.nodes.size(); ++k) {
+        join.push_back({c.nodes[k].second, c.nodes[k + 1].second});
+        split.push_back({c.nodes[k].second, c.nodes[k + 1].second});
+      }
+    } else {
+      for (const auto &[t, k] : c.nodes)
+        keep[static_cast<std::size_t>(k)] = 1;
+      waiting.push_back(std::move(c));
+    }
+  }
   const KeptMergeTrees kt = sweep_merge_trees(values, {{}, join, split}, keep, threads, order);
   std::vector<PieceNode> kept(kt.nodes.size());
-  for (std::size_t k = 0; k < kt.nodes.size(); ++k)
+  std::vector<int64_t> new_index(static_cast<std::size_t>(n), -1);
+  for (std::size_t k = 0; k < kt.nodes.size(); ++k) {
     kept[k] = nodes[kt.nodes[k]];
+    new_index[kt.nodes[k]] = static_cast<int64_t>(k);
+  }
+  for (SharedChain &c : waiting)
+    for (auto &[t, k] : c.nodes)
+      k = new_index[static_cast<std::size_t>(k)];
+  out.chains = std::move(waiting);
   nodes = std::move(kept);
   out.join_parent = kt.join_parent;
   out.split_parent = kt.split_parent;
@@ -249,6 +398,8 @@ PieceTrees merge_piece_trees(const PieceTrees &a, const PieceTrees &b, bool augm
 }
 
 TreeResult tree_of_pieces(const PieceTrees &all, bool augmented, double reference) {
+  if (!all.chains.empty())
+    throw std::logic_error("tree_of_pieces: edges of cells outside the pieces");
   const int64_t n = static_cast<int64_t>(all.nodes.size());
   std::vector<double> values(static_cast<std::size_t>(n));
   for (int64_t k = 0; k < n; ++k)
@@ -264,8 +415,10 @@ TreeResult tree_of_pieces(const PieceTrees &all, bool augmented, double referenc
   int64_t contracted = 0;
   if (!augmented && all.counts.fallback_error > 0) {
     std::vector<double> slack(static_cast<std::size_t>(ct.size()));
-    for (int64_t i = 0; i < ct.size(); ++i)
-      slack[i] = all.nodes[ct.nodes[i]].slack;
+    for (int64_t i = 0; i < ct.size(); ++i) {
+      const PieceNode &p = all.nodes[ct.nodes[i]];
+      slack[i] = p.shared && p.strict ? -1.0 : p.slack; // a certain extremum: no slack
+    }
     StandInContraction c = contract_stand_in_arcs(ct, slack);
     if (c.contracted > 0)
       ct = std::move(c.tree);

@@ -22,9 +22,8 @@
 namespace hoct {
 
 // A graph node's identity in the whole mesh, ordered as the whole mesh's graph orders its ids
-// (vertices, edge nodes, interior nodes, fallback nodes by the cell that made them): equal values
-// are ordered by it, as in the whole mesh, but for the fallback lattice nodes on edges between
-// pieces, named by their edge.
+// (vertices, edge nodes, interior nodes, fallback lattice nodes on edges, the fallback cells'
+// other sub-vertices): equal values are ordered by it.
 struct NodeKey {
   enum Kind : int64_t { Vertex = 0, EdgeNode = 1, Interior = 2, EdgeLattice = 3, SubVertex = 4 };
   int64_t kind = 0;
@@ -43,6 +42,23 @@ struct PieceNode {
   NodeLocation location = NodeLocation::Unknown;
   bool fallback = false;
   double slack = -1; // the fallback stand-in's certified distance there, -1 if none
+  // A vertex or edge node other pieces may hold: whether its edges (cells) in the group all
+  // say it is a strict minimum (bit 0) or maximum (bit 1), cell/strict_extrema; a certain
+  // extremum gets no slack. Its slack then counts the stand-in alone.
+  uint8_t strict = 0;
+  bool shared = false;
+};
+
+// The nodes along a mesh edge other pieces may hold, ascending along it from its lower point:
+// its vertices, edge nodes and the lattice nodes of fallback cells on either side. Its pieces
+// join consecutive nodes in both trees only once every cell of the edge is in the group: a
+// piece without the fallback cell beyond the edge does not know its lattice nodes, and a
+// segment over them would connect what the whole mesh connects only through them (on
+// plateaus, where they tie).
+struct SharedChain {
+  int64_t lo = 0, hi = 0;                        // the edge's points in the whole
+  std::array<int32_t, 2> span{};                 // the pieces that may hold the edge
+  std::vector<std::pair<double, int64_t>> nodes; // (position along the edge, index into nodes)
 };
 
 // The kept join and split trees of a group of consecutive pieces.
@@ -50,6 +66,7 @@ struct PieceTrees {
   int32_t first_piece = 0, last_piece = 0;
   std::vector<PieceNode> nodes;                   // ascending (value, key)
   std::vector<int64_t> join_parent, split_parent; // indices into nodes, -1 at roots
+  std::vector<SharedChain> chains;                // by (lo, hi), not yet in the trees
   ExactCounts counts;                             // over the group's cells and nodes
 };
 
