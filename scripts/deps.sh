@@ -9,7 +9,7 @@ HOCT_PACKAGES=(
   python3-pip python3-venv python3-setuptools python3-wheel time
   # ParaView 5.11 for the plugin and its headless test (python3-paraview replaces python3-vtk9:
   # its vtkmodules serve as the independent VTK reader in the tests).
-  paraview-dev libopenmpi-dev libdouble-conversion-dev liblz4-dev libutfcpp-dev xvfb xauth
+  paraview-dev libopenmpi-dev openmpi-bin libdouble-conversion-dev liblz4-dev libutfcpp-dev xvfb xauth
   # What ParaView's VTK reader modules (legacy .vtk, XDMF, Exodus II) link to, found with them.
   libnetcdf-dev libhdf5-dev libxml2-dev libboost-dev
   # DOLFINx: the tests read the files it writes (.vtu, .pvtu, XDMF), written by it

@@ -10,6 +10,7 @@
 #include "output_paths.hpp"
 #include "pipeline/compute_tree.hpp"
 #include "pl/refinement.hpp"
+#include "tree_mpi.hpp"
 #include "tree_summary.hpp"
 #include "util/error.hpp"
 #include "util/parallel_for.hpp"
@@ -55,6 +56,14 @@ void run_tree(const TreeOptions &o) {
   require_distinct_outputs({{"the input", o.file}},
                            {{"--json", o.json}, {"--vtp", o.vtp}, {"--svg", o.svg}});
   TreeRequest rq = request_of(o);
+  if (under_mpi()) { // mpirun -np N hoct tree ...
+    DistributedTreeRun run{
+        o.file,       o.json,  o.svg,      o.field.selection(), o.merge.tolerance(),
+        o.no_timings, o.quiet, o.branches, !o.vtp.empty()};
+    rq.arcs = ArcGeometry::None;
+    run_tree_mpi(run, rq);
+    return;
+  }
   // Only --linear reads the input's nodes again: elsewhere the mesh holds all the tree needs.
   const LoadedMesh lm = load_mesh(o.file, o.field.selection(), /*strict=*/false,
                                   o.merge.tolerance(), o.threads, /*keep_input=*/o.linear);

@@ -14,10 +14,6 @@ std::string graph_kind(const TreeResult &tree) {
 
 void print_tree_summary(const std::string &file, const Mesh &mesh, const TreeResult &tree,
                         double total_seconds) {
-  const auto counts = tree.type_counts();
-  std::map<std::string, int64_t> loc;
-  for (const auto &n : tree.nodes)
-    ++loc[to_string(n.location)];
   const std::string detail = mesh.field_detail.empty() ? "" : " " + mesh.field_detail;
   const std::string what = graph_kind(tree);
   if (mesh.origins.identity())
@@ -31,6 +27,14 @@ void print_tree_summary(const std::string &file, const Mesh &mesh, const TreeRes
                 static_cast<long long>(mesh.num_input_cells()), mesh.describe_input_cells().c_str(),
                 static_cast<long long>(mesh.topology.num_cells()), mesh.field.max_degree(),
                 tree.method.c_str(), what.c_str());
+  print_tree_body(tree, total_seconds);
+}
+
+void print_tree_body(const TreeResult &tree, double total_seconds) {
+  const auto counts = tree.type_counts();
+  std::map<std::string, int64_t> loc;
+  for (const auto &n : tree.nodes)
+    ++loc[to_string(n.location)];
   std::printf("  nodes: %zu (minima %lld, maxima %lld, saddles %lld", tree.nodes.size(),
               static_cast<long long>(counts[0]), static_cast<long long>(counts[1]),
               static_cast<long long>(counts[2]));

@@ -14,6 +14,9 @@ std::string graph_kind(const TreeResult &tree);
 void print_tree_summary(const std::string &file, const Mesh &mesh, const TreeResult &tree,
                         double total_seconds);
 
+// The summary's lines after the first (nodes, arcs, where, pairs, precision, timings).
+void print_tree_body(const TreeResult &tree, double total_seconds);
+
 // The branch decomposition, one line per branch, indented by depth, children by persistence.
 void print_branches(const TreeResult &tree);
 

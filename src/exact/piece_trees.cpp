@@ -343,10 +343,9 @@ PieceTrees merge_piece_trees(const PieceTrees &a, const PieceTrees &b, bool augm
         const SharedChain other = mapped(b.chains[j++], from_b);
         m.nodes.insert(m.nodes.end(), other.nodes.begin(), other.nodes.end());
         std::sort(m.nodes.begin(), m.nodes.end());
-        m.nodes.erase(
-            std::unique(m.nodes.begin(), m.nodes.end(),
-                        [](const auto &x, const auto &y) { return x.second == y.second; }),
-            m.nodes.end());
+        m.nodes.erase(std::unique(m.nodes.begin(), m.nodes.end(),
+                                  [](const auto &x, const auto &y) { return x.node == y.node; }),
+                      m.nodes.end());
         chains.push_back(std::move(m));
       }
     }
@@ -355,8 +354,8 @@ PieceTrees merge_piece_trees(const PieceTrees &a, const PieceTrees &b, bool augm
   for (SharedChain &c : chains) {
     if (within(c.span, out.first_piece, out.last_piece)) {
       for (std::size_t k = 0; k + 1 < c.nodes.size(); ++k) {
-        join.push_back({c.nodes[k].second, c.nodes[k + 1].second});
-        split.push_back({c.nodes[k].second, c.nodes[k + 1].second});
+        join.push_back({c.nodes[k].node, c.nodes[k + 1].node});
+        split.push_back({c.nodes[k].node, c.nodes[k + 1].node});
       }
     } else {
       for (const auto &[t, k] : c.nodes)

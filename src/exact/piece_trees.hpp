@@ -55,10 +55,15 @@ struct PieceNode {
 // piece without the fallback cell beyond the edge does not know its lattice nodes, and a
 // segment over them would connect what the whole mesh connects only through them (on
 // plateaus, where they tie).
+struct ChainNode {
+  double t = 0;     // position along the edge
+  int64_t node = 0; // index into PieceTrees::nodes
+  auto operator<=>(const ChainNode &) const = default;
+};
 struct SharedChain {
-  int64_t lo = 0, hi = 0;                        // the edge's points in the whole
-  std::array<int32_t, 2> span{};                 // the pieces that may hold the edge
-  std::vector<std::pair<double, int64_t>> nodes; // (position along the edge, index into nodes)
+  int64_t lo = 0, hi = 0;        // the edge's points in the whole
+  std::array<int32_t, 2> span{}; // the pieces that may hold the edge
+  std::vector<ChainNode> nodes;
 };
 
 // The kept join and split trees of a group of consecutive pieces.

@@ -25,10 +25,17 @@ MeshPiece extract_piece(const MeshInput &whole, int64_t begin, int64_t end) {
   in.value_precision = whole.value_precision;
   p.first_cell = begin;
   const int64_t n0 = whole.cell_offsets[begin], n1 = whole.cell_offsets[end];
+  // The points the cells use, numbered in ascending order of the whole's indices (a scan over
+  // the whole's points, not a sort of the cells' nodes).
+  std::vector<int64_t> local(whole.num_points(), -1);
+  for (int64_t k = n0; k < n1; ++k)
+    local[whole.cell_nodes[k]] = 0;
   std::vector<int64_t> &g = p.global_point;
-  g.assign(whole.cell_nodes.begin() + n0, whole.cell_nodes.begin() + n1);
-  std::sort(g.begin(), g.end());
-  g.erase(std::unique(g.begin(), g.end()), g.end());
+  for (std::size_t q = 0; q < local.size(); ++q)
+    if (local[q] == 0) {
+      local[q] = static_cast<int64_t>(g.size());
+      g.push_back(static_cast<int64_t>(q));
+    }
   in.points.resize(g.size());
   in.values.resize(g.size());
   for (std::size_t i = 0; i < g.size(); ++i) {
@@ -43,7 +50,7 @@ MeshPiece extract_piece(const MeshInput &whole, int64_t begin, int64_t end) {
   for (int64_t c = begin; c <= end; ++c)
     in.cell_offsets[c - begin] = whole.cell_offsets[c] - n0;
   for (int64_t k = n0; k < n1; ++k)
-    in.cell_nodes[k - n0] = std::lower_bound(g.begin(), g.end(), whole.cell_nodes[k]) - g.begin();
+    in.cell_nodes[k - n0] = local[whole.cell_nodes[k]];
   return p;
 }
 

@@ -52,6 +52,14 @@ void ProblemLog::append(const ProblemLog &later) {
   }
 }
 
+void ProblemLog::append(Problem kind, const ProblemRecord &l) {
+  auto &k = kinds_[kind];
+  k.severity = l.severity;
+  k.count += l.count;
+  for (std::size_t i = 0; i < l.examples.size() && k.examples.size() < kMaxExamples; ++i)
+    k.examples.push_back(l.examples[i]);
+}
+
 void ProblemLog::rewrite_examples(const std::function<std::string(const std::string &)> &rewrite) {
   for (auto &[kind, k] : kinds_)
     for (std::string &e : k.examples)

@@ -66,6 +66,10 @@ public:
   // Adds everything `later` recorded, as if its add calls had come after this log's: logs kept
   // per block of a parallel loop and appended in block order equal one serial log.
   void append(const ProblemLog &later);
+  // The same for one kind's record (a log sent from another process).
+  void append(Problem kind, const ProblemRecord &record);
+  // Forgets every problem of this kind.
+  void erase(Problem kind) { kinds_.erase(kind); }
   bool has_errors() const;
   bool empty() const { return kinds_.empty(); }
   int64_t count(Problem kind) const;

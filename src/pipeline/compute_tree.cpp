@@ -96,10 +96,26 @@ std::string method_name(const TreeRequest &rq) {
 
 TreeOutcome compute_tree(const Mesh &mesh, const TreeRequest &rq, const MeshInput *input) {
   check_request(rq, input);
-  TreeOutcome out;
-  out.warnings = check_domain(mesh, rq.force);
+  std::vector<std::string> warnings = check_domain(mesh, rq.force);
   const int threads = thread_count(rq.threads);
   TreeResult tree = method_tree(mesh, rq, input, threads);
+  TreeContext context;
+  context.warnings = std::move(warnings);
+  context.fingerprint = mesh.fingerprint;
+  context.input_cells =
+      mesh.origins.identity() ? mesh.topology.num_cells() : mesh.origins.num_input_cells();
+  context.build_times = mesh.build_times;
+  context.cells_split = !mesh.origins.identity();
+  context.precision = mesh.field.precision();
+  if (rq.method != TreeMethod::Linear)
+    context.origins = &mesh.origins;
+  return finish_tree(std::move(tree), rq, context);
+}
+
+TreeOutcome finish_tree(TreeResult tree, const TreeRequest &rq, const TreeContext &context) {
+  TreeOutcome out;
+  out.warnings = context.warnings;
+  const int threads = thread_count(rq.threads);
   Stopwatch clock;
   // Plateaus (equal values, ordered by node id) give arcs of length zero and leaf branches of
   // persistence zero: artefacts of the tie-breaking. Each flat region becomes one node.
@@ -109,17 +125,17 @@ TreeOutcome compute_tree(const Mesh &mesh, const TreeRequest &rq, const MeshInpu
     decompose_branches(tree);
   tree.stats.time.branches = clock.lap();
   tree.forced = out.warnings;
-  tree.input = mesh.fingerprint;
-  tree.stats.input_cells =
-      mesh.origins.identity() ? mesh.topology.num_cells() : mesh.origins.num_input_cells();
+  tree.input = context.fingerprint;
+  tree.stats.input_cells = context.input_cells;
   tree.stats.time.read = rq.read_seconds;
   tree.stats.time.check = rq.build_seconds;
-  tree.stats.time.bernstein = mesh.build_times.field;
-  if (!mesh.origins.identity())
-    tree.stats.time.cell_split = mesh.build_times.cell_split;
-  tree.stats.time.topology = mesh.build_times.topology;
-  tree.stats.time.geometry = mesh.build_times.geometry;
-  tree.stats.time.geometry_checks = mesh.build_times.geometry_checks;
+  const MeshBuildTimes &bt = context.build_times;
+  tree.stats.time.bernstein = bt.field;
+  if (context.cells_split)
+    tree.stats.time.cell_split = bt.cell_split;
+  tree.stats.time.topology = bt.topology;
+  tree.stats.time.geometry = bt.geometry;
+  tree.stats.time.geometry_checks = bt.geometry_checks;
   if (rq.simplify) {
     const double range =
         tree.nodes.empty() ? 0 : tree.nodes.back().value - tree.nodes.front().value;
@@ -128,9 +144,9 @@ TreeOutcome compute_tree(const Mesh &mesh, const TreeRequest &rq, const MeshInpu
     // Its branches: the whole tree's, then simplified and decomposed again.
     out.simplified->stats.time.branches = *tree.stats.time.branches + clock.lap();
     out.simplified->forced = out.warnings;
-    set_precision(*out.simplified, mesh.field.precision());
+    set_precision(*out.simplified, context.precision);
   }
-  set_precision(tree, mesh.field.precision());
+  set_precision(tree, context.precision);
   clock.lap();
   const bool all_paths = rq.arcs == ArcGeometry::AllPaths,
              paths = all_paths || rq.arcs == ArcGeometry::Paths;
@@ -143,10 +159,10 @@ TreeOutcome compute_tree(const Mesh &mesh, const TreeRequest &rq, const MeshInpu
     if (out.simplified)
       out.simplified->stats.time.arc_paths = tree.stats.time.arc_paths;
   }
-  if (rq.method != TreeMethod::Linear) {
-    to_input_cells(tree, mesh.origins);
+  if (context.origins) {
+    to_input_cells(tree, *context.origins);
     if (out.simplified)
-      to_input_cells(*out.simplified, mesh.origins);
+      to_input_cells(*out.simplified, *context.origins);
   }
   out.tree = std::move(tree);
   return out;

@@ -14,6 +14,23 @@ namespace hoct {
 TreeOutcome compute_tree(const Mesh &mesh, const TreeRequest &request,
                          const MeshInput *input = nullptr);
 
+// What the rest of the pipeline takes from the mesh a tree was computed on (a whole mesh, or
+// the pieces of a distributed one: pipeline/distributed_tree).
+struct TreeContext {
+  std::vector<std::string> warnings; // why the result is forced
+  std::optional<InputFingerprint> fingerprint;
+  int64_t input_cells = 0;
+  MeshBuildTimes build_times;
+  bool cells_split = false; // the input had quadrilaterals or Bezier cells
+  double precision = 0;     // Field::precision
+  // Nodes' cells to the input's (null: they name the input's cells already).
+  const CellOrigins *origins = nullptr;
+};
+
+// The steps after the tree: flat regions contracted, branches, simplification, the precision,
+// arcs' paths and the input's cells.
+TreeOutcome finish_tree(TreeResult tree, const TreeRequest &request, const TreeContext &context);
+
 // The method's name in results and messages: "exact", "linear", "refine k=4".
 std::string method_name(const TreeRequest &request);
 

@@ -4,6 +4,7 @@
 // pairs and counts.
 #include "datasets/datasets.hpp"
 #include "exact/exact_contour_tree.hpp"
+#include "exact/piece_codec.hpp"
 #include "exact/piece_trees.hpp"
 #include "mesh/mesh.hpp"
 #include "mesh/mesh_partition.hpp"
@@ -38,7 +39,8 @@ TreeResult tree_by_pieces(const MeshInput &whole, int pieces, const MeshScales &
     eo.augmented = augmented;
     eo.threads = 1;
     TreeTimings time;
-    groups.push_back(piece_trees(mesh, place, eo, time));
+    // Through bytes, as the ranks send them.
+    groups.push_back(decode_piece_trees(encode_piece_trees(piece_trees(mesh, place, eo, time))));
   }
   for (int step = 1; step < pieces; step *= 2)
     for (int r = 0; r + step < pieces; r += 2 * step)
@@ -142,6 +144,26 @@ TEST(PieceTrees, PlateausFallbackCellsAndQuadrilaterals) {
   d.degree = 5;
   d.offset = 1e7; // a far reference: every piece must use the whole's
   check_all_piece_counts(generate_dataset("random", d), "random quintic at 1e7");
+}
+
+TEST(PieceTrees, BytesThatAreNotPieceTreesAreRefused) {
+  DatasetOptions o;
+  o.cells = 200;
+  const MeshInput whole = generate_dataset("random", o);
+  const MeshPiece piece = extract_piece(whole, 0, 100);
+  const auto spans = point_piece_spans(whole, 2);
+  const Mesh mesh = build_mesh(piece.input, {.throw_on_error = false});
+  TreeTimings time;
+  const auto bytes = encode_piece_trees(
+      piece_trees(mesh, {0, piece.global_point, 0, 0, spans}, ExactTreeOptions{}, time));
+  EXPECT_NO_THROW(decode_piece_trees(bytes));
+  EXPECT_THROW(decode_piece_trees(std::span(bytes).first(bytes.size() - 1)), std::runtime_error);
+  auto bad = bytes;
+  bad[0] = std::byte{0};
+  EXPECT_THROW(decode_piece_trees(bad), std::runtime_error);
+  auto extra = bytes;
+  extra.push_back(std::byte{0});
+  EXPECT_THROW(decode_piece_trees(extra), std::runtime_error);
 }
 
 } // namespace

@@ -1,0 +1,104 @@
+#include "tree_mpi.hpp"
+
+#include "io/read_limits.hpp"
+#include "io/read_mesh.hpp"
+#include "io/tree_json.hpp"
+#include "io/tree_svg_writer.hpp"
+#include "memory_guard.hpp"
+#include "mesh/duplicate_points.hpp"
+#include "mesh/gll_nodes.hpp"
+#include "tree_summary.hpp"
+#include "util/error.hpp"
+#include "util/parallel_for.hpp"
+#include "util/stopwatch.hpp"
+
+#ifdef HOCT_WITH_MPI
+#include "distributed/distributed_tree.hpp"
+#include "distributed/mpi_session.hpp"
+#endif
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+
+namespace hoct::cli {
+
+#ifdef HOCT_WITH_MPI
+
+bool under_mpi() { return launched_by_mpi(); }
+
+namespace {
+void run_ranks(const DistributedTreeRun &run, TreeRequest rq, bool root);
+}
+
+void run_tree_mpi(const DistributedTreeRun &run, TreeRequest rq) {
+  static MpiSession session; // finalized at exit
+  const bool root = session.rank() == 0;
+  try {
+    run_ranks(run, rq, root);
+  } catch (const std::exception &) {
+    if (root)
+      throw; // reported once, by rank 0
+    std::exit(1);
+  }
+}
+
+namespace {
+
+void run_ranks(const DistributedTreeRun &run, TreeRequest rq, bool root) {
+  Stopwatch total;
+  // One thread per rank unless asked: the ranks share the machine's cores.
+  if (rq.threads == 0)
+    rq.threads = 1;
+  if (run.vtp_asked)
+    throw Error("--vtp: over MPI the arcs' paths are not drawn yet (they need the whole graph); "
+                "use --json or --svg, or run hoct without mpirun");
+  ReadLimits limits = read_limits();
+  limits.threads = thread_count(rq.threads);
+  MeshInput input = read_mesh(run.file, run.field, limits);
+  if (root)
+    for (const std::string &w : input.warnings)
+      std::fprintf(stderr, "hoct: warning: %s\n", w.c_str());
+  if (run.merge_tolerance >= 0)
+    merge_duplicate_points(input, run.merge_tolerance, limits.threads);
+  if (resample_gll_cells(input).cells > 0)
+    throw Error(run.file + ": cells with nodes at Gauss-Lobatto-Legendre points (DOLFINx, degree "
+                           ">= 3) are not read over MPI yet (run hoct without mpirun)");
+  rq.read_seconds = total.seconds();
+  const DistributedOutcome d = distributed_tree(input, rq);
+  if (!root)
+    return;
+  const TreeResult &tree = d.outcome.reported();
+  for (const auto &why : d.outcome.warnings)
+    std::fprintf(stderr, "hoct: warning: --force: %s\n", why.c_str());
+  if (!run.svg.empty() && tree.branches.empty())
+    throw Error("--svg draws the reduced tree (drop --augmented)");
+  if (!run.json.empty())
+    write_tree_json(run.json, tree, /*timings=*/!run.no_timings, thread_count(rq.threads));
+  if (!run.svg.empty())
+    write_tree_svg(run.svg, tree,
+                   std::filesystem::path(run.file).filename().string() + ": " + tree.method +
+                       " contour tree, " + std::to_string(tree.nodes.size()) + " nodes");
+  if (!run.quiet) {
+    std::printf("%s: field '%s', %lld cells, exact contour tree over %d MPI ranks\n",
+                run.file.c_str(), input.field_name.c_str(),
+                static_cast<long long>(input.num_cells()), d.ranks);
+    print_tree_body(tree, total.seconds());
+  }
+  if (run.branches)
+    print_branches(tree);
+}
+
+} // namespace
+
+#else
+
+bool under_mpi() { return false; }
+
+void run_tree_mpi(const DistributedTreeRun &, TreeRequest) {
+  throw Error("this hoct was built without MPI (Debian: libopenmpi-dev)");
+}
+
+#endif
+
+} // namespace hoct::cli

@@ -1,0 +1,321 @@
+#include "distributed/distributed_tree.hpp"
+
+#include "exact/piece_codec.hpp"
+#include "exact/piece_trees.hpp"
+#include "mesh/duplicate_points.hpp"
+#include "mesh/mesh.hpp"
+#include "mesh/mesh_checks.hpp"
+#include "mesh/mesh_partition.hpp"
+#include "pipeline/compute_tree.hpp"
+#include "pipeline/domain_check.hpp"
+#include "util/error.hpp"
+#include "util/parallel_for.hpp"
+#include "util/stopwatch.hpp"
+
+#include <mpi.h>
+
+#include <algorithm>
+#include <limits>
+#include <regex>
+#include <string>
+
+namespace hoct {
+namespace {
+
+// Blocks of at most 1 GiB per MPI call (counts are ints).
+constexpr int64_t kChunk = int64_t{1} << 30;
+
+void send_bytes(const std::vector<std::byte> &bytes, int to, int tag) {
+  const uint64_t n = bytes.size();
+  MPI_Send(&n, 1, MPI_UINT64_T, to, tag, MPI_COMM_WORLD);
+  for (uint64_t at = 0; at < n; at += kChunk)
+    MPI_Send(bytes.data() + at, static_cast<int>(std::min<uint64_t>(kChunk, n - at)), MPI_BYTE, to,
+             tag, MPI_COMM_WORLD);
+}
+
+std::vector<std::byte> receive_bytes(int from, int tag) {
+  uint64_t n = 0;
+  MPI_Recv(&n, 1, MPI_UINT64_T, from, tag, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+  std::vector<std::byte> bytes(n);
+  for (uint64_t at = 0; at < n; at += kChunk)
+    MPI_Recv(bytes.data() + at, static_cast<int>(std::min<uint64_t>(kChunk, n - at)), MPI_BYTE,
+             from, tag, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+  return bytes;
+}
+
+void broadcast_string(std::string &s, int root) {
+  uint64_t n = s.size();
+  MPI_Bcast(&n, 1, MPI_UINT64_T, root, MPI_COMM_WORLD);
+  s.resize(n);
+  MPI_Bcast(s.data(), static_cast<int>(n), MPI_CHAR, root, MPI_COMM_WORLD);
+}
+
+// A collective step's end: if any rank failed (a non-empty message), every rank throws the
+// lowest failing rank's message.
+void agree(const std::string &failure, int rank, int ranks) {
+  int first = failure.empty() ? ranks : rank;
+  MPI_Allreduce(MPI_IN_PLACE, &first, 1, MPI_INT, MPI_MIN, MPI_COMM_WORLD);
+  if (first == ranks)
+    return;
+  std::string message = failure;
+  broadcast_string(message, first);
+  throw Error(message);
+}
+
+// The whole mesh's scales from every piece's.
+MeshScales reduce_scales(const MeshScales &own) {
+  double v[9] = {own.min_value,  -own.max_value, -static_cast<double>(own.max_degree),
+                 own.box[0][0],  own.box[0][1],  own.box[0][2],
+                 -own.box[1][0], -own.box[1][1], -own.box[1][2]};
+  MPI_Allreduce(MPI_IN_PLACE, v, 9, MPI_DOUBLE, MPI_MIN, MPI_COMM_WORLD);
+  MeshScales s;
+  s.min_value = v[0];
+  s.max_value = -v[1];
+  s.max_degree = static_cast<int>(-v[2]);
+  s.box = {Vec3{v[3], v[4], v[5]}, Vec3{-v[6], -v[7], -v[8]}};
+  return s;
+}
+
+// What only the whole mesh can tell (topology, duplicate vertices across pieces): the pieces
+// do not report it.
+bool whole_mesh_problem(Problem p) {
+  return p == Problem::NonManifoldEdge || p == Problem::NonManifoldVertex ||
+         p == Problem::NonOrientable || p == Problem::DuplicateVertices || p == Problem::EmptyMesh;
+}
+
+// A piece's problems named by the whole's cells, as text for rank 0.
+std::string encode_problems(ProblemLog log, int64_t first_cell) {
+  const std::regex one(R"(\b(cell|quadrilateral|triangle) (\d+))"),
+      two(R"(\bcells (\d+) and (\d+))");
+  auto shift = [&](const std::string &m) {
+    std::string out;
+    std::sregex_iterator it(m.begin(), m.end(), two), end;
+    std::size_t last = 0;
+    std::string tmp;
+    for (; it != end; ++it) {
+      tmp.append(m, last, static_cast<std::size_t>(it->position(0)) - last);
+      tmp += "cells " + std::to_string(std::stoll((*it)[1]) + first_cell) + " and " +
+             std::to_string(std::stoll((*it)[2]) + first_cell);
+      last = static_cast<std::size_t>(it->position(0) + it->length(0));
+    }
+    tmp.append(m, last, std::string::npos);
+    last = 0;
+    for (std::sregex_iterator i(tmp.begin(), tmp.end(), one); i != end; ++i) {
+      out.append(tmp, last, static_cast<std::size_t>(i->position(0)) - last);
+      out += (*i)[1].str() + " " + std::to_string(std::stoll((*i)[2]) + first_cell);
+      last = static_cast<std::size_t>(i->position(0) + i->length(0));
+    }
+    out.append(tmp, last, std::string::npos);
+    return out;
+  };
+  if (first_cell > 0)
+    log.rewrite_examples(shift);
+  std::string s;
+  auto put = [&](const std::string &x) { s += std::to_string(x.size()) + ":" + x; };
+  for (const auto &[kind, r] : log.kinds()) {
+    if (whole_mesh_problem(kind))
+      continue;
+    put(std::to_string(static_cast<int>(kind)));
+    put(std::to_string(static_cast<int>(r.severity)));
+    put(std::to_string(r.count));
+    put(std::to_string(r.examples.size()));
+    for (const std::string &e : r.examples)
+      put(e);
+  }
+  return s;
+}
+
+void decode_problems(const std::string &s, ProblemLog &log) {
+  std::size_t at = 0;
+  auto get = [&] {
+    const std::size_t colon = s.find(':', at);
+    const std::size_t n = std::stoull(s.substr(at, colon - at));
+    std::string x = s.substr(colon + 1, n);
+    at = colon + 1 + n;
+    return x;
+  };
+  while (at < s.size()) {
+    const auto kind = static_cast<Problem>(std::stoi(get()));
+    ProblemRecord r;
+    r.severity = static_cast<Severity>(std::stoi(get()));
+    r.count = std::stoll(get());
+    const int n = std::stoi(get());
+    for (int i = 0; i < n; ++i)
+      r.examples.push_back(get());
+    log.append(kind, r);
+  }
+}
+
+// Every rank's string on rank 0, in rank order.
+std::vector<std::string> gather_strings(const std::string &own, int rank, int ranks) {
+  int n = static_cast<int>(own.size());
+  std::vector<int> sizes(static_cast<std::size_t>(ranks)), offsets(static_cast<std::size_t>(ranks));
+  MPI_Gather(&n, 1, MPI_INT, sizes.data(), 1, MPI_INT, 0, MPI_COMM_WORLD);
+  std::string all;
+  if (rank == 0) {
+    int total = 0;
+    for (int r = 0; r < ranks; ++r) {
+      offsets[r] = total;
+      total += sizes[r];
+    }
+    all.resize(static_cast<std::size_t>(total));
+  }
+  MPI_Gatherv(own.data(), n, MPI_CHAR, all.data(), sizes.data(), offsets.data(), MPI_CHAR, 0,
+              MPI_COMM_WORLD);
+  std::vector<std::string> out;
+  if (rank == 0)
+    for (int r = 0; r < ranks; ++r)
+      out.push_back(
+          all.substr(static_cast<std::size_t>(offsets[r]), static_cast<std::size_t>(sizes[r])));
+  return out;
+}
+
+} // namespace
+
+DistributedOutcome distributed_tree(const MeshInput &whole, const TreeRequest &rq) {
+  DistributedOutcome d;
+  MPI_Comm_rank(MPI_COMM_WORLD, &d.rank);
+  MPI_Comm_size(MPI_COMM_WORLD, &d.ranks);
+  const int rank = d.rank, ranks = d.ranks;
+  if (rq.method != TreeMethod::Exact)
+    throw Error("over MPI only the exact tree is computed (drop --linear and --refine, or run "
+                "hoct without mpirun)");
+  if (rq.arcs != ArcGeometry::None)
+    throw Error("over MPI the arcs are not drawn on the surface (their paths need the whole "
+                "graph): ask for straight arcs");
+  if (rq.simplify && rq.augmented)
+    throw Error("simplification works on the reduced tree (drop --augmented)");
+  const int threads = thread_count(rq.threads);
+  Stopwatch clock;
+
+  // 1. This rank's piece, built with the whole mesh's scales.
+  const int64_t cells = static_cast<int64_t>(whole.num_cells());
+  const auto [begin, end] = piece_cell_range(cells, ranks, rank);
+  d.cells = end - begin;
+  const MeshPiece piece = extract_piece(whole, begin, end);
+  MeshBuildOptions bo;
+  bo.throw_on_error = false;
+  bo.threads = threads;
+  bo.whole_scales = reduce_scales;
+  // More ranks than cells: a rank without cells takes part in the collective steps only.
+  const bool empty_piece = d.cells == 0;
+  Mesh mesh;
+  if (empty_piece) {
+    reduce_scales(MeshScales{});
+    mesh.complete = true;
+  } else {
+    mesh = build_mesh(piece.input, bo);
+  }
+  const double build_seconds = clock.lap();
+
+  // 2. The checks: each piece's own, and on rank 0 the whole mesh's topology, duplicate
+  // vertices and shape (only once every piece found its cells well formed).
+  int complete = mesh.complete ? 1 : 0;
+  MPI_Allreduce(MPI_IN_PLACE, &complete, 1, MPI_INT, MPI_MIN, MPI_COMM_WORLD);
+  const std::vector<std::string> logs =
+      gather_strings(encode_problems(mesh.problems, begin), rank, ranks);
+  std::string failure;
+  std::vector<std::string> warnings;
+  if (rank == 0) {
+    try {
+      Mesh checked;
+      checked.source = whole.source;
+      checked.complete = complete != 0;
+      if (cells == 0) {
+        checked.problems.add(Problem::EmptyMesh, "the mesh has no cells");
+        checked.complete = false;
+      }
+      for (const std::string &log : logs)
+        decode_problems(log, checked.problems);
+      std::string shape;
+      if (checked.complete) {
+        ProblemLog topology_problems;
+        SplitCells split;
+        const MeshInput *triangles = &whole;
+        if (!whole.lagrange_triangles_only()) {
+          ProblemLog ignored; // the pieces report the split's own problems
+          split = split_cells(whole, ignored, threads);
+          triangles = &split.mesh;
+        }
+        const Topology topo = Topology::build(*triangles, topology_problems, threads);
+        const std::array<Vec3, 2> box = bounding_box(triangles->points, threads);
+        check_duplicate_vertices(*triangles, topo, topology_problems, threads, &box);
+        checked.problems.append(topology_problems);
+        shape = domain_shape(topo);
+      }
+      warnings = check_domain(checked, rq.force);
+      if (!shape.empty())
+        throw Error((whole.source.empty() ? std::string("the mesh") : whole.source) + " is " +
+                    shape +
+                    ": its Reeb graph is not computed over MPI yet (run hoct without "
+                    "mpirun)");
+    } catch (const std::exception &e) {
+      failure = e.what();
+    }
+  }
+  agree(failure, rank, ranks);
+  // The field's reference and precision (the whole's, as every piece computes them) from the
+  // first rank with cells.
+  int source = empty_piece ? ranks : rank;
+  MPI_Allreduce(MPI_IN_PLACE, &source, 1, MPI_INT, MPI_MIN, MPI_COMM_WORLD);
+  double field_scale[2] = {mesh.field.reference(), mesh.field.precision()};
+  MPI_Bcast(field_scale, 2, MPI_DOUBLE, source, MPI_COMM_WORLD);
+
+  // 3. The piece's kept trees, 4. merged in a binary tree of ranks.
+  PieceTrees trees;
+  TreeTimings time;
+  try {
+    const auto spans = point_piece_spans(whole, ranks);
+    const PiecePlace place{rank, piece.global_point, begin, triangles_before(whole, begin), spans};
+    ExactTreeOptions eo;
+    eo.augmented = rq.augmented;
+    eo.threads = threads;
+    eo.fallback_refinement = rq.fallback_refinement;
+    if (empty_piece) {
+      trees.first_piece = trees.last_piece = rank;
+    } else {
+      trees = piece_trees(mesh, place, eo, time);
+    }
+  } catch (const std::exception &e) {
+    failure = std::string(e.what());
+  }
+  agree(failure, rank, ranks);
+  d.piece_seconds = build_seconds + clock.seconds();
+  const double tree_start = clock.seconds();
+  for (int step = 1; step < ranks; step *= 2) {
+    if (rank % (2 * step) == step) {
+      const std::vector<std::byte> bytes = encode_piece_trees(trees);
+      send_bytes(bytes, rank - step, step);
+      d.bytes_sent += static_cast<int64_t>(bytes.size());
+      ++d.messages;
+      break;
+    }
+    if (rank % (2 * step) == 0 && rank + step < ranks) {
+      const std::vector<std::byte> bytes = receive_bytes(rank + step, step);
+      d.bytes_received += static_cast<int64_t>(bytes.size());
+      ++d.messages;
+      trees = merge_piece_trees(trees, decode_piece_trees(bytes), rq.augmented, threads);
+    }
+  }
+  if (rank != 0)
+    return d;
+
+  // 5. Rank 0: the whole tree, finished as compute_tree finishes it.
+  TreeResult tree = tree_of_pieces(trees, rq.augmented, field_scale[0]);
+  time.tree = clock.seconds() - tree_start + (d.piece_seconds - build_seconds);
+  tree.stats.time = time;
+  TreeContext context;
+  context.warnings = warnings;
+  context.fingerprint = mesh_fingerprint(whole);
+  context.input_cells = cells;
+  context.build_times = mesh.build_times;
+  context.cells_split = !whole.lagrange_triangles_only();
+  context.precision = field_scale[1];
+  TreeRequest finish = rq;
+  if (!finish.build_seconds)
+    finish.build_seconds = build_seconds;
+  d.outcome = finish_tree(std::move(tree), finish, context);
+  return d;
+}
+
+} // namespace hoct

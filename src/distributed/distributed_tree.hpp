@@ -1,0 +1,28 @@
+// The exact tree over MPI: every rank of MPI_COMM_WORLD holds the whole input (each reads the
+// file), builds the mesh of its own piece of contiguous cells (mesh/mesh_partition) with the
+// whole mesh's scales, computes its piece's kept join and split trees (exact/piece_trees) and
+// the ranks merge them in a binary reduction tree; rank 0 checks the whole mesh's topology and
+// shape meanwhile, and finishes the tree (flat regions, branches, simplification) as
+// compute_tree does. The tree is the one `hoct tree` computes without MPI, for any number of
+// ranks. Every rank must call it; errors on any rank are thrown on all.
+#pragma once
+
+#include "mesh/mesh_input.hpp"
+#include "pipeline/tree_request.hpp"
+
+#include <cstdint>
+
+namespace hoct {
+
+struct DistributedOutcome {
+  TreeOutcome outcome; // on rank 0; elsewhere an empty tree
+  int rank = 0, ranks = 1;
+  // This rank's share: its cells, the bytes it sent and received in the reduction, its peak
+  // kept nodes (rank 0's: the whole tree's critical nodes at the end).
+  int64_t cells = 0, bytes_sent = 0, bytes_received = 0, messages = 0;
+  double piece_seconds = 0; // building the piece's mesh and its kept trees
+};
+
+DistributedOutcome distributed_tree(const MeshInput &whole, const TreeRequest &request);
+
+} // namespace hoct

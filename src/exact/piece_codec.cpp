@@ -1,0 +1,115 @@
+#include "exact/piece_codec.hpp"
+
+#include <cstring>
+#include <stdexcept>
+#include <type_traits>
+
+namespace hoct {
+namespace {
+
+constexpr uint64_t kMagic = 0x686f637470696563; // "hoctpiec"
+
+class Writer {
+public:
+  template <class T> void value(const T &v) {
+    static_assert(std::is_trivially_copyable_v<T>);
+    const auto *p = reinterpret_cast<const std::byte *>(&v);
+    out.insert(out.end(), p, p + sizeof(T));
+  }
+  template <class T> void array(const std::vector<T> &v) {
+    static_assert(std::is_trivially_copyable_v<T>);
+    value<uint64_t>(v.size());
+    const auto *p = reinterpret_cast<const std::byte *>(v.data());
+    out.insert(out.end(), p, p + v.size() * sizeof(T));
+  }
+  std::vector<std::byte> out;
+};
+
+class Reader {
+public:
+  explicit Reader(std::span<const std::byte> in) : in_(in) {}
+  template <class T> T value() {
+    T v;
+    take(&v, sizeof(T));
+    return v;
+  }
+  template <class T> std::vector<T> array() {
+    const uint64_t n = value<uint64_t>();
+    if (n > (in_.size() - at_) / sizeof(T))
+      throw std::runtime_error("decode_piece_trees: an array runs past the end");
+    std::vector<T> v(static_cast<std::size_t>(n));
+    take(v.data(), v.size() * sizeof(T));
+    return v;
+  }
+  bool done() const { return at_ == in_.size(); }
+
+private:
+  void take(void *to, std::size_t bytes) {
+    if (bytes > in_.size() - at_)
+      throw std::runtime_error("decode_piece_trees: the bytes end early");
+    std::memcpy(to, in_.data() + at_, bytes);
+    at_ += bytes;
+  }
+  std::span<const std::byte> in_;
+  std::size_t at_ = 0;
+};
+
+} // namespace
+
+std::vector<std::byte> encode_piece_trees(const PieceTrees &t) {
+  static_assert(std::is_trivially_copyable_v<PieceNode>);
+  static_assert(std::is_trivially_copyable_v<ExactCounts>);
+  Writer w;
+  w.value(kMagic);
+  w.value(t.first_piece);
+  w.value(t.last_piece);
+  w.array(t.nodes);
+  w.array(t.join_parent);
+  w.array(t.split_parent);
+  w.value(t.counts);
+  w.value<uint64_t>(t.chains.size());
+  for (const SharedChain &c : t.chains) {
+    w.value(c.lo);
+    w.value(c.hi);
+    w.value(c.span);
+    w.array(c.nodes);
+  }
+  return std::move(w.out);
+}
+
+PieceTrees decode_piece_trees(std::span<const std::byte> bytes) {
+  Reader r(bytes);
+  if (r.value<uint64_t>() != kMagic)
+    throw std::runtime_error("decode_piece_trees: not an encoded PieceTrees");
+  PieceTrees t;
+  t.first_piece = r.value<int32_t>();
+  t.last_piece = r.value<int32_t>();
+  t.nodes = r.array<PieceNode>();
+  t.join_parent = r.array<int64_t>();
+  t.split_parent = r.array<int64_t>();
+  t.counts = r.value<ExactCounts>();
+  const uint64_t chains = r.value<uint64_t>();
+  if (chains > bytes.size())
+    throw std::runtime_error("decode_piece_trees: too many chains");
+  t.chains.resize(static_cast<std::size_t>(chains));
+  for (SharedChain &c : t.chains) {
+    c.lo = r.value<int64_t>();
+    c.hi = r.value<int64_t>();
+    c.span = r.value<std::array<int32_t, 2>>();
+    c.nodes = r.array<ChainNode>();
+  }
+  const std::size_t n = t.nodes.size();
+  bool sane = r.done() && t.join_parent.size() == n && t.split_parent.size() == n &&
+              t.first_piece <= t.last_piece;
+  for (std::size_t i = 0; sane && i < n; ++i)
+    sane = t.join_parent[i] >= -1 && t.join_parent[i] < static_cast<int64_t>(n) &&
+           t.split_parent[i] >= -1 && t.split_parent[i] < static_cast<int64_t>(n);
+  for (const SharedChain &c : t.chains)
+    for (const auto &[pos, i] : c.nodes)
+      sane = sane && i >= 0 && i < static_cast<int64_t>(n);
+  if (!sane)
+    throw std::runtime_error("decode_piece_trees: inconsistent arrays");
+  return t;
+}
+
+} // namespace hoct
