@@ -33,12 +33,14 @@ DegenerateCells refine_degenerate_cells(const Mesh &mesh, const EdgeNodes &en, i
   struct Prepared {
     int64_t cell;
     CellRefinement refinement;
-    std::vector<int64_t> ids; // -1: interior sub-vertex, -2 - k: lattice key k (below)
+    std::vector<int64_t> ids;       // -1: interior sub-vertex, -2 - k: the k-th of `lattice` below
+    std::vector<int64_t *> lattice; // where each lattice node's id will be
   };
   std::vector<Prepared> prepared;
   struct LatticePlace {
     int64_t cell;
     double u, v;
+    int64_t id = -1;
   };
   std::map<std::pair<int64_t, int>, LatticePlace> lattice_place;
   std::array<std::vector<double>, 3> extra;
@@ -82,7 +84,7 @@ DegenerateCells refine_degenerate_cells(const Mesh &mesh, const EdgeNodes &en, i
         extra_ids[k].push_back(g.edge_base + gi);
       }
     }
-    Prepared p{c, refine_cell(K, extra), {}};
+    Prepared p{c, refine_cell(K, extra), {}, {}};
     const CellRefinement &cr = p.refinement;
     p.ids.resize(cr.vertices.size());
     for (std::size_t i = 0; i < cr.vertices.size(); ++i) {
@@ -102,8 +104,9 @@ DegenerateCells refine_degenerate_cells(const Mesh &mesh, const EdgeNodes &en, i
         }
         const int64_t e = topo.cell_edge(c, sv.edge);
         const int step = topo.edge_reversed(c, sv.edge) ? K - sv.index : sv.index;
-        lattice_place.try_emplace({e, step}, LatticePlace{c, sv.u, sv.v});
-        p.ids[i] = -2; // resolved below
+        auto it = lattice_place.try_emplace({e, step}, LatticePlace{c, sv.u, sv.v}).first;
+        p.ids[i] = -2 - static_cast<int64_t>(p.lattice.size()); // resolved below
+        p.lattice.push_back(&it->second.id);
         break;
       }
       case CellSubVertex::Kind::Interior:
@@ -113,8 +116,8 @@ DegenerateCells refine_degenerate_cells(const Mesh &mesh, const EdgeNodes &en, i
     }
     prepared.push_back(std::move(p));
   }
-  for (const auto &[key, at] : lattice_place)
-    lattice_node[key] =
+  for (auto &[key, at] : lattice_place)
+    lattice_node[key] = at.id =
         g.add_node(field.edge_polynomial(key.first)(static_cast<double>(key.second) / K), at.cell,
                    {at.u, at.v}, NodeLocation::Edge);
 
@@ -127,10 +130,8 @@ DegenerateCells refine_degenerate_cells(const Mesh &mesh, const EdgeNodes &en, i
       const CellSubVertex &sv = cr.vertices[i];
       if (ids[i] == -1) {
         ids[i] = g.add_node(poly(sv.u, sv.v), c, {sv.u, sv.v}, NodeLocation::Interior);
-      } else if (ids[i] == -2) {
-        const int64_t e = topo.cell_edge(c, sv.edge);
-        const int step = topo.edge_reversed(c, sv.edge) ? K - sv.index : sv.index;
-        ids[i] = lattice_node.at({e, step});
+      } else if (ids[i] <= -2) {
+        ids[i] = *p.lattice[static_cast<std::size_t>(-2 - ids[i])];
       }
     }
     for (int64_t id : ids)
