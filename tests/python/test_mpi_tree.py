@@ -8,6 +8,9 @@ generated genus-0 dataset, with plateaus and fallback cells, quadrilaterals, a f
 and 7 ranks (--oversubscribe: this machine has 2 cores). Also checked: what is not distributed yet
 (--linear, --vtp, a domain with holes) is refused on every rank with one clear message and a
 non-zero exit, a broken file is reported as without MPI, and rank 0 alone writes the outputs.
+Bad meshes: inverted cells that a piece finds are named by the whole's cell numbers, as without
+MPI, and --force past them gives the same JSON; a crack between pieces (duplicate points) is
+found by rank 0's check of the whole mesh.
 
 Skipped (exit 77) without mpirun or an MPI build of hoct."""
 import os
@@ -99,4 +102,65 @@ with tempdir() as d:
     first_line = want.stderr.strip().splitlines()[0] if want.stderr.strip() else ""
     r.check(first_line and first_line in p.stderr, f"broken file: {first_line!r} in {p.stderr[-1500:]!r}")
     r.check(p.stderr.count("hoct: error:") == 1, f"broken file: one message, not one per rank:\n{p.stderr}")
+
+    # Problems only the whole mesh shows, or that a piece finds: the same message (the whole's
+    # cell numbers) as without MPI, and --force past them the same JSON.
+    import meshio
+    import numpy as np
+
+    def grid_mesh(path, move=None, crack=False):
+        n = 12
+        pts = [(i / n, j / n, 0.0) for j in range(n + 1) for i in range(n + 1)]
+        tri = []
+        for j in range(n):
+            for i in range(n):
+                a, b, c, e = j * (n + 1) + i, j * (n + 1) + i + 1, (j + 1) * (n + 1) + i + 1, (j + 1) * (n + 1) + i
+                tri += [(a, b, c), (a, c, e)]
+        if crack:  # the upper half's own copies of the middle row's points: a crack across pieces
+            mid = n // 2
+            copy = {}
+            for k, t in enumerate(tri):
+                if k >= len(tri) // 2:
+                    tri[k] = tuple(copy.setdefault(v, None) or v for v in t)
+            for k in range(len(tri) // 2, len(tri)):
+                t = list(tri[k])
+                for m, v in enumerate(t):
+                    if v // (n + 1) == mid:
+                        if v not in copy or copy[v] is None:
+                            copy[v] = len(pts)
+                            pts.append(pts[v])
+                        t[m] = copy[v]
+                tri[k] = tuple(t)
+        pts = np.array(pts)
+        if move is not None:  # a point moved past its neighbours: inverted cells in the last piece
+            pts[move[0], 0] += move[1]
+        vals = np.sin(3 * pts[:, 0]) * np.cos(2 * pts[:, 1]) + 0.1 * pts[:, 0]
+        meshio.write(path, meshio.Mesh(pts, [("triangle", np.array(tri))], point_data={"f": vals}))
+
+    for name, kw in [("inverted", {"move": (9 * 13 + 6, 2.5 / 12)}), ("crack", {"crack": True})]:
+        path = os.path.join(d, f"{name}.vtu")
+        grid_mesh(path, **kw)
+        plain = run("tree", path, check=False)
+        first = plain.stderr.strip().splitlines()[0] if plain.stderr.strip() else ""
+        for n in (2, 3):
+            p = mpi(n, "tree", path)
+            r.check(plain.returncode != 0 and p.returncode != 0 and first and first in p.stderr
+                    and p.stderr.count("hoct: error:") == 1,
+                    f"{name}, {n} ranks: {first!r} in\n{p.stderr[-1500:]}")
+            lines = [l for l in plain.stderr.splitlines() if "cell" in l or "point" in l][:3]
+            r.check(all(l in p.stderr for l in lines), f"{name}, {n} ranks: the same places {lines}")
+        want = os.path.join(d, f"{name}-forced.json")
+        plain = run("tree", path, "--force", "--json", want, "--no-timings", "-q", check=False)
+        r.check(plain.returncode == 0, f"{name} --force: {plain.stderr[-800:]}")
+        if name == "crack":  # forced past the duplicates: two components, a Reeb graph
+            p = mpi(2, "tree", path, "--force")
+            r.check(p.returncode != 0 and "Reeb graph is not computed over MPI" in p.stderr,
+                    f"crack --force: refused over MPI: {p.stderr[-800:]}")
+        else:
+            for n in (2, 3):
+                got = os.path.join(d, f"{name}-forced{n}.json")
+                p = mpi(n, "tree", path, "--force", "--json", got, "--no-timings", "-q")
+                r.check(p.returncode == 0 and read(got) == read(want),
+                        f"{name} --force, {n} ranks: same JSON ({p.returncode}) {p.stderr[-800:]}")
+        print(f"{name}: checked", flush=True)
 r.finish()
