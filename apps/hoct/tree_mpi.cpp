@@ -84,6 +84,14 @@ void run_ranks(const DistributedTreeRun &run, TreeRequest rq, bool root) {
                 run.file.c_str(), input.field_name.c_str(),
                 static_cast<long long>(input.num_cells()), d.ranks);
     print_tree_body(tree, total.seconds());
+    std::printf("  ranks (cells, kept nodes, bytes sent / received, peak memory, piece time):\n");
+    for (std::size_t k = 0; k < d.reports.size(); ++k) {
+      const RankReport &q = d.reports[k];
+      std::printf("    %zu: %lld cells, %lld kept, %.1f / %.1f KiB, %.0f MiB, %.3f s\n", k,
+                  static_cast<long long>(q.cells), static_cast<long long>(q.kept_nodes),
+                  q.bytes_sent / 1024.0, q.bytes_received / 1024.0, q.peak_bytes / 1048576.0,
+                  q.piece_seconds);
+    }
   }
   if (run.branches)
     print_branches(tree);

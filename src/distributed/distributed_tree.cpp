@@ -13,11 +13,13 @@
 #include "util/stopwatch.hpp"
 
 #include <mpi.h>
+#include <sys/resource.h>
 
 #include <algorithm>
 #include <limits>
 #include <regex>
 #include <string>
+#include <type_traits>
 
 namespace hoct {
 namespace {
@@ -191,14 +193,15 @@ DistributedOutcome distributed_tree(const MeshInput &whole, const TreeRequest &r
   // 1. This rank's piece, built with the whole mesh's scales.
   const int64_t cells = static_cast<int64_t>(whole.num_cells());
   const auto [begin, end] = piece_cell_range(cells, ranks, rank);
-  d.cells = end - begin;
+  RankReport me;
+  me.cells = end - begin;
   const MeshPiece piece = extract_piece(whole, begin, end);
   MeshBuildOptions bo;
   bo.throw_on_error = false;
   bo.threads = threads;
   bo.whole_scales = reduce_scales;
   // More ranks than cells: a rank without cells takes part in the collective steps only.
-  const bool empty_piece = d.cells == 0;
+  const bool empty_piece = me.cells == 0;
   Mesh mesh;
   if (empty_piece) {
     reduce_scales(MeshScales{});
@@ -280,29 +283,39 @@ DistributedOutcome distributed_tree(const MeshInput &whole, const TreeRequest &r
     failure = std::string(e.what());
   }
   agree(failure, rank, ranks);
-  d.piece_seconds = build_seconds + clock.seconds();
+  me.piece_seconds = build_seconds + clock.seconds();
+  me.kept_nodes = static_cast<int64_t>(trees.nodes.size());
   const double tree_start = clock.seconds();
   for (int step = 1; step < ranks; step *= 2) {
     if (rank % (2 * step) == step) {
       const std::vector<std::byte> bytes = encode_piece_trees(trees);
       send_bytes(bytes, rank - step, step);
-      d.bytes_sent += static_cast<int64_t>(bytes.size());
-      ++d.messages;
+      me.bytes_sent += static_cast<int64_t>(bytes.size());
+      ++me.messages;
       break;
     }
     if (rank % (2 * step) == 0 && rank + step < ranks) {
       const std::vector<std::byte> bytes = receive_bytes(rank + step, step);
-      d.bytes_received += static_cast<int64_t>(bytes.size());
-      ++d.messages;
+      me.bytes_received += static_cast<int64_t>(bytes.size());
+      ++me.messages;
       trees = merge_piece_trees(trees, decode_piece_trees(bytes), rq.augmented, threads);
     }
   }
+  // Every rank's report on rank 0.
+  struct rusage usage {};
+  getrusage(RUSAGE_SELF, &usage);
+  me.peak_bytes = static_cast<int64_t>(usage.ru_maxrss) * 1024;
+  static_assert(std::is_trivially_copyable_v<RankReport>);
+  if (rank == 0)
+    d.reports.resize(static_cast<std::size_t>(ranks));
+  MPI_Gather(&me, sizeof(RankReport), MPI_BYTE, d.reports.data(), sizeof(RankReport), MPI_BYTE, 0,
+             MPI_COMM_WORLD);
   if (rank != 0)
     return d;
 
   // 5. Rank 0: the whole tree, finished as compute_tree finishes it.
   TreeResult tree = tree_of_pieces(trees, rq.augmented, field_scale[0]);
-  time.tree = clock.seconds() - tree_start + (d.piece_seconds - build_seconds);
+  time.tree = clock.seconds() - tree_start + (me.piece_seconds - build_seconds);
   tree.stats.time = time;
   TreeContext context;
   context.warnings = warnings;

@@ -11,16 +11,23 @@
 #include "pipeline/tree_request.hpp"
 
 #include <cstdint>
+#include <vector>
 
 namespace hoct {
+
+// What one rank did.
+struct RankReport {
+  int64_t cells = 0;      // its share of the input cells
+  int64_t kept_nodes = 0; // its piece's kept nodes (what it passes on)
+  int64_t bytes_sent = 0, bytes_received = 0, messages = 0; // in the reduction
+  double piece_seconds = 0; // building its piece's mesh and kept trees
+  int64_t peak_bytes = 0;   // the process's peak resident memory
+};
 
 struct DistributedOutcome {
   TreeOutcome outcome; // on rank 0; elsewhere an empty tree
   int rank = 0, ranks = 1;
-  // This rank's share: its cells, the bytes it sent and received in the reduction, its peak
-  // kept nodes (rank 0's: the whole tree's critical nodes at the end).
-  int64_t cells = 0, bytes_sent = 0, bytes_received = 0, messages = 0;
-  double piece_seconds = 0; // building the piece's mesh and its kept trees
+  std::vector<RankReport> reports; // on rank 0: every rank's, by rank
 };
 
 DistributedOutcome distributed_tree(const MeshInput &whole, const TreeRequest &request);

@@ -79,6 +79,11 @@ with tempdir() as d:
         p = mpi(n, "tree", path)
         r.check(p.returncode == 0 and p.stdout.count(f"over {n} MPI ranks") == 1
                 and p.stdout.count("nodes:") == 1, f"summary on rank 0 only:\n{p.stdout}")
+        # One report line per rank; their cells add up to the mesh's.
+        rows = [l.split() for l in p.stdout.splitlines() if l.startswith("    ") and "cells," in l]
+        cells = sum(int(row[1]) for row in rows)
+        r.check(len(rows) == n and cells == 12324,
+                f"{n} ranks: per-rank report ({len(rows)} rows, {cells} cells):\n{p.stdout}")
 
     # Not distributed yet: refused with one message, non-zero exit, nothing written.
     plate = os.path.join(d, "plate.vtu")
