@@ -5,6 +5,7 @@
 #include "poly/lagrange_to_bernstein.hpp"
 #include "poly/lattice.hpp"
 
+#include "util/concurrent_sets.hpp"
 #include "util/parallel_for.hpp"
 #include "util/uninitialized_vector.hpp"
 
@@ -458,11 +459,29 @@ void check_geometry(const Geometry &g, const Topology &topo, ProblemLog &problem
   const int64_t pos = std::accumulate(positive.begin(), positive.end(), int64_t{0});
   const int64_t neg = std::accumulate(negative.begin(), negative.end(), int64_t{0});
   if (pos > 0 && neg > 0) {
-    const int8_t minority = pos >= neg ? -1 : 1;
+    // The minority orientation of each component (connected across two-cell edges): each
+    // component's parities are relative to its own first cell, and separate components may be
+    // listed either way round without overlapping (a piece of a partitioned mesh in two parts,
+    // two separate squares).
+    ConcurrentSets parts(nc, cell_threads);
+    const int64_t ne = topo.num_edges();
+    parallel_for(ne, threads_for(ne, threads, 65536), [&](int64_t begin, int64_t end, int) {
+      for (int64_t e = begin; e < end; ++e)
+        if (topo.edge_cell_count(e) == 2)
+          parts.unite(topo.edge_cells_begin(e)[0], topo.edge_cells_begin(e)[1]);
+    });
+    std::vector<int64_t> balance(static_cast<std::size_t>(nc), 0); // by root: pos - neg, and 0
+    std::vector<int64_t> root(static_cast<std::size_t>(nc));
+    for (int64_t c = 0; c < nc; ++c) {
+      root[c] = parts.find(c);
+      balance[root[c]] += sign[c];
+    }
+    // As before within a component: the minority is the negative sign unless it outnumbers.
+    auto minority = [&](int64_t c) { return balance[root[c]] >= 0 ? int8_t{-1} : int8_t{1}; };
     BlockProblems inverted(blocks);
     parallel_chunks(nc, blocks, cell_threads, [&](int64_t b, int64_t begin, int64_t end, int) {
       for (int64_t c = begin; c < end; ++c)
-        if (sign[c] == minority)
+        if (sign[c] == minority(c))
           inverted[b].add(Problem::InvertedCell,
                           cell_str(c) + " is inverted (its orientation disagrees with its "
                                         "neighbours': the mesh overlaps itself)");

@@ -14,8 +14,9 @@ with ghost cells and points. What hoct must make of them:
 - P1: a piecewise-linear field whose leaves are exactly the vertices that are local extrema
   among their mesh neighbours (found here by brute force from DOLFINx's in-memory arrays), every
   node a vertex with the value f there; VTKFile and XDMF give the same tree;
-- the partitioned files, on 2 and 3 ranks, the tree of the serial file; one piece alone, a
-  warning naming the .pvtu to read instead;
+- the partitioned files, on 2 and 3 ranks, the tree of the serial file, and read by
+  `mpirun -np 1-3 hoct tree` the same JSON as one process; one piece alone, a warning naming the
+  .pvtu to read instead;
 - XDMF steps: `hoct info` lists both, the default is the last, --step and --time choose, and a
   time that is not there is an error listing the times;
 - P2 on curved cells: XDMF (Triangle_6) and VTKFile (Lagrange triangles) give the same tree, with
@@ -30,7 +31,7 @@ import subprocess
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from hoct_testing import Results, close, compare_trees, run, tempdir, tree_json  # noqa: E402
+from hoct_testing import HOCT, Results, close, compare_trees, run, tempdir, tree_json  # noqa: E402
 
 try:
     import dolfinx  # noqa: F401
@@ -163,6 +164,19 @@ with tempdir() as d:
     for n in ranks:
         j, res = tree_json(p(f"part{n}.pvd"))
         same_tree(f"P2 written on {n} ranks vs serial", j, trees[2], tol=1e-12)
+        # ... and read by hoct under mpirun on 1-3 ranks (each reads the pieces, the cells are
+        # shared out): the JSON of the plain run, byte for byte.
+        want = p(f"part{n}.plain.json")
+        run("tree", p(f"part{n}.pvd"), "--json", want, "--no-timings", "-q")
+        env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
+                   HOCT_MPI="1")
+        for m in (1, 2, 3):
+            got = p(f"part{n}.mpi{m}.json")
+            w = subprocess.run([shutil.which("mpirun"), "--oversubscribe", "-np", str(m), HOCT,
+                                "tree", p(f"part{n}.pvd"), "--json", got, "--no-timings", "-q"],
+                               capture_output=True, text=True, env=env)
+            same = w.returncode == 0 and open(got, "rb").read() == open(want, "rb").read()
+            r.check(same, f"P2 written on {n} ranks, hoct on {m} ranks: {w.stderr[-800:]}")
         res = run("tree", p(f"part{n}_p0_000000.vtu"), check=False)
         r.check(res.returncode == 0 and f"part{n}000000.pvtu" in res.stderr,
                 f"one piece of {n}: {res.returncode} {res.stderr.strip()[:400]}")

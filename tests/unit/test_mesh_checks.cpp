@@ -185,6 +185,33 @@ TEST(MeshChecks, InteriorPinchedVertex) {
             0);
 }
 
+TEST(MeshChecks, SeparateComponentsMayBeListedEitherWayRound) {
+  // Two squares side by side, not touching: the first listed counter-clockwise, the second
+  // clockwise (as a piece of a partitioned mesh may be, or a DOLFINx mesh in two parts). Neither
+  // overlaps anything: no inverted cell. An inverted cell inside the larger one is still found.
+  const std::vector<Vec3> v = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0},
+                               {2, 0, 0}, {3, 0, 0}, {3, 1, 0}, {2, 1, 0}};
+  const std::vector<std::array<int64_t, 3>> t = {{0, 1, 2}, {0, 2, 3}, {4, 6, 5}, {4, 7, 6}};
+  Mesh two = build_mesh(linear_mesh(v, t), {false});
+  EXPECT_EQ(two.topology.components(), 2);
+  EXPECT_EQ(two.problems.count(Problem::InvertedCell), 0) << two.problems.summary();
+  std::mt19937_64 rng(2);
+  std::vector<Vec3> w;
+  std::vector<std::array<int64_t, 3>> g;
+  testing::square_grid(3, rng, w, g);
+  w[5] = {0.9, 0.9, 0};
+  const int64_t base = static_cast<int64_t>(w.size());
+  for (int k = 0; k < 4; ++k) // a separate square, clockwise
+    w.push_back({5.0 + (k == 1 || k == 2), (k >= 2) * 1.0, 0.0});
+  g.push_back({base, base + 2, base + 1});
+  g.push_back({base, base + 3, base + 2});
+  Mesh both = build_mesh(linear_mesh(w, g), {false});
+  EXPECT_GE(both.problems.count(Problem::InvertedCell), 1) << both.problems.summary();
+  EXPECT_FALSE(
+      message_contains(both, Problem::InvertedCell, "cell " + std::to_string(g.size() - 1) + " "))
+      << both.problems.summary();
+}
+
 TEST(MeshChecks, InvertedAndZeroAreaCells) {
   std::mt19937_64 rng(2);
   std::vector<Vec3> v;
