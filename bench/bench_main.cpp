@@ -34,7 +34,7 @@ struct Settings {
   int runs = 5;
   bool quick = false;
   std::vector<std::string> sections = {"datasets", "scaling", "density", "plateau", "quads",
-                                       "reeb",     "memory",  "pl",      "large"};
+                                       "reeb",     "memory",  "pl",      "large",   "mpi"};
   std::vector<int> degrees = {2, 3, 5};
   std::vector<double> sizes = {1e4, 1e5, 1e6, 4e6};
   std::vector<int> threads = {1, 2};
@@ -540,6 +540,83 @@ void large_section(const Settings &s) {
   std::printf("\n");
 }
 
+// `mpirun -np N hoct tree` against one plain process: whole runs (a fresh mpirun per run, rank
+// counts alternated), each rank's report (its piece's time, kept nodes, bytes, peak memory) read
+// from the summary, and the JSON compared with the plain run's.
+void mpi_section(const Settings &s) {
+  const int runs = s.quick ? 1 : std::min(std::max(s.runs, 3), 5);
+  const double size = s.quick ? 1e5 : 4e6;
+  const std::vector<int> counts = s.quick ? std::vector<int>{1, 2} : std::vector<int>{1, 2, 4, 8};
+  ScratchDir scratch;
+  const std::string vtu = scratch.file("random.vtu");
+  const long long cells = write_random(vtu, size, 3);
+  setenv("OMPI_ALLOW_RUN_AS_ROOT", "1", 1); // a container's root
+  setenv("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1", 1);
+  setenv("HOCT_MPI", "1", 1); // -np 1 too runs the distributed code
+  const std::string hoct = executable_dir() + "/hoct";
+  auto slurp = [](const std::string &path) {
+    std::ifstream in(path, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  const std::string plain_json = scratch.file("plain.json");
+  std::vector<double> plain;
+  std::map<int, std::vector<double>> whole, piece, kept, sent, received, peak;
+  std::map<int, bool> same;
+  for (int i = 0; i < runs; ++i) {
+    plain.push_back(run_process({hoct, "tree", vtu, "--json", plain_json, "--no-timings",
+                                 "--threads", "1", "-q"})
+                        .seconds);
+    for (int n : counts) {
+      const std::string json = scratch.file("mpi.json"), out = scratch.file("mpi.txt");
+      const ProcessPeak p =
+          run_process({"/usr/bin/mpirun", "--oversubscribe", "-np", std::to_string(n), hoct, "tree",
+                       vtu, "--json", json, "--no-timings", "--threads", "1"},
+                      out);
+      whole[n].push_back(p.seconds);
+      same[n] = (i == 0 || same[n]) && slurp(json) == slurp(plain_json);
+      // "    k: C cells, K kept, S / R KiB, M MiB, T s" per rank.
+      std::istringstream text(slurp(out));
+      double max_piece = 0, max_kept = 0, max_sent = 0, max_peak = 0, root_received = 0;
+      for (std::string line; std::getline(text, line);) {
+        int rank = 0;
+        double c = 0, k = 0, sk = 0, rk = 0, m = 0, t = 0;
+        if (std::sscanf(line.c_str(), " %d: %lf cells, %lf kept, %lf / %lf KiB, %lf MiB, %lf s",
+                        &rank, &c, &k, &sk, &rk, &m, &t) == 7) {
+          max_piece = std::max(max_piece, t);
+          max_kept = std::max(max_kept, k);
+          max_sent = std::max(max_sent, sk);
+          max_peak = std::max(max_peak, m);
+          if (rank == 0)
+            root_received = rk;
+        }
+      }
+      piece[n].push_back(max_piece);
+      kept[n].push_back(max_kept);
+      sent[n].push_back(max_sent);
+      received[n].push_back(root_received);
+      peak[n].push_back(max_peak);
+    }
+  }
+  std::printf("## MPI: `mpirun --oversubscribe -np N hoct tree FILE.vtu --json J --no-timings "
+              "--threads 1` (HOCT_MPI=1) on %lld random cubic cells, a fresh mpirun per run, rank "
+              "counts alternated with one plain process (`hoct tree FILE.vtu --threads 1`): "
+              "medians of %d runs; per rank, the largest over the ranks\n\n",
+              cells, runs);
+  std::printf("plain process: %.3f s\n\n", median(plain));
+  std::printf("| ranks | whole (s) | 1 rank / N ranks | plain / N ranks | piece (s) | kept nodes "
+              "| KiB sent | KiB rank 0 received | peak MiB | JSON as plain |\n"
+              "|---|---|---|---|---|---|---|---|---|---|\n");
+  const double one = median(whole[counts.front()]);
+  for (int n : counts) {
+    const double w = median(whole[n]);
+    std::printf("| %d | %.3f | %.2fx | %.2fx | %.3f | %.0f | %.1f | %.1f | %.0f | %s |\n", n, w,
+                one / w, median(plain) / w, median(piece[n]), median(kept[n]), median(sent[n]),
+                median(received[n]), median(peak[n]), same[n] ? "yes" : "NO");
+    std::fflush(stdout);
+  }
+  std::printf("\n");
+}
+
 // Peak memory of `hoct tree FILE.vtu --json J --threads 1` in a process of its own (GNU time).
 void memory_section(const Settings &s) {
   std::printf("## Peak memory of `hoct tree FILE.vtu --json J` (random fields; GNU time's maximum "
@@ -628,7 +705,7 @@ int main(int argc, char **argv) {
   app.add_flag("--quick", s.quick, "A smoke run: small sizes, few runs");
   app.add_option("--sections", s.sections,
                  "Sections to run: datasets, scaling, density, plateau, quads, reeb, memory, pl, "
-                 "large")
+                 "large, mpi")
       ->delimiter(',');
   app.add_option("--degrees", s.degrees, "Degrees of the scaling, density and memory sections")
       ->delimiter(',');
@@ -664,6 +741,8 @@ int main(int argc, char **argv) {
     pl_section(s);
   if (wants(s, "large"))
     large_section(s);
+  if (wants(s, "mpi"))
+    mpi_section(s);
   std::printf("peak resident memory of the benchmark: %.1f MiB\n", peak_rss_kib() / 1024.0);
   return 0;
 }

@@ -21,13 +21,14 @@ double median(std::vector<double> v);
 // Peak resident memory of this process (VmHWM, KiB).
 long peak_rss_kib();
 
-// Runs a program (argv[0] is its path) under GNU time with stdout and stderr discarded; returns
+// Runs a program (argv[0] is its path) under GNU time with stderr discarded; returns
 // its peak resident memory (KiB) and wall time; throws if it cannot run or fails.
 struct ProcessPeak {
   long max_rss_kib = 0;
   double seconds = 0;
 };
-ProcessPeak run_process(const std::vector<std::string> &argv);
+// `stdout_file`: where its standard output goes (else /dev/null).
+ProcessPeak run_process(const std::vector<std::string> &argv, const std::string &stdout_file = "");
 
 // The directory of the running executable (to find the hoct CLI next to hoct_bench).
 std::string executable_dir();
