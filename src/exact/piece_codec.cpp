@@ -19,6 +19,8 @@ public:
   template <class T> void array(const std::vector<T> &v) {
     static_assert(std::is_trivially_copyable_v<T>);
     value<uint64_t>(v.size());
+    if (v.empty())
+      return;
     const auto *p = reinterpret_cast<const std::byte *>(v.data());
     out.insert(out.end(), p, p + v.size() * sizeof(T));
   }
@@ -47,6 +49,8 @@ private:
   void take(void *to, std::size_t bytes) {
     if (bytes > in_.size() - at_)
       throw std::runtime_error("decode_piece_trees: the bytes end early");
+    if (bytes == 0) // an empty array's data() may be null
+      return;
     std::memcpy(to, in_.data() + at_, bytes);
     at_ += bytes;
   }
