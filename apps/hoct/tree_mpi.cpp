@@ -15,6 +15,8 @@
 #ifdef HOCT_WITH_MPI
 #include "distributed/distributed_tree.hpp"
 #include "distributed/mpi_session.hpp"
+
+#include <mpi.h>
 #endif
 
 #include <cstdio>
@@ -28,44 +30,61 @@ namespace hoct::cli {
 bool under_mpi() { return launched_by_mpi(); }
 
 namespace {
-void run_ranks(const DistributedTreeRun &run, TreeRequest rq, bool root);
-}
+// `collectives_done` is set once this rank takes part in no more collective step.
+void run_ranks(const DistributedTreeRun &run, TreeRequest rq, bool root, bool &collectives_done);
+} // namespace
 
 void run_tree_mpi(const DistributedTreeRun &run, TreeRequest rq) {
   static MpiSession session; // finalized at exit
   const bool root = session.rank() == 0;
+  bool collectives_done = false;
   try {
-    run_ranks(run, rq, root);
-  } catch (const std::exception &) {
+    run_ranks(run, rq, root, collectives_done);
+  } catch (const AgreedError &) {
     if (root)
-      throw; // reported once, by rank 0
+      throw; // every rank has it: reported once, by rank 0
     std::exit(1);
+  } catch (const std::exception &e) {
+    if (!collectives_done && session.size() > 1) {
+      // This rank's alone, and the others would wait for it at the next collective step.
+      std::fprintf(stderr, "hoct: error (MPI rank %d): %s\n", session.rank(), e.what());
+      MPI_Abort(MPI_COMM_WORLD, 1);
+    }
+    throw;
   }
 }
 
 namespace {
 
-void run_ranks(const DistributedTreeRun &run, TreeRequest rq, bool root) {
+void run_ranks(const DistributedTreeRun &run, TreeRequest rq, bool root, bool &collectives_done) {
   Stopwatch total;
   // One thread per rank unless asked: the ranks share the machine's cores.
   if (rq.threads == 0)
     rq.threads = 1;
-  if (run.vtp_asked)
-    throw Error("--vtp: over MPI the arcs' paths are not drawn yet (they need the whole graph); "
-                "use --json or --svg, or run hoct without mpirun");
   ReadLimits limits = read_limits();
   limits.threads = thread_count(rq.threads);
-  MeshInput input = read_mesh(run.file, run.field, limits);
+  MeshInput input;
+  std::string failure; // every rank checks and reads alike: its errors are everyone's
+  try {
+    if (run.vtp_asked)
+      throw Error("--vtp: over MPI the arcs' paths are not drawn yet (they need the whole graph); "
+                  "use --json or --svg, or run hoct without mpirun");
+    input = read_mesh(run.file, run.field, limits);
+    if (run.merge_tolerance >= 0)
+      merge_duplicate_points(input, run.merge_tolerance, limits.threads);
+    if (resample_gll_cells(input).cells > 0)
+      throw Error(run.file + ": cells with nodes at Gauss-Lobatto-Legendre points (DOLFINx, "
+                             "degree >= 3) are not read over MPI yet (run hoct without mpirun)");
+  } catch (const std::exception &e) {
+    failure = e.what();
+  }
+  agree_on_failure(failure);
   if (root)
     for (const std::string &w : input.warnings)
       std::fprintf(stderr, "hoct: warning: %s\n", w.c_str());
-  if (run.merge_tolerance >= 0)
-    merge_duplicate_points(input, run.merge_tolerance, limits.threads);
-  if (resample_gll_cells(input).cells > 0)
-    throw Error(run.file + ": cells with nodes at Gauss-Lobatto-Legendre points (DOLFINx, degree "
-                           ">= 3) are not read over MPI yet (run hoct without mpirun)");
   rq.read_seconds = total.seconds();
   const DistributedOutcome d = distributed_tree(input, rq);
+  collectives_done = true; // from here on, errors are rank 0's, reported as without MPI
   if (!root)
     return;
   const TreeResult &tree = d.outcome.reported();

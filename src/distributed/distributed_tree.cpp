@@ -61,7 +61,7 @@ void agree(const std::string &failure, int rank, int ranks) {
     return;
   std::string message = failure;
   broadcast_string(message, first);
-  throw Error(message);
+  throw AgreedError(message);
 }
 
 // The whole mesh's scales from every piece's.
@@ -173,6 +173,13 @@ std::vector<std::string> gather_strings(const std::string &own, int rank, int ra
 }
 
 } // namespace
+
+void agree_on_failure(const std::string &failure) {
+  int rank = 0, ranks = 1;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  MPI_Comm_size(MPI_COMM_WORLD, &ranks);
+  agree(failure, rank, ranks);
+}
 
 DistributedOutcome distributed_tree(const MeshInput &whole, const TreeRequest &rq) {
   DistributedOutcome d;

@@ -9,6 +9,7 @@
 
 #include "mesh/mesh_input.hpp"
 #include "pipeline/tree_request.hpp"
+#include "util/error.hpp"
 
 #include <cstdint>
 #include <vector>
@@ -31,5 +32,17 @@ struct DistributedOutcome {
 };
 
 DistributedOutcome distributed_tree(const MeshInput &whole, const TreeRequest &request);
+
+// An error every rank throws together (at one collective step), with the message of the lowest
+// rank that failed: each rank may then end normally (rank 0 reports it). Any other exception is
+// one rank's alone: that rank must abort the job (MPI_Abort), as the others wait for it.
+class AgreedError : public Error {
+public:
+  using Error::Error;
+};
+
+// A collective step (every rank calls it): throws AgreedError on every rank if any rank's
+// `failure` is not empty.
+void agree_on_failure(const std::string &failure);
 
 } // namespace hoct
