@@ -1,5 +1,6 @@
 #include "analysis/tree_check.hpp"
 
+#include "cell/degenerate_points.hpp"
 #include "cell/edge_nodes.hpp"
 #include "poly/reference_triangle.hpp"
 #include "tree/union_find.hpp"
@@ -786,6 +787,26 @@ private:
         return;
       }
       break;
+    }
+    // Inside a cell, sectors narrower than the samples' spacing (the cusps of a degenerate
+    // critical point) are seen exactly: the sign arcs of f - value on the boundaries of squares
+    // around the node, from the roots of f - value on their sides.
+    if (ring.closed && ring.max_radius >= 1e-5) {
+      thread_local std::vector<SignArc> arcs;
+      const BernsteinTriangle &g = poly(nd.cell);
+      for (double r : {1e-4, 1e-3, 1e-2}) {
+        if (r > 0.5 * ring.max_radius)
+          break;
+        if (!sign_arcs_on_square(g, {u, v}, r, relative, eps, arcs))
+          continue;
+        Sectors sec{0, 0};
+        for (const SignArc &a : arcs)
+          ++(a.lower ? sec.lower : sec.upper);
+        if (type_matches(nd.type, sec, true) && down <= sec.lower && up <= sec.upper) {
+          ++report_.nodes_checked;
+          return;
+        }
+      }
     }
     if (ring.max_radius < 1e-5) {
       skip(i, node_str(i) + ": too close to a cell corner or side to sample around it (skipped)");

@@ -24,7 +24,8 @@ void eigen2(const Mat2 &h, double lambda[2], Vec2 vec[2]) {
 
 void connect_sectors(const BernsteinTriangle &g, const CellNodes &cn,
                      const std::vector<int> &interior, const std::vector<CellEdgeNode> &edge,
-                     PathCounters &counters, SectorResult &out, bool with_paths) {
+                     PathCounters &counters, SectorResult &out, bool with_paths,
+                     std::span<const SectorRays *const> rays) {
   out.join.clear();
   out.split.clear();
   out.join_paths.clear();
@@ -92,8 +93,17 @@ void connect_sectors(const BernsteinTriangle &g, const CellNodes &cn,
   };
 
   auto hessian = [&](const Vec2 &p) { return g.jet(p[0], p[1]).hessian; };
-  for (int node : interior) {
+  for (std::size_t i = 0; i < interior.size(); ++i) {
+    const int node = interior[i];
     const Vec2 &p = cn.nodes[node].uv;
+    if (!rays.empty() && rays[i]) {
+      const SectorRays &s = *rays[i];
+      for (std::size_t k = 0; k < s.lower.size(); ++k)
+        lower(node, {s.lower[k][0] - p[0], s.lower[k][1] - p[1]}, s.lower_skip[k]);
+      for (std::size_t k = 0; k < s.upper.size(); ++k)
+        upper(node, {s.upper[k][0] - p[0], s.upper[k][1] - p[1]}, s.upper_skip[k]);
+      continue;
+    }
     double lambda[2];
     Vec2 vec[2];
     eigen2(hessian(p), lambda, vec);

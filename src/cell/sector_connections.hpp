@@ -6,8 +6,10 @@
 
 #include "cell/cell_nodes.hpp"
 #include "cell/certified_path.hpp"
+#include "cell/degenerate_points.hpp"
 
 #include <cstdint>
+#include <span>
 #include <utility>
 #include <vector>
 
@@ -16,6 +18,7 @@ namespace hoct {
 struct InteriorCritical {
   Vec2 uv;
   double value;
+  int32_t degenerate = -1; // its sectors, if a degenerate point: an index the caller resolves
 };
 
 // An edge node of the cell as classification needs it.
@@ -35,9 +38,13 @@ struct SectorResult {
 };
 
 // The result goes to `out` (cleared first; its storage is reused from cell to cell).
+// `rays`, if not empty, runs parallel to `interior_nodes`: a degenerate critical point's sectors
+// (cell/degenerate_points.hpp), each connected along the ray to its point; null for a regular
+// critical point, whose sectors follow from its Hessian.
 void connect_sectors(const BernsteinTriangle &g, const CellNodes &nodes,
                      const std::vector<int> &interior_nodes,
                      const std::vector<CellEdgeNode> &edge_nodes, PathCounters &counters,
-                     SectorResult &out, bool with_paths = false);
+                     SectorResult &out, bool with_paths = false,
+                     std::span<const SectorRays *const> rays = {});
 
 } // namespace hoct

@@ -1,5 +1,6 @@
 #include "exact/cell_phase.hpp"
 
+#include "cell/degenerate_points.hpp"
 #include "cell/sector_connections.hpp"
 #include "poly/gradient_zeros.hpp"
 #include "poly/reference_triangle.hpp"
@@ -7,6 +8,7 @@
 #include "util/stopwatch.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <span>
 
 namespace hoct {
@@ -33,6 +35,12 @@ struct CellScratch {
   std::vector<CellEdgeNode> edge_nodes;
   BernsteinTriangle poly; // the current cell's polynomial (storage reused from cell to cell)
   SectorResult sectors;   // the current cell's connections
+  // The block's degenerate critical points (InteriorCritical::degenerate indexes them), and per
+  // cell of the block those classified (regular ones included) and their largest slack.
+  std::vector<DegenerateCritical> degenerate;
+  int32_t degenerate_count[kCellBlock];
+  double degenerate_slack[kCellBlock];
+  std::vector<const SectorRays *> rays; // the current cell's, parallel to its interior nodes
 };
 
 // The certified connections of regular cell c (its interior critical points: `critical`), a
@@ -80,9 +88,18 @@ uint8_t connect_cell(const Mesh &mesh, const EdgeNodes &en, int64_t c,
     scratch.interior_idx.push_back(static_cast<int>(cn.nodes.size()));
     cn.nodes.push_back({critical[i].uv, critical[i].value, -1 - static_cast<int64_t>(i)});
   }
+  scratch.rays.clear();
+  for (const InteriorCritical &p : critical)
+    if (p.degenerate >= 0) {
+      scratch.rays.assign(critical.size(), nullptr);
+      for (std::size_t i = 0; i < critical.size(); ++i)
+        if (critical[i].degenerate >= 0)
+          scratch.rays[i] = &scratch.degenerate[critical[i].degenerate].rays;
+      break;
+    }
   const SectorResult &r = scratch.sectors;
   connect_sectors(g, cn, scratch.interior_idx, scratch.edge_nodes, out.counters, scratch.sectors,
-                  arc_geometry);
+                  arc_geometry, scratch.rays);
   if (r.failed || r.degenerate)
     return fallback_bit(r.failed ? FallbackReason::CertificationFailed
                                  : FallbackReason::DegenerateEdgeNode);
@@ -107,6 +124,32 @@ uint8_t connect_cell(const Mesh &mesh, const EdgeNodes &en, int64_t c,
       }
     }
   return 0;
+}
+
+// True if an interior critical point's Hessian has an eigenvalue below 1e-3 of the Hessian's
+// scale over the cell: a degenerate point, possibly split by the data's rounding into regular
+// ones whose sectors no path could connect.
+bool nearly_singular_hessian(const BernsteinTriangle &g,
+                             std::span<const InteriorCritical> critical) {
+  const int d = g.degree();
+  if (critical.empty() || d < 2)
+    return false;
+  double scale = 0;
+  for (int b = 0; b <= d - 2; ++b)
+    for (int a = 0; a + b <= d - 2; ++a)
+      scale = std::max(
+          {scale,
+           std::abs(g.coefficient(a + 2, b) - 2 * g.coefficient(a + 1, b) + g.coefficient(a, b)),
+           std::abs(g.coefficient(a, b + 2) - 2 * g.coefficient(a, b + 1) + g.coefficient(a, b))});
+  scale *= d * (d - 1);
+  for (const InteriorCritical &p : critical) {
+    const Mat2 h = g.jet(p.uv[0], p.uv[1]).hessian;
+    const double mean = 0.5 * (h[0][0] + h[1][1]);
+    const double r = std::hypot(0.5 * (h[0][0] - h[1][1]), h[0][1]);
+    if (std::min(std::abs(mean - r), std::abs(mean + r)) <= 1e-3 * scale)
+      return true;
+  }
+  return false;
 }
 
 } // namespace
@@ -135,9 +178,12 @@ CellPhase run_cell_phase(const Mesh &mesh, const EdgeNodes &en, const ExactTreeO
       const int64_t block_end = std::min(end, block + kCellBlock);
       // Pass 1: the cells' interior critical points, and which cells fall back.
       scratch.critical.clear();
+      scratch.degenerate.clear();
       int connect_count = 0;
       for (int64_t c = block; c < block_end; ++c) {
         scratch.critical_first[c - block] = static_cast<int32_t>(scratch.critical.size());
+        scratch.degenerate_count[c - block] = 0;
+        scratch.degenerate_slack[c - block] = 0;
         uint8_t why = 0;
         bool edge_nodes_on = false;
         for (int j = 0; j < 3; ++j) {
@@ -160,6 +206,32 @@ CellPhase run_cell_phase(const Mesh &mesh, const EdgeNodes &en, const ExactTreeO
           const BernsteinTriangle &g = scratch.poly;
           cell = c;
           const GradientZeros z = find_gradient_zeros(g, zero_options, screen);
+          // Zeros the search cannot certify: degenerate critical points, classified by their
+          // sectors where that is certified; else the cell falls back.
+          if (!z.constant && (z.budget_exhausted || z.unresolved > 0)) {
+            DegenerateResolution res =
+                resolve_degenerate_zeros(g, z, zero_options, field.precision());
+            if (res.resolved) {
+              for (const GradientZero &p : res.zeros) {
+                if (p.near_boundary)
+                  why |= fallback_bit(FallbackReason::ZeroNearBoundary);
+                else
+                  scratch.critical.push_back({{p.u, p.v}, g(p.u, p.v)});
+              }
+              for (DegenerateCritical &p : res.points) {
+                scratch.critical.push_back(
+                    {p.uv, p.value, static_cast<int32_t>(scratch.degenerate.size())});
+                scratch.degenerate.push_back(std::move(p));
+              }
+              scratch.degenerate_count[c - block] =
+                  static_cast<int32_t>(res.points.size() + res.regular);
+              scratch.degenerate_slack[c - block] = res.slack;
+              fallback[c] = why;
+              if (!why)
+                scratch.to_connect[connect_count++] = static_cast<int32_t>(c - block);
+              continue;
+            }
+          }
           if (z.constant)
             why |= fallback_bit(FallbackReason::ConstantCell);
           if (z.budget_exhausted)
@@ -189,12 +261,50 @@ CellPhase run_cell_phase(const Mesh &mesh, const EdgeNodes &en, const ExactTreeO
         const std::span<const InteriorCritical> critical(
             scratch.critical.data() + scratch.critical_first[i],
             static_cast<std::size_t>(scratch.critical_first[i + 1] - scratch.critical_first[i]));
-        fallback[block + i] =
-            connect_cell(mesh, en, block + i, critical, opt.arc_geometry, scratch, out);
+        uint8_t why = connect_cell(mesh, en, block + i, critical, opt.arc_geometry, scratch, out);
+        if (why == fallback_bit(FallbackReason::CertificationFailed) &&
+            nearly_singular_hessian(scratch.poly, critical)) {
+          // A sector of an interior critical point no path connects: often a degenerate point
+          // the data's rounding split into nearby regular ones, with tiny Hessians. Classified
+          // by the sectors around them together, the cell is connected once more.
+          cell = block + i;
+          std::vector<Vec2> around;
+          for (const InteriorCritical &p : critical)
+            around.push_back(p.uv);
+          const BernsteinTriangle g(field.degree(cell),
+                                    std::vector<double>(field.coefficients(cell).begin(),
+                                                        field.coefficients(cell).end()));
+          DegenerateResolution res =
+              resolve_degenerate_zeros(g, around, zero_options, field.precision());
+          bool usable = res.resolved;
+          for (const GradientZero &p : res.zeros)
+            usable = usable && !p.near_boundary;
+          if (usable) {
+            std::vector<InteriorCritical> again;
+            for (const GradientZero &p : res.zeros)
+              again.push_back({{p.u, p.v}, g(p.u, p.v)});
+            for (DegenerateCritical &p : res.points) {
+              again.push_back({p.uv, p.value, static_cast<int32_t>(scratch.degenerate.size())});
+              scratch.degenerate.push_back(std::move(p));
+            }
+            why = connect_cell(mesh, en, cell, again, opt.arc_geometry, scratch, out);
+            if (!why) {
+              scratch.degenerate_count[i] += static_cast<int32_t>(res.points.size() + res.regular);
+              scratch.degenerate_slack[i] = std::max(scratch.degenerate_slack[i], res.slack);
+            }
+          }
+        }
+        fallback[block + i] = why;
       }
-      for (int64_t c = block; c < block_end; ++c)
-        if (fallback[c])
+      for (int64_t c = block; c < block_end; ++c) {
+        if (fallback[c]) {
           out.fallback_cells.push_back(c);
+        } else if (scratch.degenerate_count[c - block] > 0) {
+          out.degenerate_points += scratch.degenerate_count[c - block];
+          out.degenerate_slack =
+              std::max(out.degenerate_slack, scratch.degenerate_slack[c - block]);
+        }
+      }
       const auto block_done = clock_type::now();
       out.critical_seconds += seconds_between(block_start, critical_done);
       out.connection_seconds += seconds_between(critical_done, block_done);

@@ -33,6 +33,10 @@ struct alignas(64) CellChunk {
   std::vector<GeoEdge> geo; // with arc geometry: each connection's path (per cell join, split)
   std::vector<int64_t> fallback_cells; // the chunk's cells that fall back, ascending
   int64_t unresolved = 0;              // uncertified interior zeros
+  // Degenerate critical points classified by their sectors in the chunk's regular cells, and
+  // the largest slack (cell/degenerate_points.hpp).
+  int64_t degenerate_points = 0;
+  double degenerate_slack = 0;
   PathCounters counters;
   // Thread time in the two passes over each block of cells (critical points, then connections).
   double critical_seconds = 0, connection_seconds = 0;

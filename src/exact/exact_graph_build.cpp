@@ -58,6 +58,8 @@ ExactCounts exact_counts(const Mesh &mesh, const ExactGraphBuild &b) {
   n.fallback_by_reason = b.degenerate.reasons;
   n.fallback_error = b.degenerate.max_error;
   n.unresolved_interior_zeros = b.totals.unresolved_zeros;
+  n.degenerate_points = b.totals.degenerate_points;
+  n.degenerate_slack = b.totals.degenerate_slack;
   return n;
 }
 

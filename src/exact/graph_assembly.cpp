@@ -40,6 +40,8 @@ ExactGraph assemble_graph(const Mesh &mesh, const EdgeNodes &en, CellPhase &&pha
     counters.failed += ch.counters.failed;
     counters.steps += ch.counters.steps;
     totals.unresolved_zeros += ch.unresolved;
+    totals.degenerate_points += ch.degenerate_points;
+    totals.degenerate_slack = std::max(totals.degenerate_slack, ch.degenerate_slack);
     totals.critical_seconds += ch.critical_seconds;
     totals.connection_seconds += ch.connection_seconds;
   }

@@ -393,6 +393,8 @@ PieceTrees merge_piece_trees(const PieceTrees &a, const PieceTrees &b, bool augm
     c.fallback_by_reason[r] = x.fallback_by_reason[r] + y.fallback_by_reason[r];
   c.fallback_error = std::max(x.fallback_error, y.fallback_error);
   c.unresolved_interior_zeros = x.unresolved_interior_zeros + y.unresolved_interior_zeros;
+  c.degenerate_points = x.degenerate_points + y.degenerate_points;
+  c.degenerate_slack = std::max(x.degenerate_slack, y.degenerate_slack);
   return out;
 }
 

@@ -624,6 +624,20 @@ GradientZeros search_zeros(const BernsteinTriangle &g, const GradientZeroOptions
     }
     return out_u || out_v || out_w;
   };
+  // A box inside one of the excluded squares (all four corners, in reference coordinates).
+  auto excluded = [&](const Box &b) {
+    for (const auto &sq : opt.excluded) {
+      bool inside = true;
+      for (int k = 0; k < 4 && inside; ++k) {
+        const double bu = b.u0 + (k & 1) * b.w, bv = b.v0 + (k >> 1) * b.wy;
+        const Vec2 p = framed ? to_reference(bu, bv) : Vec2{bu, bv};
+        inside = std::abs(p[0] - sq[0]) <= sq[2] && std::abs(p[1] - sq[1]) <= sq[2];
+      }
+      if (inside)
+        return true;
+    }
+    return false;
+  };
   int64_t deep = 0;
   while (!stack.empty()) {
     const Box b = stack.back();
@@ -635,7 +649,7 @@ GradientZeros search_zeros(const BernsteinTriangle &g, const GradientZeroOptions
       out.budget_exhausted = true;
       break;
     }
-    if (outside(b))
+    if (outside(b) || (!opt.excluded.empty() && excluded(b)))
       continue;
     if (excludes_zero(current.data(), sz, mp) || excludes_zero(current.data() + sz, sz, mq))
       continue;
@@ -713,6 +727,7 @@ GradientZeros search_zeros(const BernsteinTriangle &g, const GradientZeroOptions
     }
     if (wmax <= opt.deep_width && ++deep > opt.deep_limit) {
       out.budget_exhausted = true;
+      out.stopped_at = framed ? to_reference(cx, cy) : Vec2{cx, cy};
       break;
     }
     if (wmax <= opt.resolution) {

@@ -9,8 +9,10 @@
 
 #include "poly/bernstein_triangle.hpp"
 
+#include <array>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -41,6 +43,10 @@ struct GradientZeroOptions {
   // reference triangle and its Hessian nearly singular, so that squares never certify.
   std::function<Mat2()> frame;
   double frame_anisotropy = 16;
+  // Squares of the reference triangle (centre u, v and half-width) the caller accounts for
+  // itself (degenerate critical points: cell/degenerate_points.hpp): boxes inside one are not
+  // searched, so whatever zeros they hold are neither reported nor counted.
+  std::vector<std::array<double, 3>> excluded;
 };
 
 struct GradientZeros {
@@ -50,6 +56,9 @@ struct GradientZeros {
   int64_t boxes = 0;             // boxes examined
   int64_t unresolved = 0;        // zeros reported uncertified
   bool framed = false;           // found by the search in the cell's own shape
+  // Where the search stopped at the limit of deep boxes (budget_exhausted): the centre of the
+  // last one, next to a curve of critical points or a degenerate zero.
+  std::optional<Vec2> stopped_at;
 };
 
 // The cheap first look of find_gradient_zeros at a polynomial's coefficients (canonical lattice

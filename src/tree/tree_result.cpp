@@ -120,14 +120,17 @@ void offset_values(TreeResult &t, double reference) {
 
 void set_precision(TreeResult &t, double precision) {
   t.stats.precision = precision;
-  int64_t below = 0, slack = 0;
+  int64_t below = 0, slack = 0, degenerate = 0;
   for (const auto &p : t.pairs) {
     below += t.below_precision(p);
     slack += t.within_fallback_slack(p);
+    degenerate += t.within_degenerate_slack(p);
   }
   t.stats.pairs_below_precision = below;
   if (t.stats.exact && t.stats.exact->fallback_error > 0)
     t.stats.pairs_within_fallback_slack = slack;
+  if (t.stats.exact && t.stats.exact->degenerate_slack > 0)
+    t.stats.pairs_within_degenerate_slack = degenerate;
 }
 
 TreeResult contract_flat(const TreeResult &t) {

@@ -86,9 +86,16 @@ struct TreeResult {
     };
     return fallback(p.birth) || fallback(p.death);
   }
-  // Either: the pair is flagged "uncertain" in the outputs.
+  // A pair within twice the degenerate critical points' slack (ExactCounts::degenerate_slack):
+  // such a node stands for a square of about 1e-6 of its cell, inside which structure that small
+  // is not resolved (a conservative flag: any pair that small).
+  bool within_degenerate_slack(const PersistencePair &p) const {
+    return stats.exact && stats.exact->degenerate_slack > 0 &&
+           p.persistence() <= 2 * stats.exact->degenerate_slack;
+  }
+  // Any of these: the pair is flagged "uncertain" in the outputs.
   bool uncertain(const PersistencePair &p) const {
-    return below_precision(p) || within_fallback_slack(p);
+    return below_precision(p) || within_fallback_slack(p) || within_degenerate_slack(p);
   }
 
   // Counts of nodes by type: minimum, maximum, saddle, regular.

@@ -92,6 +92,8 @@ const std::vector<Entry> &table() {
     e.push_back(exact_entry("fallback_error", &ExactCounts::fallback_error));
     e.push_back(exact_entry("fallback_arcs_contracted", &ExactCounts::fallback_arcs_contracted));
     e.push_back(exact_entry("unresolved_interior_zeros", &ExactCounts::unresolved_interior_zeros));
+    e.push_back(exact_entry("degenerate_points", &ExactCounts::degenerate_points));
+    e.push_back(exact_entry("degenerate_slack", &ExactCounts::degenerate_slack));
     e.push_back(pl_entry("pl_vertices", &PlCounts::vertices));
     e.push_back(pl_entry("pl_triangles", &PlCounts::triangles));
     e.push_back(plain_entry("input_cells", &TreeStats::input_cells));
@@ -103,6 +105,8 @@ const std::vector<Entry> &table() {
     e.push_back(plain_entry("pairs_below_precision", &TreeStats::pairs_below_precision));
     e.push_back(
         plain_entry("pairs_within_fallback_slack", &TreeStats::pairs_within_fallback_slack));
+    e.push_back(
+        plain_entry("pairs_within_degenerate_slack", &TreeStats::pairs_within_degenerate_slack));
     e.push_back(plain_entry("seam_edges", &TreeStats::seam_edges));
     e.push_back(plain_entry("seam_paths_nonmonotone", &TreeStats::seam_paths_nonmonotone));
     // The phases in the order they run.

@@ -40,6 +40,11 @@ struct ExactCounts {
   double fallback_error = 0;
   int64_t fallback_arcs_contracted = 0;
   int64_t unresolved_interior_zeros = 0;
+  // Degenerate critical points (singular Hessian) classified by their sectors
+  // (cell/degenerate_points.hpp), regular ones included, and the largest certified bound on how
+  // far the field strays from such a node's value within the tiny square it stands for.
+  int64_t degenerate_points = 0;
+  double degenerate_slack = 0;
 
   int64_t fallbacks(FallbackReason r) const { return fallback_by_reason[static_cast<int>(r)]; }
 };
@@ -79,6 +84,8 @@ struct TreeStats {
   std::optional<int64_t> pairs_below_precision;
   // Pairs with a fallback node within twice the stand-in's slack (TreeResult::uncertain).
   std::optional<int64_t> pairs_within_fallback_slack;
+  // Pairs within twice the degenerate points' slack (TreeResult::uncertain).
+  std::optional<int64_t> pairs_within_degenerate_slack;
   // A Reeb graph's cut (mesh/cut_surface, tree/path_gluing): the edges cut open, and the seam
   // pieces whose paths in the disks' tree do not rise (glued at their ends only).
   std::optional<int64_t> seam_edges, seam_paths_nonmonotone;
