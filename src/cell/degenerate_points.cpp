@@ -1,6 +1,7 @@
 #include "cell/degenerate_points.hpp"
 
 #include "cell/certified_path.hpp"
+#include "poly/interpolation_error.hpp"
 #include "poly/lagrange_to_bernstein.hpp"
 #include "poly/lattice.hpp"
 #include "poly/root_isolation.hpp"
@@ -142,6 +143,16 @@ int certify_ray(const BernsteinTriangle &g, const Vec2 &c, const Vec2 &p, double
   return -1;
 }
 
+// Removes the zeros inside the squares (centre u, v and half-width): the clusters' own.
+void drop_inside(GradientZeros &z, const std::vector<std::array<double, 3>> &squares) {
+  std::erase_if(z.zeros, [&](const GradientZero &p) {
+    for (const auto &sq : squares)
+      if (std::abs(p.u - sq[0]) <= sq[2] && std::abs(p.v - sq[1]) <= sq[2])
+        return true;
+    return false;
+  });
+}
+
 // Each sign arc's ray, certified below (above) the level: the node's sectors, or false.
 bool classify_on_square(const BernsteinTriangle &g, const BernsteinTriangle &neg, const Vec2 &c,
                         double level, double r, double margin, double tol, SectorRays &out) {
@@ -162,25 +173,25 @@ bool classify_on_square(const BernsteinTriangle &g, const BernsteinTriangle &neg
 
 } // namespace
 
-bool sign_arcs_on_square(const BernsteinTriangle &g, const Vec2 &c, double r, double level,
-                         double tol, std::vector<SignArc> &arcs) {
+bool sign_arcs_on_polyline(const BernsteinTriangle &g, std::span<const Vec2> q, bool closed,
+                           double level, double tol, std::vector<SignArc> &arcs) {
   arcs.clear();
-  const std::array<Vec2, 4> q = {Vec2{c[0] - r, c[1] - r}, Vec2{c[0] + r, c[1] - r},
-                                 Vec2{c[0] + r, c[1] + r}, Vec2{c[0] - r, c[1] + r}};
-  auto at = [&](double s) { // perimeter parameter s in [0, 4)
-    s = std::fmod(s, 4.0);
-    const int k = std::min(3, static_cast<int>(s));
+  const int sides = static_cast<int>(q.size()) - (closed ? 0 : 1);
+  if (sides < 1)
+    return false;
+  auto at = [&](double s) { // parameter s in [0, sides]: side floor(s), from its first point
+    const int k = std::clamp(static_cast<int>(s), 0, sides - 1);
     const double t = s - k;
-    const Vec2 &a = q[k], &b = q[(k + 1) % 4];
+    const Vec2 &a = q[k], &b = q[(k + 1) % q.size()];
     return Vec2{a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1])};
   };
-  std::vector<double> roots; // perimeter parameters, ascending
+  std::vector<double> roots; // polyline parameters, ascending
   thread_local std::vector<Root> side_roots;
-  for (int k = 0; k < 4; ++k) {
-    BernsteinPoly side = g.restrict_to_segment(q[k], q[(k + 1) % 4]);
+  for (int k = 0; k < sides; ++k) {
+    BernsteinPoly side = g.restrict_to_segment(q[k], q[(k + 1) % q.size()]);
     for (double &x : side.coefficients())
       x -= level;
-    if (!(std::abs(side[0]) > tol))
+    if (!(std::abs(side[0]) > tol) || !(std::abs(side[side.degree()]) > tol))
       return false; // a corner on (or too near) the level
     bool zero = false;
     find_roots(side.coefficients(), side_roots, RootOptions{}, &zero);
@@ -192,28 +203,45 @@ bool sign_arcs_on_square(const BernsteinTriangle &g, const Vec2 &c, double r, do
       roots.push_back(k + root.t);
     }
   }
-  // The arcs between consecutive roots (cyclically); with no root, the whole boundary.
+  // The arcs between consecutive roots (cyclically on a closed polyline); with no root, the
+  // whole polyline.
   const std::size_t n = roots.size();
-  if (n % 2 != 0)
+  if (closed && n % 2 != 0)
     return false; // simple roots alternate the sign: an odd count means a miscount
-  const std::size_t count = std::max<std::size_t>(n, 1);
+  const std::size_t count = closed ? std::max<std::size_t>(n, 1) : n + 1;
   for (std::size_t i = 0; i < count; ++i) {
-    const double a = n ? roots[i] : 0.0;
-    const double b = n ? (i + 1 < n ? roots[i + 1] : roots[0] + 4) : 4.0;
+    double a, b;
+    if (closed) {
+      a = n ? roots[i] : 0.0;
+      b = n ? (i + 1 < n ? roots[i + 1] : roots[0] + sides) : sides;
+    } else {
+      a = i == 0 ? 0.0 : roots[i - 1];
+      b = i == n ? sides : roots[i];
+    }
     constexpr int kSamples = 24;
     Vec2 best{};
     double best_h = 0;
     for (int k = 1; k < kSamples; ++k) {
-      const Vec2 x = at(a + (b - a) * k / kSamples);
-      const double h = g(x[0], x[1]) - level;
+      double x = a + (b - a) * k / kSamples;
+      if (closed && x >= sides)
+        x -= sides;
+      const Vec2 p = at(x);
+      const double h = g(p[0], p[1]) - level;
       if (std::abs(h) > std::abs(best_h))
-        best_h = h, best = x;
+        best_h = h, best = p;
     }
     if (!(std::abs(best_h) > tol))
       return false;
     arcs.push_back({best_h < 0, best});
   }
   return true;
+}
+
+bool sign_arcs_on_square(const BernsteinTriangle &g, const Vec2 &c, double r, double level,
+                         double tol, std::vector<SignArc> &arcs) {
+  const std::array<Vec2, 4> q = {Vec2{c[0] - r, c[1] - r}, Vec2{c[0] + r, c[1] - r},
+                                 Vec2{c[0] + r, c[1] + r}, Vec2{c[0] - r, c[1] + r}};
+  return sign_arcs_on_polyline(g, q, true, level, tol, arcs);
 }
 
 static std::vector<Vec2> degenerate_candidates(const GradientZeros &z) {
@@ -287,6 +315,7 @@ DegenerateResolution resolve_degenerate_zeros(const BernsteinTriangle &g,
       opt.excluded.push_back({c[0], c[1], rho});
     }
     z = find_gradient_zeros(g, opt);
+    drop_inside(z, opt.excluded); // certified before the search reached the square: the cluster's
     return !z.constant;
   };
   // Each cluster classified on a square that holds no other zero and stays inside the cell,
@@ -372,6 +401,110 @@ DegenerateResolution resolve_degenerate_zeros(const BernsteinTriangle &g,
       return res;
   }
   return at_largest;
+}
+
+} // namespace hoct
+
+namespace hoct {
+
+CornerResolution resolve_critical_corners(const BernsteinTriangle &g,
+                                          const std::array<bool, 3> &critical,
+                                          const std::array<double, 3> &reach,
+                                          const GradientZeroOptions &options, bool search,
+                                          double value_noise) {
+  CornerResolution out;
+  double scale = 0;
+  for (double x : g.coefficients())
+    scale = std::max(scale, std::abs(x));
+  if (!(scale > 0))
+    return out;
+  const double margin = 1e-12 * scale; // as PathField's
+  const double rounding = 64 * (g.degree() + 1) * kEps * scale;
+  BernsteinTriangle neg(g.degree(), g.coefficients());
+  for (double &x : neg.coefficients())
+    x = -x;
+  const Vec2 corner[3] = {{0, 0}, {1, 0}, {0, 1}};
+  const double hessian = InterpolationError(g).hessian_bound();
+  thread_local std::vector<SignArc> arcs;
+  for (double rho : kExclusions) {
+    GradientZeros z;
+    if (search) {
+      GradientZeroOptions opt = options;
+      opt.excluded.clear();
+      for (int k = 0; k < 3; ++k)
+        if (critical[k])
+          opt.excluded.push_back({corner[k][0], corner[k][1], rho});
+      if (rho >= 1e-3)
+        opt.deep_limit = std::min<int64_t>(opt.deep_limit, 4);
+      z = find_gradient_zeros(g, opt);
+      if (z.constant)
+        return out;
+      if (z.budget_exhausted || z.unresolved > 0)
+        continue;
+      // A zero the search certified before reaching a square, inside it, is the corner's own.
+      drop_inside(z, opt.excluded);
+      bool near = false;
+      for (const GradientZero &p : z.zeros)
+        near = near || p.near_boundary;
+      if (near)
+        return out; // a zero on the cell's boundary elsewhere: the caller falls back
+    }
+    CornerResolution res;
+    res.zeros = z.zeros;
+    bool ok = true;
+    for (int k = 0; k < 3 && ok; ++k) {
+      if (!critical[k])
+        continue;
+      const Vec2 &v = corner[k], &next = corner[(k + 1) % 3], &prev = corner[(k + 2) % 3];
+      double r0 = std::min(reach[k], 0.25);
+      for (const GradientZero &p : z.zeros)
+        r0 = std::min(r0, 0.5 * (linf(v, {p.u, p.v}) - p.radius));
+      const double level = g.coefficient(k == 1 ? g.degree() : 0, k == 2 ? g.degree() : 0);
+      // Where the gradient at the corner exceeds what the Hessian can cancel within B, B holds
+      // no zero and the corner stands for nothing but itself (its gradient is orthogonal to an
+      // edge there, not zero).
+      const Vec2 grad = g.jet(v[0], v[1]).gradient;
+      const bool zero_free = std::hypot(grad[0], grad[1]) > 2 * std::sqrt(2.0) * hessian * rho;
+      const double tol = 4 * rounding + 2 * value_noise +
+                         (zero_free ? 0.0 : 2 * slack_on_square(g, v, rho, level, rounding));
+      bool classified = false;
+      SectorRays rays;
+      for (int t = 0; t < kSquareTries && !classified; ++t) {
+        const double r = r0 / std::pow(4.0, t);
+        if (!(r >= 4 * rho))
+          break;
+        const std::array<Vec2, 2> side = {
+            Vec2{v[0] + r * (next[0] - v[0]), v[1] + r * (next[1] - v[1])},
+            Vec2{v[0] + r * (prev[0] - v[0]), v[1] + r * (prev[1] - v[1])}};
+        if (!sign_arcs_on_polyline(g, side, false, level, tol, arcs))
+          continue;
+        rays = {};
+        classified = true;
+        // The first and last arcs go on along the edges (their chains); the others are inside.
+        for (std::size_t i = 1; i + 1 < arcs.size() && classified; ++i) {
+          const SignArc &a = arcs[i];
+          const int skip = a.lower ? certify_ray(g, v, a.point, level, margin, tol)
+                                   : certify_ray(neg, v, a.point, -level, margin, tol);
+          classified = skip >= 0;
+          (a.lower ? rays.lower : rays.upper).push_back(a.point);
+          (a.lower ? rays.lower_skip : rays.upper_skip).push_back(skip);
+        }
+      }
+      if (!classified) {
+        ok = false;
+        break;
+      }
+      res.corners[k] = std::move(rays);
+      res.slack = std::max(res.slack, tol);
+    }
+    if (ok) {
+      res.resolved = true;
+      return res;
+    }
+    if (!search)
+      return out; // the exclusion does not matter: nothing else to try
+  }
+  return out;
 }
 
 } // namespace hoct

@@ -25,7 +25,9 @@
 #include "poly/bernstein_triangle.hpp"
 #include "poly/gradient_zeros.hpp"
 
+#include <array>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -70,6 +72,10 @@ struct SignArc {
 // is not simple, lies on a corner, or an arc's samples are within tol of the level.
 bool sign_arcs_on_square(const BernsteinTriangle &g, const Vec2 &c, double r, double level,
                          double tol, std::vector<SignArc> &arcs);
+// The same along a polyline through the points q (closed: back to q[0]), in order from q[0];
+// on an open polyline the first arc starts at q[0] and the last ends at q.back().
+bool sign_arcs_on_polyline(const BernsteinTriangle &g, std::span<const Vec2> q, bool closed,
+                           double level, double tol, std::vector<SignArc> &arcs);
 
 // Classifies the unresolved zeros of `first` (find_gradient_zeros of g with `options`), or says
 // it cannot (resolved = false). `value_noise`: how far g's values may be off from the rounding of
@@ -85,5 +91,29 @@ DegenerateResolution resolve_degenerate_zeros(const BernsteinTriangle &g,
                                               std::span<const Vec2> candidates,
                                               const GradientZeroOptions &options,
                                               double value_noise = 0);
+
+// Critical points at the cell's corners: a vertex where the derivative of an edge through it
+// vanishes (the gradient is zero there, or orthogonal to that edge), which the rule "a corner's
+// lower part touches a descending edge" does not cover. In the corner triangle T = (v,
+// v + r (next corner - v), v + r (previous corner - v)), r below half the distance to the first
+// node on either edge (so each edge is strictly monotone on T's sides along it), the sign arcs
+// of g - g(v) on the side opposite v are exact; the first and last continue along the edges,
+// whose chains connect them; every other arc is a sector inside the cell and gets a certified
+// ray from v. Completeness as for interior points: the search, run with a square B around each
+// such corner excluded, certifies every other zero, and T holds none of them.
+struct CornerResolution {
+  bool resolved = false;
+  std::vector<GradientZero> zeros;                  // the cell's other zeros (certified)
+  std::array<std::optional<SectorRays>, 3> corners; // the interior sectors of critical corners
+  double slack = 0;
+};
+
+// `critical[k]`: corner k needs it; `reach[k]`: the largest r there (in edge parameters);
+// `search`: the gradient may vanish in the cell (else it has no zero: no search).
+CornerResolution resolve_critical_corners(const BernsteinTriangle &g,
+                                          const std::array<bool, 3> &critical,
+                                          const std::array<double, 3> &reach,
+                                          const GradientZeroOptions &options, bool search,
+                                          double value_noise = 0);
 
 } // namespace hoct

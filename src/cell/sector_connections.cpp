@@ -25,13 +25,15 @@ void eigen2(const Mat2 &h, double lambda[2], Vec2 vec[2]) {
 void connect_sectors(const BernsteinTriangle &g, const CellNodes &cn,
                      const std::vector<int> &interior, const std::vector<CellEdgeNode> &edge,
                      PathCounters &counters, SectorResult &out, bool with_paths,
-                     std::span<const SectorRays *const> rays) {
+                     std::span<const SectorRays *const> rays,
+                     const std::array<const SectorRays *, 3> &corner_rays) {
   out.join.clear();
   out.split.clear();
   out.join_paths.clear();
   out.split_paths.clear();
   out.failed = out.degenerate = false;
-  if (interior.empty() && edge.empty())
+  const bool corners = corner_rays[0] || corner_rays[1] || corner_rays[2];
+  if (interior.empty() && edge.empty() && !corners)
     return; // only corners: every sector lies along an edge
   // The fields the paths follow, set when a sector needs one: g for descending paths, -g for
   // ascending ones (most cells of a smooth field have edge nodes whose sectors all lie along
@@ -92,6 +94,15 @@ void connect_sectors(const BernsteinTriangle &g, const CellNodes &cn,
       out.split_paths.push_back(path);
   };
 
+  // A critical corner's sectors inside the cell (the corners are nodes 0, 1, 2).
+  for (int k = 0; k < 3; ++k)
+    if (const SectorRays *s = corner_rays[k]) {
+      const Vec2 &p = cn.nodes[k].uv;
+      for (std::size_t i = 0; i < s->lower.size(); ++i)
+        lower(k, {s->lower[i][0] - p[0], s->lower[i][1] - p[1]}, s->lower_skip[i]);
+      for (std::size_t i = 0; i < s->upper.size(); ++i)
+        upper(k, {s->upper[i][0] - p[0], s->upper[i][1] - p[1]}, s->upper_skip[i]);
+    }
   auto hessian = [&](const Vec2 &p) { return g.jet(p[0], p[1]).hessian; };
   for (std::size_t i = 0; i < interior.size(); ++i) {
     const int node = interior[i];

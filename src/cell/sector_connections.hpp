@@ -40,11 +40,13 @@ struct SectorResult {
 // The result goes to `out` (cleared first; its storage is reused from cell to cell).
 // `rays`, if not empty, runs parallel to `interior_nodes`: a degenerate critical point's sectors
 // (cell/degenerate_points.hpp), each connected along the ray to its point; null for a regular
-// critical point, whose sectors follow from its Hessian.
+// critical point, whose sectors follow from its Hessian. `corner_rays[k]`: the sectors inside the
+// cell of a critical corner k (resolve_critical_corners), each connected along its ray.
 void connect_sectors(const BernsteinTriangle &g, const CellNodes &nodes,
                      const std::vector<int> &interior_nodes,
                      const std::vector<CellEdgeNode> &edge_nodes, PathCounters &counters,
                      SectorResult &out, bool with_paths = false,
-                     std::span<const SectorRays *const> rays = {});
+                     std::span<const SectorRays *const> rays = {},
+                     const std::array<const SectorRays *, 3> &corner_rays = {});
 
 } // namespace hoct

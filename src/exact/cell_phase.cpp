@@ -4,10 +4,12 @@
 #include "cell/sector_connections.hpp"
 #include "poly/gradient_zeros.hpp"
 #include "poly/reference_triangle.hpp"
+#include "poly/root_isolation.hpp"
 #include "util/parallel_for.hpp"
 #include "util/stopwatch.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <span>
 
@@ -39,15 +41,75 @@ struct CellScratch {
   // cell of the block those classified (regular ones included) and their largest slack.
   std::vector<DegenerateCritical> degenerate;
   int32_t degenerate_count[kCellBlock];
+  int32_t corner_count[kCellBlock];
   double degenerate_slack[kCellBlock];
   std::vector<const SectorRays *> rays; // the current cell's, parallel to its interior nodes
+  // The block's critical corners' sectors, and per cell of the block the index of each
+  // corner's (-1: not critical).
+  std::vector<SectorRays> corner_rays;
+  std::array<int32_t, 3> corner_index[kCellBlock];
 };
 
-// The certified connections of regular cell c (its interior critical points: `critical`), a
+// Which corners of cell c are critical: an edge whose derivative vanishes at the vertex
+// (kEdgeRootAtVertex; g: the cell's polynomial).
+std::array<bool, 3> critical_corners(const Mesh &mesh, const EdgeNodes &en, int64_t c,
+                                     const BernsteinTriangle &g) {
+  std::array<bool, 3> critical{false, false, false};
+  const EdgeNodeOptions defaults;
+  std::vector<Root> roots;
+  for (int k = 0; k < 3; ++k) {
+    if (en.degeneracy[mesh.topology.cell_edge(c, k)] != kEdgeRootAtVertex)
+      continue;
+    const BernsteinPoly d = g.edge(k).derivative();
+    find_roots(d.coefficients(), roots);
+    for (const Root &r : roots) {
+      if (r.t <= defaults.vertex_tolerance)
+        critical[k] = true;
+      if (r.t >= 1 - defaults.vertex_tolerance)
+        critical[(k + 1) % 3] = true;
+    }
+  }
+  return critical;
+}
+
+// The corner of the reference triangle a zero found near its boundary lies at (within 1e-6), or
+// -1.
+int corner_of(const GradientZero &p) {
+  constexpr double kNear = 1e-6;
+  if (p.u <= kNear && p.v <= kNear)
+    return 0;
+  if (p.u >= 1 - kNear && p.v <= kNear)
+    return 1;
+  if (p.u <= kNear && p.v >= 1 - kNear)
+    return 2;
+  return -1;
+}
+
+// Per corner of cell c, half the distance (in edge parameters) to the nearest node on its two
+// edges: each edge is strictly monotone from the corner up to there.
+std::array<double, 3> corner_reach(const Mesh &mesh, const EdgeNodes &en, int64_t c) {
+  const Topology &topo = mesh.topology;
+  std::array<double, 3> reach{0.5, 0.5, 0.5};
+  for (int k = 0; k < 3; ++k) {
+    const int64_t e = topo.cell_edge(c, k);
+    const bool rev = topo.edge_reversed(c, k);
+    const int64_t n = en.count(e);
+    for (int64_t i = 0; i < n; ++i) {
+      const double t = en.nodes[en.offset[e] + i].t;
+      const double s = rev ? 1 - t : t; // from corner k towards corner k + 1
+      reach[k] = std::min(reach[k], 0.5 * s);
+      reach[(k + 1) % 3] = std::min(reach[(k + 1) % 3], 0.5 * (1 - s));
+    }
+  }
+  return reach;
+}
+
+// The certified connections of regular cell c (the block's cell block_offset; its interior
+// critical points: `critical`; its critical corners' sectors: scratch.corner_index), a
 // cell with nodes besides its corners (with only those, every sector lies along an edge),
 // appended with its interior nodes to `out`; or, when a sector cannot be connected, the reason
 // for falling back (nothing appended).
-uint8_t connect_cell(const Mesh &mesh, const EdgeNodes &en, int64_t c,
+uint8_t connect_cell(const Mesh &mesh, const EdgeNodes &en, int64_t c, int32_t block_offset,
                      std::span<const InteriorCritical> critical, bool arc_geometry,
                      CellScratch &scratch, CellChunk &out) {
   const Topology &topo = mesh.topology;
@@ -88,6 +150,11 @@ uint8_t connect_cell(const Mesh &mesh, const EdgeNodes &en, int64_t c,
     scratch.interior_idx.push_back(static_cast<int>(cn.nodes.size()));
     cn.nodes.push_back({critical[i].uv, critical[i].value, -1 - static_cast<int64_t>(i)});
   }
+  std::array<const SectorRays *, 3> corner_rays{nullptr, nullptr, nullptr};
+  if (block_offset >= 0)
+    for (int k = 0; k < 3; ++k)
+      if (const int32_t at = scratch.corner_index[block_offset][k]; at >= 0)
+        corner_rays[k] = &scratch.corner_rays[at];
   scratch.rays.clear();
   for (const InteriorCritical &p : critical)
     if (p.degenerate >= 0) {
@@ -99,7 +166,7 @@ uint8_t connect_cell(const Mesh &mesh, const EdgeNodes &en, int64_t c,
     }
   const SectorResult &r = scratch.sectors;
   connect_sectors(g, cn, scratch.interior_idx, scratch.edge_nodes, out.counters, scratch.sectors,
-                  arc_geometry, scratch.rays);
+                  arc_geometry, scratch.rays, corner_rays);
   if (r.failed || r.degenerate)
     return fallback_bit(r.failed ? FallbackReason::CertificationFailed
                                  : FallbackReason::DegenerateEdgeNode);
@@ -179,24 +246,61 @@ CellPhase run_cell_phase(const Mesh &mesh, const EdgeNodes &en, const ExactTreeO
       // Pass 1: the cells' interior critical points, and which cells fall back.
       scratch.critical.clear();
       scratch.degenerate.clear();
+      scratch.corner_rays.clear();
       int connect_count = 0;
+      // The critical corners `marks` of cell c classified (scratch.poly holds its polynomial):
+      // its other zeros and the corners' sectors go to the scratch; false if not certified.
+      auto try_corners = [&](int64_t c, const std::array<bool, 3> &marks, bool search) {
+        CornerResolution res =
+            resolve_critical_corners(scratch.poly, marks, corner_reach(mesh, en, c), zero_options,
+                                     search, field.precision());
+        if (!res.resolved)
+          return false;
+        int32_t count = 0;
+        for (const GradientZero &p : res.zeros)
+          scratch.critical.push_back({{p.u, p.v}, scratch.poly(p.u, p.v)});
+        for (int k = 0; k < 3; ++k)
+          if (res.corners[k]) {
+            scratch.corner_index[c - block][k] = static_cast<int32_t>(scratch.corner_rays.size());
+            scratch.corner_rays.push_back(std::move(*res.corners[k]));
+            ++count;
+          }
+        scratch.corner_count[c - block] = count;
+        scratch.degenerate_slack[c - block] = res.slack;
+        return true;
+      };
       for (int64_t c = block; c < block_end; ++c) {
         scratch.critical_first[c - block] = static_cast<int32_t>(scratch.critical.size());
         scratch.degenerate_count[c - block] = 0;
+        scratch.corner_count[c - block] = 0;
         scratch.degenerate_slack[c - block] = 0;
         uint8_t why = 0;
         bool edge_nodes_on = false;
+        // Every degenerate edge of the cell only has its derivative vanish at a vertex.
+        bool at_vertices = true;
         for (int j = 0; j < 3; ++j) {
           const int64_t e = topo.cell_edge(c, j);
-          if (en.degeneracy[e] != kEdgeOk)
+          if (en.degeneracy[e] != kEdgeOk) {
             why |= fallback_bit(FallbackReason::DegenerateEdge);
+            at_vertices = at_vertices && en.degeneracy[e] == kEdgeRootAtVertex;
+          }
           edge_nodes_on |= en.count(e) != 0;
         }
+        scratch.corner_index[c - block] = {-1, -1, -1};
         // Most cells: no gradient zero, decided on the stored coefficients.
         const GradientScreen screen = screen_gradient(field.coefficients(c), field.degree(c),
                                                       zero_options.constant_tolerance);
         if (screen.verdict == GradientScreen::kConstant) {
           why |= fallback_bit(FallbackReason::ConstantCell);
+        } else if (why && at_vertices) {
+          // Critical points at the cell's corners: classified by their sectors inside the cell.
+          scratch.poly.assign(field.degree(c), field.coefficients(c));
+          cell = c;
+          if (try_corners(c, critical_corners(mesh, en, c, scratch.poly),
+                          screen.verdict != GradientScreen::kNoZero)) {
+            why = 0;
+            edge_nodes_on = true; // connected, whatever it holds
+          }
         } else if (screen.verdict != GradientScreen::kNoZero &&
                    !(why & fallback_bit(FallbackReason::DegenerateEdge))) {
           // (A cell with a degenerate edge falls back whatever its interior holds, and the
@@ -232,6 +336,25 @@ CellPhase run_cell_phase(const Mesh &mesh, const EdgeNodes &en, const ExactTreeO
               continue;
             }
           }
+          // A zero at a corner (the vertex is a critical point, its edges monotone to
+          // rounding): the corner's sectors inside the cell, classified.
+          std::array<bool, 3> at_corner{false, false, false};
+          bool only_corners = !z.constant && !z.budget_exhausted && z.unresolved == 0;
+          for (const GradientZero &p : z.zeros)
+            if (p.near_boundary) {
+              const int k = corner_of(p);
+              if (k >= 0)
+                at_corner[k] = true;
+              else
+                only_corners = false;
+            }
+          if (only_corners && (at_corner[0] || at_corner[1] || at_corner[2])) {
+            if (try_corners(c, at_corner, true)) {
+              fallback[c] = 0;
+              scratch.to_connect[connect_count++] = static_cast<int32_t>(c - block);
+              continue;
+            }
+          }
           if (z.constant)
             why |= fallback_bit(FallbackReason::ConstantCell);
           if (z.budget_exhausted)
@@ -261,7 +384,8 @@ CellPhase run_cell_phase(const Mesh &mesh, const EdgeNodes &en, const ExactTreeO
         const std::span<const InteriorCritical> critical(
             scratch.critical.data() + scratch.critical_first[i],
             static_cast<std::size_t>(scratch.critical_first[i + 1] - scratch.critical_first[i]));
-        uint8_t why = connect_cell(mesh, en, block + i, critical, opt.arc_geometry, scratch, out);
+        uint8_t why =
+            connect_cell(mesh, en, block + i, i, critical, opt.arc_geometry, scratch, out);
         if (why == fallback_bit(FallbackReason::CertificationFailed) &&
             nearly_singular_hessian(scratch.poly, critical)) {
           // A sector of an interior critical point no path connects: often a degenerate point
@@ -287,7 +411,7 @@ CellPhase run_cell_phase(const Mesh &mesh, const EdgeNodes &en, const ExactTreeO
               again.push_back({p.uv, p.value, static_cast<int32_t>(scratch.degenerate.size())});
               scratch.degenerate.push_back(std::move(p));
             }
-            why = connect_cell(mesh, en, cell, again, opt.arc_geometry, scratch, out);
+            why = connect_cell(mesh, en, cell, i, again, opt.arc_geometry, scratch, out);
             if (!why) {
               scratch.degenerate_count[i] += static_cast<int32_t>(res.points.size() + res.regular);
               scratch.degenerate_slack[i] = std::max(scratch.degenerate_slack[i], res.slack);
@@ -299,8 +423,9 @@ CellPhase run_cell_phase(const Mesh &mesh, const EdgeNodes &en, const ExactTreeO
       for (int64_t c = block; c < block_end; ++c) {
         if (fallback[c]) {
           out.fallback_cells.push_back(c);
-        } else if (scratch.degenerate_count[c - block] > 0) {
+        } else if (scratch.degenerate_count[c - block] > 0 || scratch.corner_count[c - block] > 0) {
           out.degenerate_points += scratch.degenerate_count[c - block];
+          out.critical_corners += scratch.corner_count[c - block];
           out.degenerate_slack =
               std::max(out.degenerate_slack, scratch.degenerate_slack[c - block]);
         }

@@ -35,7 +35,7 @@ struct alignas(64) CellChunk {
   int64_t unresolved = 0;              // uncertified interior zeros
   // Degenerate critical points classified by their sectors in the chunk's regular cells, and
   // the largest slack (cell/degenerate_points.hpp).
-  int64_t degenerate_points = 0;
+  int64_t degenerate_points = 0, critical_corners = 0;
   double degenerate_slack = 0;
   PathCounters counters;
   // Thread time in the two passes over each block of cells (critical points, then connections).

@@ -59,6 +59,7 @@ ExactCounts exact_counts(const Mesh &mesh, const ExactGraphBuild &b) {
   n.fallback_error = b.degenerate.max_error;
   n.unresolved_interior_zeros = b.totals.unresolved_zeros;
   n.degenerate_points = b.totals.degenerate_points;
+  n.critical_corners = b.totals.critical_corners;
   n.degenerate_slack = b.totals.degenerate_slack;
   return n;
 }

@@ -44,6 +44,9 @@ struct ExactCounts {
   // (cell/degenerate_points.hpp), regular ones included, and the largest certified bound on how
   // far the field strays from such a node's value within the tiny square it stands for.
   int64_t degenerate_points = 0;
+  // Cell corners at a critical vertex (an edge's derivative vanishes there) whose sectors inside
+  // the cell were classified (a vertex counts once per cell around it).
+  int64_t critical_corners = 0;
   double degenerate_slack = 0;
 
   int64_t fallbacks(FallbackReason r) const { return fallback_by_reason[static_cast<int>(r)]; }

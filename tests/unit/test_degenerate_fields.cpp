@@ -2,6 +2,7 @@
 // monkey saddles, ties, non-finite, huge and tiny values. Each gives a tree that passes the
 // invariant checker (analysis/tree_check.hpp) or a clear hoct::Error.
 #include "analysis/tree_check.hpp"
+#include "cell/edge_nodes.hpp"
 #include "exact/exact_contour_tree.hpp"
 #include "mesh/mesh.hpp"
 #include "pl/pl_contour_tree.hpp"
@@ -9,6 +10,8 @@
 #include "test_meshes.hpp"
 #include "tree/persistence.hpp"
 #include "util/error.hpp"
+
+#include "cell/edge_nodes.hpp"
 
 #include <gtest/gtest.h>
 
@@ -229,9 +232,10 @@ namespace {
 // An edge whose derivative vanishes at a vertex within rounding: along v = 0,
 // f = x^3 / 3 + 1e-14 x + 2 y has f' = x^2 + 1e-14, whose Bernstein coefficients are all
 // positive but whose value at x = 0 is 1e-14 of its scale: root isolation reports a tangency at
-// the vertex, and the edge is degenerate (its cell falls back, counted). The screen that skips
-// monotone edges before building their polynomials must agree (it did not at first: it only
-// asked for coefficients of one sign).
+// the vertex, and the edge is degenerate. The screen that skips monotone edges before building
+// their polynomials must agree (it did not at first: it only asked for coefficients of one
+// sign). The cell does not fall back: its corner at the vertex is classified by its sectors
+// inside the cell (none there: the tree is the minimum (0, 0) and the maximum (0, 1)).
 TEST(DegenerateFields, NearTangentEdgeDerivativeIsDegenerate) {
   std::mt19937_64 rng(3);
   const MeshInput in = testing::lagrange_mesh(
@@ -241,12 +245,19 @@ TEST(DegenerateFields, NearTangentEdgeDerivativeIsDegenerate) {
         return x * x * x / 3 + 1e-14 * x + 2 * p[1];
       },
       rng, false);
-  const TreeResult t = exact_contour_tree(build_mesh(in));
-  double degenerate_edges = -1;
-  for (const auto &[k, v] : t.stats.entries())
-    if (k == "fallback_degenerate_edge")
-      degenerate_edges = v;
-  EXPECT_EQ(degenerate_edges, 1);
+  const Mesh mesh = build_mesh(in);
+  const EdgeNodes en = find_edge_nodes(mesh.topology, mesh.field);
+  int root_at_vertex = 0;
+  for (int64_t e = 0; e < mesh.topology.num_edges(); ++e)
+    root_at_vertex += en.degeneracy[e] == kEdgeRootAtVertex;
+  EXPECT_EQ(root_at_vertex, 1);
+  const TreeResult t = exact_contour_tree(mesh);
+  ASSERT_TRUE(t.stats.exact);
+  EXPECT_EQ(t.stats.exact->fallback_cells, 0);
+  EXPECT_EQ(t.stats.exact->critical_corners, 1);
+  ASSERT_EQ(t.nodes.size(), 2u);
+  EXPECT_EQ(t.nodes[0].value, 0);
+  EXPECT_EQ(t.nodes[1].value, 2);
 }
 
 } // namespace

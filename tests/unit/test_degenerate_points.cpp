@@ -55,11 +55,15 @@ const Field2 kCusp = [](double x, double y) {
   return u * u * u * u - w * w; // its upper sectors |w| < u^2 are cusps
 };
 
-MeshInput on_grid(int degree, const Field2 &f, uint64_t seed = 3) {
+MeshInput on_grid(int degree, const Field2 &f, uint64_t seed = 3, bool jitter = true) {
   std::mt19937_64 rng(seed);
   std::vector<Vec3> v;
   std::vector<std::array<int64_t, 3>> t;
   testing::square_grid(6, rng, v, t);
+  if (!jitter) // the lattice itself: (0.5, 0.5) is a vertex, x = 0.5 and y = 0.5 lines of edges
+    for (int i = 0; i <= 6; ++i)
+      for (int j = 0; j <= 6; ++j)
+        v[static_cast<std::size_t>(i * 7 + j)] = {j / 6.0, i / 6.0, 0};
   return testing::lagrange_mesh(
       v, t, [degree](int64_t) { return degree; }, nullptr,
       [&f](const Vec3 &p) { return f(p[0], p[1]); }, rng);
@@ -71,8 +75,8 @@ struct Computed {
   TreeResult tree;
 };
 
-Computed computed(int degree, const Field2 &f) {
-  Computed c{on_grid(degree, f), {}, {}};
+Computed computed(int degree, const Field2 &f, bool jitter = true) {
+  Computed c{on_grid(degree, f, 3, jitter), {}, {}};
   c.mesh = build_mesh(c.input);
   c.tree = compute_tree(c.mesh, TreeRequest{}, &c.input).tree;
   return c;
@@ -88,9 +92,10 @@ std::string shape(const TreeResult &t) {
 }
 
 // The node at the critical point (0.47, 0.52), or null.
-const TreeNode *node_at_the_point(const TreeResult &t, double tolerance) {
+const TreeNode *node_at_the_point(const TreeResult &t, double tolerance, double x = 0.47,
+                                  double y = 0.52) {
   for (const auto &n : t.nodes)
-    if (std::hypot(n.position[0] - 0.47, n.position[1] - 0.52) <= tolerance)
+    if (std::hypot(n.position[0] - x, n.position[1] - y) <= tolerance)
       return &n;
   return nullptr;
 }
@@ -108,7 +113,9 @@ void expect_certified(const Computed &c, int64_t classified) {
   const TreeResult &t = c.tree;
   ASSERT_TRUE(t.stats.exact);
   EXPECT_EQ(t.stats.exact->fallback_cells, 0);
-  EXPECT_EQ(t.stats.exact->degenerate_points, classified);
+  if (classified >= 0) {
+    EXPECT_EQ(t.stats.exact->degenerate_points, classified);
+  }
   EXPECT_GT(t.stats.exact->degenerate_slack, 0);
   EXPECT_LT(t.stats.exact->degenerate_slack, 1e-8);
   const TreeCheckReport report = check_tree(t, c.mesh);
@@ -199,6 +206,38 @@ TEST(DegeneratePoints, ACuspSaddleHasItsShapeClassifiedOrNot) {
     // turn miss them).
     const TreeCheckReport report = check_tree(c.tree, c.mesh);
     EXPECT_TRUE(report.ok()) << report.summary();
+  }
+}
+
+TEST(DegeneratePoints, CriticalVerticesAreClassifiedInTheirCells) {
+  // A maximum and a saddle exactly at the vertex (0.5, 0.5) of the unjittered grid (P3), as
+  // symmetric data put them: every edge's derivative vanishes there, and along the boundary
+  // x = 0.5 and y = 0.5 meet edges whose derivative vanishes at a vertex too. Before, each such
+  // cell fell back (19 and 11 cells); now each corner's sectors inside its cell are classified.
+  const Field2 peak = [](double x, double y) {
+    const double a = x - 0.5, b = y - 0.5;
+    return -a * a - b * b + 0.3 * a * a * b;
+  };
+  const Field2 saddle = [](double x, double y) {
+    const double a = x - 0.5, b = y - 0.5;
+    return 1.1 * a * a - b * b + 0.3 * a * b * b;
+  };
+  for (bool is_peak : {true, false}) {
+    SCOPED_TRACE(is_peak ? "maximum" : "saddle");
+    const Computed c = computed(3, is_peak ? peak : saddle, false);
+    const TreeNode *n = node_at_the_point(c.tree, 1e-12, 0.5, 0.5);
+    ASSERT_NE(n, nullptr);
+    EXPECT_EQ(n->location, NodeLocation::Vertex);
+    EXPECT_EQ(n->value, 0);
+    if (is_peak) {
+      EXPECT_EQ(n->type, NodeType::Maximum);
+    } else {
+      EXPECT_EQ(n->type, NodeType::Saddle);
+      EXPECT_EQ(n->down, 2);
+      EXPECT_EQ(n->up, 2);
+    }
+    EXPECT_GE(c.tree.stats.exact->critical_corners, 6); // the six cells around the vertex
+    expect_certified(c, 0);
   }
 }
 
