@@ -797,14 +797,17 @@ private:
       for (double r : {1e-4, 1e-3, 1e-2}) {
         if (r > 0.5 * ring.max_radius)
           break;
-        if (!sign_arcs_on_square(g, {u, v}, r, relative, eps, arcs))
-          continue;
-        Sectors sec{0, 0};
-        for (const SignArc &a : arcs)
-          ++(a.lower ? sec.lower : sec.upper);
-        if (type_matches(nd.type, sec, true) && down <= sec.lower && up <= sec.upper) {
-          ++report_.nodes_checked;
-          return;
+        for (double angle : {0.0, 0.3}) { // turned if a zero line runs through a corner
+          if (!sign_arcs_on_square(g, {u, v}, r, relative, eps, arcs, angle))
+            continue;
+          Sectors sec{0, 0};
+          for (const SignArc &a : arcs)
+            ++(a.lower ? sec.lower : sec.upper);
+          if (type_matches(nd.type, sec, true) && down <= sec.lower && up <= sec.upper) {
+            ++report_.nodes_checked;
+            return;
+          }
+          break;
         }
       }
     }

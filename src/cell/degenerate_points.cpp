@@ -22,6 +22,8 @@ constexpr double kExclusions[] = {1e-6, 1e-5, 1e-4, 1e-3};
 // Classification squares Q: at most this half-width, and each retry a quarter of the last.
 constexpr double kLargestSquare = 0.05;
 constexpr int kSquareTries = 3;
+// The squares' turns (radians), tried in order where a corner lies on the level.
+constexpr double kSquareAngles[] = {0.0, 0.3, 0.7};
 // More degenerate points than this in one cell: a curve of critical points, not isolated ones.
 constexpr std::size_t kMaxClusters = 4;
 
@@ -155,10 +157,11 @@ void drop_inside(GradientZeros &z, const std::vector<std::array<double, 3>> &squ
 
 // Each sign arc's ray, certified below (above) the level: the node's sectors, or false.
 bool classify_on_square(const BernsteinTriangle &g, const BernsteinTriangle &neg, const Vec2 &c,
-                        double level, double r, double margin, double tol, SectorRays &out) {
+                        double level, double r, double angle, double margin, double tol,
+                        SectorRays &out) {
   out = {};
   thread_local std::vector<SignArc> arcs;
-  if (!sign_arcs_on_square(g, c, r, level, tol, arcs))
+  if (!sign_arcs_on_square(g, c, r, level, tol, arcs, angle))
     return false;
   for (const SignArc &a : arcs) {
     const int skip = a.lower ? certify_ray(g, c, a.point, level, margin, tol)
@@ -238,9 +241,13 @@ bool sign_arcs_on_polyline(const BernsteinTriangle &g, std::span<const Vec2> q, 
 }
 
 bool sign_arcs_on_square(const BernsteinTriangle &g, const Vec2 &c, double r, double level,
-                         double tol, std::vector<SignArc> &arcs) {
-  const std::array<Vec2, 4> q = {Vec2{c[0] - r, c[1] - r}, Vec2{c[0] + r, c[1] - r},
-                                 Vec2{c[0] + r, c[1] + r}, Vec2{c[0] - r, c[1] + r}};
+                         double tol, std::vector<SignArc> &arcs, double angle) {
+  const double co = std::cos(angle), si = std::sin(angle);
+  std::array<Vec2, 4> q;
+  const double corner[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
+  for (int k = 0; k < 4; ++k)
+    q[k] = {c[0] + r * (co * corner[k][0] - si * corner[k][1]),
+            c[1] + r * (si * corner[k][0] + co * corner[k][1])};
   return sign_arcs_on_polyline(g, q, true, level, tol, arcs);
 }
 
@@ -346,7 +353,12 @@ DegenerateResolution resolve_degenerate_zeros(const BernsteinTriangle &g,
         const double r = r0 / std::pow(4.0, t);
         if (!(r >= 4 * rho))
           break;
-        classified = classify_on_square(g, neg, c, point.value, r, margin, tol, point.rays);
+        // Turned where a zero line of g - g(c) runs through a corner (a symmetric field along
+        // a diagonal of the reference square): the turned square reaches r sqrt 2 at most.
+        for (double angle : kSquareAngles)
+          if (!classified && (angle == 0 || r * std::sqrt(2.0) <= r0))
+            classified =
+                classify_on_square(g, neg, c, point.value, r, angle, margin, tol, point.rays);
       }
       if (!classified)
         return DegenerateResolution{};

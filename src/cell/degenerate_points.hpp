@@ -67,11 +67,12 @@ struct SignArc {
 };
 
 // The sign arcs of g - level on the boundary of the square of half-width r around c (sides
-// parallel to the axes of the reference triangle), from the exact roots of g - level on its four
-// sides, in order around it (one arc for the whole boundary if there is no root); false if a root
-// is not simple, lies on a corner, or an arc's samples are within tol of the level.
+// parallel to the axes of the reference triangle, turned by `angle` radians), from the exact roots
+// of g - level on its four sides, in order around it (one arc for the whole boundary if there is no
+// root); false if a root is not simple, lies on a corner, or an arc's samples are within tol of the
+// level.
 bool sign_arcs_on_square(const BernsteinTriangle &g, const Vec2 &c, double r, double level,
-                         double tol, std::vector<SignArc> &arcs);
+                         double tol, std::vector<SignArc> &arcs, double angle = 0);
 // The same along a polyline through the points q (closed: back to q[0]), in order from q[0];
 // on an open polyline the first arc starts at q[0] and the last ends at q.back().
 bool sign_arcs_on_polyline(const BernsteinTriangle &g, std::span<const Vec2> q, bool closed,

@@ -299,6 +299,18 @@ TEST(DegeneratePoints, SignArcsOnASquareSeeCuspsExactly) {
   EXPECT_EQ(arcs(kInflection, {0.27, 0.27}, 0.01), "1 1");
   EXPECT_EQ(arcs(kFlatMinimum, {0.27, 0.27}, 0.01), "0 1");
   EXPECT_EQ(arcs(kCusp, {0.3, 0.25}, 0.01), "1 1");
+
+  // A monkey saddle one of whose zero lines is the square's diagonal u = -v: a corner lies on
+  // the level, the square fails; turned by 0.3 rad it sees the six sectors.
+  const Field2 diagonal = [](double x, double y) {
+    const double a = (x - 0.3 + y - 0.3) / std::sqrt(2.0), b = (y - x) / std::sqrt(2.0);
+    return a * a * a - 3 * a * b * b;
+  };
+  const BernsteinTriangle g = on_reference(3, diagonal);
+  std::vector<SignArc> a;
+  EXPECT_FALSE(sign_arcs_on_square(g, {0.3, 0.3}, 0.01, g(0.3, 0.3), 1e-15, a));
+  ASSERT_TRUE(sign_arcs_on_square(g, {0.3, 0.3}, 0.01, g(0.3, 0.3), 1e-15, a, 0.3));
+  EXPECT_EQ(a.size(), 6u);
 }
 
 TEST(DegeneratePoints, UnresolvableZerosAreNotClassified) {
