@@ -145,6 +145,21 @@ int certify_ray(const BernsteinTriangle &g, const Vec2 &c, const Vec2 &p, double
   return -1;
 }
 
+// What the classifications need of g: its coefficient scale, the paths' margin (as
+// PathField's), the rounding level of its values, and -g for ascending rays.
+struct Classifier {
+  explicit Classifier(const BernsteinTriangle &g) : neg(g.degree(), g.coefficients()) {
+    for (double &x : neg.coefficients()) {
+      scale = std::max(scale, std::abs(x));
+      x = -x;
+    }
+    margin = 1e-12 * scale;
+    rounding = 64 * (g.degree() + 1) * kEps * scale;
+  }
+  double scale = 0, margin = 0, rounding = 0;
+  BernsteinTriangle neg;
+};
+
 // Removes the zeros inside the squares (centre u, v and half-width): the clusters' own.
 void drop_inside(GradientZeros &z, const std::vector<std::array<double, 3>> &squares) {
   std::erase_if(z.zeros, [&](const GradientZero &p) {
@@ -291,16 +306,11 @@ DegenerateResolution resolve_degenerate_zeros(const BernsteinTriangle &g,
   };
   if (clusters.empty())
     return out;
-  double scale = 0;
-  for (double x : g.coefficients())
-    scale = std::max(scale, std::abs(x));
-  if (!(scale > 0))
+  const Classifier f(g);
+  if (!(f.scale > 0))
     return out;
-  const double margin = 1e-12 * scale; // as PathField's
-  const double rounding = 64 * (g.degree() + 1) * kEps * scale;
-  BernsteinTriangle neg(g.degree(), g.coefficients());
-  for (double &x : neg.coefficients())
-    x = -x;
+  const double margin = f.margin, rounding = f.rounding;
+  const BernsteinTriangle &neg = f.neg;
   for (Cluster &k : clusters) {
     k.c = polish(g, k.c, 1e-4);
     if (flat_along_null_direction(g, k.c, rounding + value_noise))
@@ -415,26 +425,17 @@ DegenerateResolution resolve_degenerate_zeros(const BernsteinTriangle &g,
   return at_largest;
 }
 
-} // namespace hoct
-
-namespace hoct {
-
 CornerResolution resolve_critical_corners(const BernsteinTriangle &g,
                                           const std::array<bool, 3> &critical,
                                           const std::array<double, 3> &reach,
                                           const GradientZeroOptions &options, bool search,
                                           double value_noise) {
   CornerResolution out;
-  double scale = 0;
-  for (double x : g.coefficients())
-    scale = std::max(scale, std::abs(x));
-  if (!(scale > 0))
+  const Classifier f(g);
+  if (!(f.scale > 0))
     return out;
-  const double margin = 1e-12 * scale; // as PathField's
-  const double rounding = 64 * (g.degree() + 1) * kEps * scale;
-  BernsteinTriangle neg(g.degree(), g.coefficients());
-  for (double &x : neg.coefficients())
-    x = -x;
+  const double margin = f.margin, rounding = f.rounding;
+  const BernsteinTriangle &neg = f.neg;
   const Vec2 corner[3] = {{0, 0}, {1, 0}, {0, 1}};
   const double hessian = InterpolationError(g).hessian_bound();
   thread_local std::vector<SignArc> arcs;

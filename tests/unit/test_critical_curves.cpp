@@ -10,6 +10,8 @@
 #include "mesh/mesh.hpp"
 #include "pipeline/compute_tree.hpp"
 #include "test_meshes.hpp"
+#include "test_refinement_convergence.hpp"
+#include "test_tree_shape.hpp"
 
 #include <gtest/gtest.h>
 
@@ -119,13 +121,7 @@ MeshInput on_regular_grid(int n, int degree, const Field2 &f) {
 }
 
 // "type(down,up)" per node, ascending.
-std::string shape(const TreeResult &t) {
-  std::string s;
-  for (const auto &n : t.nodes)
-    s += std::string(s.empty() ? "" : " ") + to_string(n.type) + "(" + std::to_string(n.down) +
-         "," + std::to_string(n.up) + ")";
-  return s;
-}
+std::string shape(const TreeResult &t) { return testing::tree_shape(t); }
 
 TEST(CriticalCurves, AClosedRidgeIsOneNodeOverTheInsideAndTheOutside) {
   // -(r^2 - 0.09)^2 around (0.5, 0.5), P4 on 128 cells: the circle r = 0.3 is the maximum (0);
@@ -229,23 +225,7 @@ TEST(CriticalCurves, RefinementsConvergeToTheExactTree) {
     SCOPED_TRACE("field " + std::to_string(f));
     const Mesh mesh = build_mesh(fields[f]);
     const TreeResult exact = compute_tree(mesh, TreeRequest{}, &fields[f]).tree;
-    auto diagram = [](const TreeResult &t) {
-      std::vector<std::array<double, 2>> d;
-      for (const auto &p : t.pairs)
-        d.push_back({p.birth_value, p.death_value});
-      return d;
-    };
-    double last = INFINITY;
-    for (int k : {4, 16, 64}) {
-      TreeRequest rq;
-      rq.method = TreeMethod::Refine;
-      rq.refine = k;
-      const double d =
-          bottleneck_distance(diagram(exact), diagram(compute_tree(mesh, rq, &fields[f]).tree));
-      EXPECT_LE(d, last * 1.0001 + 1e-12) << "k=" << k;
-      last = d;
-    }
-    EXPECT_LT(last, 1e-3);
+    testing::expect_refinements_converge(mesh, fields[f], exact);
   }
 }
 

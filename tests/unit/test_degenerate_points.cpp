@@ -10,6 +10,8 @@
 #include "pipeline/compute_tree.hpp"
 #include "poly/lattice.hpp"
 #include "test_meshes.hpp"
+#include "test_refinement_convergence.hpp"
+#include "test_tree_shape.hpp"
 #include "tree/persistence.hpp"
 
 #include <gtest/gtest.h>
@@ -83,13 +85,7 @@ Computed computed(int degree, const Field2 &f, bool jitter = true) {
 }
 
 // "type(down,up)" per node, ascending.
-std::string shape(const TreeResult &t) {
-  std::string s;
-  for (const auto &n : t.nodes)
-    s += std::string(s.empty() ? "" : " ") + to_string(n.type) + "(" + std::to_string(n.down) +
-         "," + std::to_string(n.up) + ")";
-  return s;
-}
+std::string shape(const TreeResult &t) { return testing::tree_shape(t); }
 
 // The node at the critical point (0.47, 0.52), or null.
 const TreeNode *node_at_the_point(const TreeResult &t, double tolerance, double x = 0.47,
@@ -98,13 +94,6 @@ const TreeNode *node_at_the_point(const TreeResult &t, double tolerance, double 
     if (std::hypot(n.position[0] - x, n.position[1] - y) <= tolerance)
       return &n;
   return nullptr;
-}
-
-std::vector<std::array<double, 2>> diagram(const TreeResult &t) {
-  std::vector<std::array<double, 2>> d;
-  for (const auto &p : t.pairs)
-    d.push_back({p.birth_value, p.death_value});
-  return d;
 }
 
 // The common checks: no fallback, one point classified, the checker passes, and the PL trees of
@@ -120,17 +109,7 @@ void expect_certified(const Computed &c, int64_t classified) {
   EXPECT_LT(t.stats.exact->degenerate_slack, 1e-8);
   const TreeCheckReport report = check_tree(t, c.mesh);
   EXPECT_TRUE(report.ok()) << report.summary();
-  double last = INFINITY;
-  for (int k : {4, 16, 64}) {
-    TreeRequest rq;
-    rq.method = TreeMethod::Refine;
-    rq.refine = k;
-    const double d =
-        bottleneck_distance(diagram(t), diagram(compute_tree(c.mesh, rq, &c.input).tree));
-    EXPECT_LE(d, last * 1.0001 + 1e-12) << "k=" << k;
-    last = d;
-  }
-  EXPECT_LT(last, 1e-3);
+  testing::expect_refinements_converge(c.mesh, c.input, t);
 }
 
 TEST(DegeneratePoints, AMonkeySaddleIsOneSaddleWithThreeSectorsEachWay) {
