@@ -71,11 +71,13 @@ void print_tree_body(const TreeResult &tree, double total_seconds) {
                 static_cast<long long>(tree.stats.exact->fallback_arcs_contracted),
                 static_cast<long long>(tree.stats.pairs_within_fallback_slack.value_or(0)));
   if (tree.stats.exact && tree.stats.exact->degenerate_slack > 0)
-    std::printf("\n  degenerate critical points: %lld inside cells and %lld cell corner(s) at "
-                "critical vertices classified by their sectors (each within %.3g of the field on "
-                "the square it stands for; %lld pair(s) within twice that, flagged uncertain)",
+    std::printf("\n  degenerate critical points: %lld inside cells, %lld cell corner(s) at "
+                "critical vertices and %lld critical curve piece(s) classified by their sectors "
+                "(each within %.3g of the field on the region it stands for; %lld pair(s) within "
+                "twice that, flagged uncertain)",
                 static_cast<long long>(tree.stats.exact->degenerate_points),
                 static_cast<long long>(tree.stats.exact->critical_corners),
+                static_cast<long long>(tree.stats.exact->critical_curves),
                 tree.stats.exact->degenerate_slack,
                 static_cast<long long>(tree.stats.pairs_within_degenerate_slack.value_or(0)));
   std::printf("\n  stats:");

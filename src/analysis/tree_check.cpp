@@ -154,6 +154,14 @@ private:
     const int64_t components =
         mesh_.complete ? std::max<int64_t>(1, mesh_.topology.components()) : 1;
     deg_.assign(n_, {0, 0});
+    flat_end_.assign(static_cast<std::size_t>(n_), 0);
+    double magnitude = 0;
+    for (const auto &nd : tree_.nodes)
+      magnitude = std::max(magnitude, std::abs(nd.value));
+    // As contract_flat (tree/tree_result.cpp) decides what is flat.
+    const double flat =
+        (n_ > 0 ? 1e-12 * (tree_.nodes.back().value - tree_.nodes.front().value) : 0.0) +
+        2 * std::numeric_limits<double>::epsilon() * magnitude;
     for (int64_t i = 0; i + 1 < n_; ++i)
       if (tree_.nodes[i + 1].value < tree_.nodes[i].value)
         fail("order", {i, i + 1}, {},
@@ -180,6 +188,8 @@ private:
       const int64_t hi = lo == x ? y : x;
       ++deg_[lo][0];
       ++deg_[hi][1];
+      if (std::abs(tree_.nodes[x].value - tree_.nodes[y].value) <= flat)
+        flat_end_[static_cast<std::size_t>(x)] = flat_end_[static_cast<std::size_t>(y)] = 1;
       if (uf.find(x) == uf.find(y)) {
         // A loop of the level sets: only where the surface has holes or handles.
         if (max_loops_ == 0)
@@ -709,6 +719,10 @@ private:
                   " nodes of one value (skipped)");
       return;
     }
+    if (flat_end_[static_cast<std::size_t>(i)]) {
+      skip(i, node_str(i) + " is one of a flat region's nodes, left uncontracted (skipped)");
+      return;
+    }
     const double u = nd.uv[0], v = nd.uv[1];
     Ring ring;
     switch (classify_location(u, v)) {
@@ -881,6 +895,9 @@ private:
   bool sphere_ = false;
   int64_t max_loops_ = 0;               // of a Reeb graph on this surface (max_reeb_loops)
   std::vector<std::array<int, 2>> deg_; // up, down
+  // Nodes with an arc of length zero (to flat-region rounding): a flat region left uncontracted
+  // (--keep-flat, the augmented tree), such as a ridge's pieces cell by cell.
+  std::vector<char> flat_end_;
   std::vector<int64_t> vertex_offset_;
   std::vector<std::pair<int64_t, int>> vertex_cells_;
   TreeCheckReport report_;

@@ -123,10 +123,8 @@ double slack_on_square(const BernsteinTriangle &g, const Vec2 &c, double rho, do
   return m + (lagrange_to_bernstein_norm(d) + 1) * rounding;
 }
 
-// The number of leading Bernstein coefficients of g on the segment c -> p that equal `level`
-// within `tol` (at least 1: the first is g(c)), if g is certified below `level` - margin on the
-// rest of the segment (the coefficients from there on, the segment split at tau where that is
-// too coarse); else -1.
+} // namespace
+
 int certify_ray(const BernsteinTriangle &g, const Vec2 &c, const Vec2 &p, double level,
                 double margin, double tol) {
   const BernsteinPoly r = g.restrict_to_segment(c, p);
@@ -144,6 +142,8 @@ int certify_ray(const BernsteinTriangle &g, const Vec2 &c, const Vec2 &p, double
   }
   return -1;
 }
+
+namespace {
 
 // What the classifications need of g: its coefficient scale, the paths' margin (as
 // PathField's), the rounding level of its values, and -g for ascending rays.

@@ -38,6 +38,9 @@ namespace hoct {
 struct SectorRays {
   std::vector<Vec2> lower, upper;
   std::vector<int> lower_skip, upper_skip;
+  // Where each ray starts, if not at the node's own position (a critical curve's rays start on
+  // the curve: cell/critical_curves.hpp); empty: at the node.
+  std::vector<Vec2> lower_from, upper_from;
 };
 
 struct DegenerateCritical {
@@ -77,6 +80,12 @@ bool sign_arcs_on_square(const BernsteinTriangle &g, const Vec2 &c, double r, do
 // on an open polyline the first arc starts at q[0] and the last ends at q.back().
 bool sign_arcs_on_polyline(const BernsteinTriangle &g, std::span<const Vec2> q, bool closed,
                            double level, double tol, std::vector<SignArc> &arcs);
+
+// The number of leading Bernstein coefficients of g on the segment c -> p that equal `level`
+// within `tol` (at least 1: the first is g(c)), if g is certified below `level` - margin on the
+// rest of the segment; else -1. For rays above the level, pass -g and -level.
+int certify_ray(const BernsteinTriangle &g, const Vec2 &c, const Vec2 &p, double level,
+                double margin, double tol);
 
 // Classifies the unresolved zeros of `first` (find_gradient_zeros of g with `options`), or says
 // it cannot (resolved = false). `value_noise`: how far g's values may be off from the rounding of

@@ -63,12 +63,13 @@ void connect_sectors(const BernsteinTriangle &g, const CellNodes &cn,
   std::vector<Vec2> *want = with_paths ? &path : nullptr;
   // Each sector is tried along up to two directions (the second only if the first fails); the
   // cell fails when neither gives a certified path.
-  auto lower = [&](int node, const Vec2 &dir, int skip, const Vec2 *alt = nullptr) {
-    int m =
-        connect_lower(down(), cn, vals, cn.nodes[node].uv, vals[node], dir, skip, counters, want);
+  // `from`: where the path starts, if not at the node (a critical curve's anchor).
+  auto lower = [&](int node, const Vec2 &dir, int skip, const Vec2 *alt = nullptr,
+                   const Vec2 *from = nullptr) {
+    const Vec2 &start = from ? *from : cn.nodes[node].uv;
+    int m = connect_lower(down(), cn, vals, start, vals[node], dir, skip, counters, want);
     if (m < 0 && alt)
-      m = connect_lower(down(), cn, vals, cn.nodes[node].uv, vals[node], *alt, skip, counters,
-                        want);
+      m = connect_lower(down(), cn, vals, start, vals[node], *alt, skip, counters, want);
     if (m < 0) {
       ++counters.failed;
       out.failed = true;
@@ -78,12 +79,12 @@ void connect_sectors(const BernsteinTriangle &g, const CellNodes &cn,
     if (with_paths)
       out.join_paths.push_back(path);
   };
-  auto upper = [&](int node, const Vec2 &dir, int skip, const Vec2 *alt = nullptr) {
-    int m = connect_lower(up(), cn, neg_vals, cn.nodes[node].uv, neg_vals[node], dir, skip,
-                          counters, want);
+  auto upper = [&](int node, const Vec2 &dir, int skip, const Vec2 *alt = nullptr,
+                   const Vec2 *from = nullptr) {
+    const Vec2 &start = from ? *from : cn.nodes[node].uv;
+    int m = connect_lower(up(), cn, neg_vals, start, neg_vals[node], dir, skip, counters, want);
     if (m < 0 && alt)
-      m = connect_lower(up(), cn, neg_vals, cn.nodes[node].uv, neg_vals[node], *alt, skip, counters,
-                        want);
+      m = connect_lower(up(), cn, neg_vals, start, neg_vals[node], *alt, skip, counters, want);
     if (m < 0) {
       ++counters.failed;
       out.failed = true;
@@ -109,10 +110,14 @@ void connect_sectors(const BernsteinTriangle &g, const CellNodes &cn,
     const Vec2 &p = cn.nodes[node].uv;
     if (!rays.empty() && rays[i]) {
       const SectorRays &s = *rays[i];
-      for (std::size_t k = 0; k < s.lower.size(); ++k)
-        lower(node, {s.lower[k][0] - p[0], s.lower[k][1] - p[1]}, s.lower_skip[k]);
-      for (std::size_t k = 0; k < s.upper.size(); ++k)
-        upper(node, {s.upper[k][0] - p[0], s.upper[k][1] - p[1]}, s.upper_skip[k]);
+      for (std::size_t k = 0; k < s.lower.size(); ++k) {
+        const Vec2 &a = s.lower_from.empty() ? p : s.lower_from[k];
+        lower(node, {s.lower[k][0] - a[0], s.lower[k][1] - a[1]}, s.lower_skip[k], nullptr, &a);
+      }
+      for (std::size_t k = 0; k < s.upper.size(); ++k) {
+        const Vec2 &a = s.upper_from.empty() ? p : s.upper_from[k];
+        upper(node, {s.upper[k][0] - a[0], s.upper[k][1] - a[1]}, s.upper_skip[k], nullptr, &a);
+      }
       continue;
     }
     double lambda[2];

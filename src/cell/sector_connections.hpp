@@ -19,6 +19,7 @@ struct InteriorCritical {
   Vec2 uv;
   double value;
   int32_t degenerate = -1; // its sectors, if a degenerate point: an index the caller resolves
+  int32_t curve = -1;      // the same for a critical curve (cell/critical_curves.hpp)
 };
 
 // An edge node of the cell as classification needs it.

@@ -1,5 +1,6 @@
 #include "exact/cell_phase.hpp"
 
+#include "cell/critical_curves.hpp"
 #include "cell/degenerate_points.hpp"
 #include "cell/sector_connections.hpp"
 #include "poly/gradient_zeros.hpp"
@@ -11,6 +12,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
+#include <optional>
 #include <span>
 
 namespace hoct {
@@ -22,6 +25,9 @@ using clock_type = Stopwatch::clock;
 // connections, so that each pass is timed once per block, not per cell (a clock read costs
 // about as much as a cell without critical points).
 constexpr int64_t kCellBlock = 512;
+
+// Points of a critical curve that paths from the cell's other nodes may end at.
+constexpr std::size_t kCurveTargets = 8;
 
 // Per-thread buffers of the cell phase, reused from cell to cell.
 struct CellScratch {
@@ -48,6 +54,11 @@ struct CellScratch {
   // corner's (-1: not critical).
   std::vector<SectorRays> corner_rays;
   std::array<int32_t, 3> corner_index[kCellBlock];
+  // The block's critical curves (InteriorCritical::curve indexes them), and per cell of the block
+  // how many.
+  std::vector<CriticalCurve> curves;
+  int32_t curve_count[kCellBlock];
+  std::vector<Vec2> boundary_points; // the current cell's corners and edge nodes
 };
 
 // Which corners of cell c are critical: an edge whose derivative vanishes at the vertex
@@ -150,6 +161,22 @@ uint8_t connect_cell(const Mesh &mesh, const EdgeNodes &en, int64_t c, int32_t b
     scratch.interior_idx.push_back(static_cast<int>(cn.nodes.size()));
     cn.nodes.push_back({critical[i].uv, critical[i].value, -1 - static_cast<int64_t>(i)});
   }
+  // A critical curve's anchors: more points of the same node, where paths may end. Its edge
+  // nodes are the node too (joined below): their sectors are the curve's.
+  bool curves = false;
+  for (std::size_t i = 0; i < critical.size(); ++i)
+    if (critical[i].curve >= 0) {
+      curves = true;
+      const CriticalCurve &cv = scratch.curves[static_cast<std::size_t>(critical[i].curve)];
+      // At most kCurveTargets of them, spread along it: each is a target every path tries.
+      const std::size_t stride = (cv.anchors.size() + kCurveTargets - 1) / kCurveTargets;
+      for (std::size_t k = 0; k < cv.anchors.size(); k += stride)
+        cn.nodes.push_back({cv.anchors[k], cv.value, -1 - static_cast<int64_t>(i)});
+      std::erase_if(scratch.edge_nodes, [&](const CellEdgeNode &e) {
+        return std::find(cv.boundary_nodes.begin(), cv.boundary_nodes.end(), e.node) !=
+               cv.boundary_nodes.end();
+      });
+    }
   std::array<const SectorRays *, 3> corner_rays{nullptr, nullptr, nullptr};
   if (block_offset >= 0)
     for (int k = 0; k < 3; ++k)
@@ -157,11 +184,13 @@ uint8_t connect_cell(const Mesh &mesh, const EdgeNodes &en, int64_t c, int32_t b
         corner_rays[k] = &scratch.corner_rays[at];
   scratch.rays.clear();
   for (const InteriorCritical &p : critical)
-    if (p.degenerate >= 0) {
+    if (p.degenerate >= 0 || p.curve >= 0) {
       scratch.rays.assign(critical.size(), nullptr);
       for (std::size_t i = 0; i < critical.size(); ++i)
         if (critical[i].degenerate >= 0)
           scratch.rays[i] = &scratch.degenerate[critical[i].degenerate].rays;
+        else if (critical[i].curve >= 0)
+          scratch.rays[i] = &scratch.curves[static_cast<std::size_t>(critical[i].curve)].rays;
       break;
     }
   const SectorResult &r = scratch.sectors;
@@ -179,6 +208,17 @@ uint8_t connect_cell(const Mesh &mesh, const EdgeNodes &en, int64_t c, int32_t b
     out.join.push_back({ref(a), ref(b)});
   for (auto [a, b] : r.split)
     out.split.push_back({ref(a), ref(b)});
+  // A critical curve's corners and edge nodes: the same node, in both graphs.
+  std::vector<std::pair<int64_t, int64_t>> same;
+  if (curves)
+    for (std::size_t i = 0; i < critical.size(); ++i)
+      if (critical[i].curve >= 0)
+        for (int b : scratch.curves[static_cast<std::size_t>(critical[i].curve)].boundary_nodes) {
+          same.emplace_back(cn.nodes[static_cast<std::size_t>(b)].ref,
+                            -1 - static_cast<int64_t>(i));
+          out.join.push_back({ref(same.back().first), ref(same.back().second)});
+          out.split.push_back({ref(same.back().first), ref(same.back().second)});
+        }
   if (arc_geometry)
     for (int side = 0; side < 2; ++side) {
       const auto &edges = side == 0 ? r.join : r.split;
@@ -189,6 +229,8 @@ uint8_t connect_cell(const Mesh &mesh, const EdgeNodes &en, int64_t c, int32_t b
           inner.push_back(mesh.geometry.position(c, paths[i][k][0], paths[i][k][1]));
         out.geo.push_back({ref(edges[i].first), ref(edges[i].second), std::move(inner)});
       }
+      for (auto [a, b] : same)
+        out.geo.push_back({ref(a), ref(b), {}});
     }
   return 0;
 }
@@ -214,6 +256,45 @@ bool nearly_singular_hessian(const BernsteinTriangle &g,
     const double mean = 0.5 * (h[0][0] + h[1][1]);
     const double r = std::hypot(0.5 * (h[0][0] - h[1][1]), h[0][1]);
     if (std::min(std::abs(mean - r), std::abs(mean + r)) <= 1e-3 * scale)
+      return true;
+  }
+  return false;
+}
+
+// True if a certified zero's Hessian, in the cell's own shape (frame T: H' = T^-T H T^-1, so
+// that a sliver's anisotropy does not count), has eigenvalues a million times apart: a ridge or
+// valley that the data's rounding split into regular points.
+// (The frame is asked for only where the reference Hessian is that singular to 1e-2 already: it
+// is the rare case, and the cell's shape changes the ratio by at most its condition squared.)
+bool split_ridge(const BernsteinTriangle &g, const GradientZeros &z,
+                 const std::function<Mat2()> &frame) {
+  auto ratio = [](const Mat2 &h) {
+    const double mean = 0.5 * (h[0][0] + h[1][1]);
+    const double r = std::hypot(0.5 * (h[0][0] - h[1][1]), 0.5 * (h[0][1] + h[1][0]));
+    const double lo = std::min(std::abs(mean - r), std::abs(mean + r));
+    const double hi = std::max(std::abs(mean - r), std::abs(mean + r));
+    return hi > 0 ? lo / hi : 1.0;
+  };
+  std::optional<Mat2> inv;
+  for (const GradientZero &p : z.zeros) {
+    const Mat2 h = g.jet(p.u, p.v).hessian;
+    if (!(ratio(h) <= 1e-2))
+      continue;
+    if (!inv) {
+      const Mat2 t = frame();
+      const double det = t[0][0] * t[1][1] - t[0][1] * t[1][0];
+      if (!(std::abs(det) > 0))
+        return false;
+      inv = Mat2{{{t[1][1] / det, -t[0][1] / det}, {-t[1][0] / det, t[0][0] / det}}};
+    }
+    Mat2 m{}, hp{}; // m = H inv, hp = inv^T m
+    for (int i = 0; i < 2; ++i)
+      for (int j = 0; j < 2; ++j)
+        m[i][j] = h[i][0] * (*inv)[0][j] + h[i][1] * (*inv)[1][j];
+    for (int i = 0; i < 2; ++i)
+      for (int j = 0; j < 2; ++j)
+        hp[i][j] = (*inv)[0][i] * m[0][j] + (*inv)[1][i] * m[1][j];
+    if (ratio(hp) <= 1e-6)
       return true;
   }
   return false;
@@ -246,6 +327,7 @@ CellPhase run_cell_phase(const Mesh &mesh, const EdgeNodes &en, const ExactTreeO
       // Pass 1: the cells' interior critical points, and which cells fall back.
       scratch.critical.clear();
       scratch.degenerate.clear();
+      scratch.curves.clear();
       scratch.corner_rays.clear();
       int connect_count = 0;
       // The critical corners `marks` of cell c classified (scratch.poly holds its polynomial):
@@ -269,8 +351,55 @@ CellPhase run_cell_phase(const Mesh &mesh, const EdgeNodes &en, const ExactTreeO
         scratch.degenerate_slack[c - block] = res.slack;
         return true;
       };
+      // The critical curves of cell c (scratch.poly holds its polynomial): classified, their
+      // nodes go to the scratch; false if not certified.
+      // With `degenerate_edges`, the nodes of the cell's degenerate edges (multiple or flat
+      // roots of the edge's derivative, which the edge rule cannot classify) must lie on a curve.
+      auto try_curves = [&](int64_t c, bool degenerate_edges = false) {
+        std::vector<Vec2> &pts = scratch.boundary_points;
+        pts.assign(std::begin(kReferenceCorner), std::end(kReferenceCorner));
+        thread_local std::vector<int> must;
+        must.clear();
+        if (degenerate_edges) {
+          const std::array<bool, 3> corners = critical_corners(mesh, en, c, scratch.poly);
+          for (int k = 0; k < 3; ++k)
+            if (corners[k])
+              must.push_back(k);
+        }
+        for (int k = 0; k < 3; ++k) {
+          const int64_t e = topo.cell_edge(c, k);
+          const bool rev = topo.edge_reversed(c, k);
+          const int64_t n = en.count(e);
+          for (int64_t i = 0; i < n; ++i) {
+            const int64_t gi = rev ? en.offset[e] + n - 1 - i : en.offset[e] + i;
+            if (degenerate_edges && (en.degeneracy[e] & ~kEdgeRootAtVertex) != 0)
+              must.push_back(static_cast<int>(pts.size()));
+            pts.push_back(point_on_edge(k, rev ? 1 - en.nodes[gi].t : en.nodes[gi].t));
+          }
+        }
+        CurveResolution res = resolve_critical_curves(scratch.poly, pts, field.precision());
+        if (!res.resolved)
+          return false;
+        for (int p : must) {
+          bool on = false;
+          for (const CriticalCurve &cv : res.curves)
+            on = on || std::find(cv.boundary_nodes.begin(), cv.boundary_nodes.end(), p) !=
+                           cv.boundary_nodes.end();
+          if (!on)
+            return false;
+        }
+        for (CriticalCurve &cv : res.curves) {
+          scratch.critical.push_back(
+              {cv.uv, cv.value, -1, static_cast<int32_t>(scratch.curves.size())});
+          scratch.curves.push_back(std::move(cv));
+        }
+        scratch.curve_count[c - block] = static_cast<int32_t>(res.curves.size());
+        scratch.degenerate_slack[c - block] = res.slack;
+        return true;
+      };
       for (int64_t c = block; c < block_end; ++c) {
         scratch.critical_first[c - block] = static_cast<int32_t>(scratch.critical.size());
+        scratch.curve_count[c - block] = 0;
         scratch.degenerate_count[c - block] = 0;
         scratch.corner_count[c - block] = 0;
         scratch.degenerate_slack[c - block] = 0;
@@ -278,11 +407,13 @@ CellPhase run_cell_phase(const Mesh &mesh, const EdgeNodes &en, const ExactTreeO
         bool edge_nodes_on = false;
         // Every degenerate edge of the cell only has its derivative vanish at a vertex.
         bool at_vertices = true;
+        bool constant_edge = false;
         for (int j = 0; j < 3; ++j) {
           const int64_t e = topo.cell_edge(c, j);
           if (en.degeneracy[e] != kEdgeOk) {
             why |= fallback_bit(FallbackReason::DegenerateEdge);
             at_vertices = at_vertices && en.degeneracy[e] == kEdgeRootAtVertex;
+            constant_edge = constant_edge || (en.degeneracy[e] & kEdgeConstant);
           }
           edge_nodes_on |= en.count(e) != 0;
         }
@@ -300,6 +431,21 @@ CellPhase run_cell_phase(const Mesh &mesh, const EdgeNodes &en, const ExactTreeO
                           screen.verdict != GradientScreen::kNoZero)) {
             why = 0;
             edge_nodes_on = true; // connected, whatever it holds
+          } else if (screen.verdict != GradientScreen::kNoZero && try_curves(c, true)) {
+            // The critical vertex lies on a curve of critical points.
+            why = 0;
+            edge_nodes_on = true;
+          }
+        } else if (why && !constant_edge && screen.verdict != GradientScreen::kNoZero) {
+          // An edge with multiple or flat critical points: where it lies on a curve of
+          // critical points (a ridge crossing the edge where the curve turns from ridge to
+          // valley), the curve classifies it.
+          scratch.poly.assign(field.degree(c), field.coefficients(c));
+          cell = c;
+          if (try_curves(c, true)) {
+            fallback[c] = 0;
+            scratch.to_connect[connect_count++] = static_cast<int32_t>(c - block);
+            continue;
           }
         } else if (screen.verdict != GradientScreen::kNoZero &&
                    !(why & fallback_bit(FallbackReason::DegenerateEdge))) {
@@ -330,6 +476,23 @@ CellPhase run_cell_phase(const Mesh &mesh, const EdgeNodes &en, const ExactTreeO
               scratch.degenerate_count[c - block] =
                   static_cast<int32_t>(res.points.size() + res.regular);
               scratch.degenerate_slack[c - block] = res.slack;
+              fallback[c] = why;
+              if (!why)
+                scratch.to_connect[connect_count++] = static_cast<int32_t>(c - block);
+              continue;
+            }
+            // A curve of critical points (a ridge or valley): one node per curve.
+            if (try_curves(c)) {
+              fallback[c] = 0;
+              scratch.to_connect[connect_count++] = static_cast<int32_t>(c - block);
+              continue;
+            }
+          }
+          // Certified zeros whose Hessian is nearly singular: a ridge or valley the data's
+          // rounding split into regular points a few ulps apart. As critical curves, within
+          // the data's precision, they are one node.
+          if (!z.constant && !z.budget_exhausted && z.unresolved == 0 && !z.zeros.empty()) {
+            if (split_ridge(g, z, zero_options.frame) && try_curves(c)) {
               fallback[c] = why;
               if (!why)
                 scratch.to_connect[connect_count++] = static_cast<int32_t>(c - block);
@@ -418,14 +581,34 @@ CellPhase run_cell_phase(const Mesh &mesh, const EdgeNodes &en, const ExactTreeO
             }
           }
         }
+        if ((why == fallback_bit(FallbackReason::DegenerateEdgeNode) ||
+             why == fallback_bit(FallbackReason::CertificationFailed)) &&
+            scratch.curve_count[i] == 0) {
+          // An edge node where the gradient vanishes, or a sector no path connects: often a
+          // ridge or valley through the cell, which the data's rounding leaves without interior
+          // zeros (the stored polynomial's critical line is then a point, or nothing) or with
+          // zeros the search certified but nothing connects. Classified as critical curves, the
+          // cell is connected once more.
+          cell = block + i;
+          const std::size_t before = scratch.critical.size();
+          if (try_curves(block + i)) {
+            const std::span<const InteriorCritical> again(scratch.critical.data() + before,
+                                                          scratch.critical.size() - before);
+            why = connect_cell(mesh, en, block + i, i, again, opt.arc_geometry, scratch, out);
+            if (why)
+              scratch.curve_count[i] = 0;
+          }
+        }
         fallback[block + i] = why;
       }
       for (int64_t c = block; c < block_end; ++c) {
         if (fallback[c]) {
           out.fallback_cells.push_back(c);
-        } else if (scratch.degenerate_count[c - block] > 0 || scratch.corner_count[c - block] > 0) {
+        } else if (scratch.degenerate_count[c - block] > 0 || scratch.corner_count[c - block] > 0 ||
+                   scratch.curve_count[c - block] > 0) {
           out.degenerate_points += scratch.degenerate_count[c - block];
           out.critical_corners += scratch.corner_count[c - block];
+          out.critical_curves += scratch.curve_count[c - block];
           out.degenerate_slack =
               std::max(out.degenerate_slack, scratch.degenerate_slack[c - block]);
         }

@@ -34,8 +34,8 @@ struct alignas(64) CellChunk {
   std::vector<int64_t> fallback_cells; // the chunk's cells that fall back, ascending
   int64_t unresolved = 0;              // uncertified interior zeros
   // Degenerate critical points classified by their sectors in the chunk's regular cells, and
-  // the largest slack (cell/degenerate_points.hpp).
-  int64_t degenerate_points = 0, critical_corners = 0;
+  // the largest slack (cell/degenerate_points.hpp), and critical curves (cell/critical_curves.hpp).
+  int64_t degenerate_points = 0, critical_corners = 0, critical_curves = 0;
   double degenerate_slack = 0;
   PathCounters counters;
   // Thread time in the two passes over each block of cells (critical points, then connections).

@@ -60,6 +60,7 @@ ExactCounts exact_counts(const Mesh &mesh, const ExactGraphBuild &b) {
   n.unresolved_interior_zeros = b.totals.unresolved_zeros;
   n.degenerate_points = b.totals.degenerate_points;
   n.critical_corners = b.totals.critical_corners;
+  n.critical_curves = b.totals.critical_curves;
   n.degenerate_slack = b.totals.degenerate_slack;
   return n;
 }

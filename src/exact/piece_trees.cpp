@@ -395,6 +395,7 @@ PieceTrees merge_piece_trees(const PieceTrees &a, const PieceTrees &b, bool augm
   c.unresolved_interior_zeros = x.unresolved_interior_zeros + y.unresolved_interior_zeros;
   c.degenerate_points = x.degenerate_points + y.degenerate_points;
   c.critical_corners = x.critical_corners + y.critical_corners;
+  c.critical_curves = x.critical_curves + y.critical_curves;
   c.degenerate_slack = std::max(x.degenerate_slack, y.degenerate_slack);
   return out;
 }

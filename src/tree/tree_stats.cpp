@@ -94,6 +94,7 @@ const std::vector<Entry> &table() {
     e.push_back(exact_entry("unresolved_interior_zeros", &ExactCounts::unresolved_interior_zeros));
     e.push_back(exact_entry("degenerate_points", &ExactCounts::degenerate_points));
     e.push_back(exact_entry("critical_corners", &ExactCounts::critical_corners));
+    e.push_back(exact_entry("critical_curves", &ExactCounts::critical_curves));
     e.push_back(exact_entry("degenerate_slack", &ExactCounts::degenerate_slack));
     e.push_back(pl_entry("pl_vertices", &PlCounts::vertices));
     e.push_back(pl_entry("pl_triangles", &PlCounts::triangles));

@@ -47,6 +47,10 @@ struct ExactCounts {
   // Cell corners at a critical vertex (an edge's derivative vanishes there) whose sectors inside
   // the cell were classified (a vertex counts once per cell around it).
   int64_t critical_corners = 0;
+  // Curves of critical points (ridges, valleys) classified as one node each with its sectors
+  // (cell/critical_curves.hpp), counted once per cell they cross; their slack is part of
+  // degenerate_slack.
+  int64_t critical_curves = 0;
   double degenerate_slack = 0;
 
   int64_t fallbacks(FallbackReason r) const { return fallback_by_reason[static_cast<int>(r)]; }

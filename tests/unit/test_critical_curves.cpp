@@ -1,14 +1,17 @@
-// Critical curves (ridges, valleys) and degenerate critical points: fields whose exact trees are
-// known by hand, on cells the exact pipeline cannot certify (the gradient vanishes on a curve, or
-// a critical point is singular). Their fallback cells' PL stand-in breaks a ridge into pieces and
-// a degenerate point into a pair; every such pair is within twice the stand-in's certified
-// distance from the field and is cancelled: the tree is the exact one, and the statistics say
-// how many pairs were cancelled and the bound.
+// Critical curves (ridges, valleys, curves of saddles) and degenerate critical points: fields
+// whose exact trees are known by hand. A curve of critical points is certified as one node per
+// cell it crosses (cell/critical_curves.hpp), merged across cells as one flat region; where that
+// is not possible (a ridge along mesh edges, the conductor's plateau) the fallback cells' PL
+// stand-in breaks a ridge into pieces and a degenerate point into a pair, every such pair within
+// twice the stand-in's certified distance from the field, and cancelled.
+#include "cell/critical_curves.hpp"
 #include "datasets/datasets.hpp"
 #include "exact/exact_contour_tree.hpp"
 #include "io/tree_json.hpp"
 #include "mesh/mesh.hpp"
 #include "pipeline/compute_tree.hpp"
+#include "poly/lagrange_to_bernstein.hpp"
+#include "poly/lattice.hpp"
 #include "test_meshes.hpp"
 #include "test_refinement_convergence.hpp"
 #include "test_tree_shape.hpp"
@@ -69,9 +72,11 @@ TEST(CriticalCurves, ARidgeFromACornerToAnEdgeMidpointIsOneMaximum) {
   EXPECT_EQ(t.nodes[2].down, 2);
   EXPECT_NEAR(t.nodes[0].value, -1, 1e-12);
   ASSERT_TRUE(t.stats.exact);
-  EXPECT_GT(t.stats.exact->fallback_cells, 0);
-  EXPECT_GT(t.stats.exact->fallback_arcs_contracted, 0);
-  EXPECT_GT(t.stats.exact->fallback_error, 0);
+  // Certified as a critical curve, not by the stand-in; the corner (0,0) is on it.
+  EXPECT_EQ(t.stats.exact->fallback_cells, 0);
+  EXPECT_EQ(t.stats.exact->critical_curves, 1);
+  EXPECT_GT(t.stats.exact->degenerate_slack, 0);
+  EXPECT_LT(t.stats.exact->degenerate_slack, 1e-9);
 }
 
 TEST(CriticalCurves, AStraightRidgeAcrossCellsIsOneMaximum) {
@@ -87,6 +92,10 @@ TEST(CriticalCurves, AStraightRidgeAcrossCellsIsOneMaximum) {
   EXPECT_NEAR(t.nodes[0].value, -0.64, 1e-12);
   EXPECT_NEAR(t.nodes[1].value, -0.49, 1e-12);
   EXPECT_NEAR(t.nodes[2].value, 0, 1e-12);
+  ASSERT_TRUE(t.stats.exact);
+  EXPECT_EQ(t.stats.exact->fallback_cells, 0);
+  EXPECT_GT(t.stats.exact->critical_curves, 4); // one per cell the ridge crosses
+  EXPECT_GT(t.nodes[2].merged, 4);
 }
 
 TEST(CriticalCurves, ADegenerateCriticalPointIsNoNode) {
@@ -137,6 +146,8 @@ TEST(CriticalCurves, AClosedRidgeIsOneNodeOverTheInsideAndTheOutside) {
   EXPECT_NEAR(t.nodes[4].value, -0.0256, 1e-12);
   EXPECT_NEAR(t.nodes[5].value, -0.0081, 1e-12);
   EXPECT_NEAR(t.nodes[6].value, 0, 1e-12);
+  ASSERT_TRUE(t.stats.exact);
+  EXPECT_EQ(t.stats.exact->fallback_cells, 0);
 }
 
 TEST(CriticalCurves, ACurvedRidgeIsOneMaximum) {
@@ -150,6 +161,8 @@ TEST(CriticalCurves, ACurvedRidgeIsOneMaximum) {
   ASSERT_EQ(t.nodes.size(), 5u);
   EXPECT_NEAR(t.nodes[3].value, -0.16, 1e-12);
   EXPECT_NEAR(t.nodes[4].value, 0, 1e-12);
+  ASSERT_TRUE(t.stats.exact);
+  EXPECT_EQ(t.stats.exact->fallback_cells, 0);
 }
 
 TEST(CriticalCurves, AValleyAlongMeshEdges) {
@@ -174,8 +187,10 @@ TEST(CriticalCurves, ACurveOfSaddlesIsOneSaddle) {
   EXPECT_EQ(shape(t), "minimum(0,1) minimum(0,1) saddle(2,2) maximum(1,0) maximum(1,0)");
   ASSERT_EQ(t.nodes.size(), 5u);
   ASSERT_TRUE(t.stats.exact);
-  // The merged node stands at one of the stand-in's nodes: its value within the slack of 0.
-  EXPECT_LE(std::abs(t.nodes[2].value), 2 * t.stats.exact->fallback_error);
+  // Certified, the degenerate point where ridge turns valley (0.5, 0.45) included.
+  EXPECT_EQ(t.stats.exact->fallback_cells, 0);
+  EXPECT_GT(t.stats.exact->critical_curves, 0);
+  EXPECT_NEAR(t.nodes[2].value, 0, 1e-12);
   EXPECT_NEAR(t.nodes[0].value, -0.1125, 1e-12);
   EXPECT_NEAR(t.nodes[4].value, 0.1375, 1e-12);
 }
@@ -227,6 +242,83 @@ TEST(CriticalCurves, RefinementsConvergeToTheExactTree) {
     const TreeResult exact = compute_tree(mesh, TreeRequest{}, &fields[f]).tree;
     testing::expect_refinements_converge(mesh, fields[f], exact);
   }
+}
+
+// The classifier itself, on one reference triangle (Bernstein coefficients from values at the
+// lattice points).
+BernsteinTriangle from_values(int degree, const Field2 &f) {
+  std::vector<double> values(static_cast<std::size_t>(lattice_size(degree))), coef(values.size());
+  for (int b = 0; b <= degree; ++b)
+    for (int a = 0; a + b <= degree; ++a)
+      values[static_cast<std::size_t>(lattice_index(degree, a, b))] =
+          f(static_cast<double>(a) / degree, static_cast<double>(b) / degree);
+  bernstein_from_lattice_values(values.data(), degree, coef.data());
+  return BernsteinTriangle(degree, coef);
+}
+
+TEST(CriticalCurveClassifier, ARidgeHasItsTwoSidesAndItsBoundaryPoints) {
+  // -(u - v)^2: the segment from corner 0 to the hypotenuse's midpoint.
+  const BernsteinTriangle g = from_values(2, [](double u, double v) { return -(u - v) * (u - v); });
+  const std::vector<Vec2> boundary = {{0, 0}, {1, 0}, {0, 1}, {0.5, 0.5}};
+  const CurveResolution r = resolve_critical_curves(g, boundary);
+  ASSERT_TRUE(r.resolved);
+  ASSERT_EQ(r.curves.size(), 1u);
+  const CriticalCurve &c = r.curves[0];
+  EXPECT_NEAR(c.value, 0, 1e-15);
+  EXPECT_EQ(c.rays.lower.size(), 2u); // one per side
+  EXPECT_EQ(c.rays.upper.size(), 0u);
+  EXPECT_EQ(c.boundary_nodes, (std::vector<int>{0, 3}));
+  EXPECT_LT(c.slack, 1e-12);
+  for (const Vec2 &a : c.anchors)
+    EXPECT_NEAR(a[0], a[1], 1e-12); // on the ridge
+  // Each ray starts on the ridge and ends on its side.
+  for (std::size_t i = 0; i < c.rays.lower.size(); ++i)
+    EXPECT_LT(g(c.rays.lower[i][0], c.rays.lower[i][1]), -1e-6);
+}
+
+TEST(CriticalCurveClassifier, AValleyHasItsTwoSidesAbove) {
+  // (u - 0.3)^2 (v + 0.5), cubic: the line u = 0.3 is a valley of value 0, from the bottom edge
+  // to the hypotenuse.
+  const BernsteinTriangle g =
+      from_values(3, [](double u, double v) { return (u - 0.3) * (u - 0.3) * (v + 0.5); });
+  const std::vector<Vec2> boundary = {{0, 0}, {1, 0}, {0, 1}, {0.3, 0}, {0.3, 0.7}};
+  const CurveResolution r = resolve_critical_curves(g, boundary);
+  ASSERT_TRUE(r.resolved);
+  ASSERT_EQ(r.curves.size(), 1u);
+  EXPECT_NEAR(r.curves[0].value, 0, 1e-14);
+  EXPECT_EQ(r.curves[0].rays.lower.size(), 0u);
+  EXPECT_EQ(r.curves[0].rays.upper.size(), 2u);
+  EXPECT_EQ(r.curves[0].boundary_nodes, (std::vector<int>{3, 4}));
+}
+
+TEST(CriticalCurveClassifier, AMonkeySaddleIsOneNodeWithSixSectors) {
+  // x^3 - 3 x y^2 around (0.3, 0.3): the Hessian vanishes there; the box around it where g
+  // varies within the target is the node's region.
+  const BernsteinTriangle g = from_values(3, [](double u, double v) {
+    const double x = u - 0.3, y = v - 0.3;
+    return x * x * x - 3 * x * y * y;
+  });
+  const CurveResolution r = resolve_critical_curves(g, std::vector<Vec2>{{0, 0}, {1, 0}, {0, 1}});
+  ASSERT_TRUE(r.resolved);
+  ASSERT_EQ(r.curves.size(), 1u);
+  EXPECT_EQ(r.curves[0].rays.lower.size(), 3u);
+  EXPECT_EQ(r.curves[0].rays.upper.size(), 3u);
+  EXPECT_NEAR(r.curves[0].uv[0], 0.3, 1e-3);
+  EXPECT_NEAR(r.curves[0].uv[1], 0.3, 1e-3);
+}
+
+TEST(CriticalCurveClassifier, RefusesWhatItCannotCertify) {
+  // A sloping valley: no zero at all.
+  EXPECT_FALSE(resolve_critical_curves(
+                   from_values(2, [](double u, double v) { return (u - v) * (u - v) + 1e-3 * u; }),
+                   std::vector<Vec2>{{0, 0}, {1, 0}, {0, 1}})
+                   .resolved);
+  // An edge node near the ridge that is not on it, and not reachable by a certified ray (a
+  // point of the ridge's own level off the curve).
+  EXPECT_FALSE(
+      resolve_critical_curves(from_values(2, [](double u, double v) { return -(u - v) * (u - v); }),
+                              std::vector<Vec2>{{0, 0}, {1, 0}, {0, 1}, {0.5 + 1e-7, 0.5 - 1e-7}})
+          .resolved);
 }
 
 } // namespace

@@ -115,10 +115,10 @@ INSTANTIATE_TEST_SUITE_P(Datasets, ShiftInvariance,
                            return s;
                          });
 
-// The conductor's exact ridge cells are degenerate only while their values are exact: shifted,
-// the rounding makes some of them ordinary cells (fewer fallbacks), and the pairs there differ
-// by up to the fallback stand-in's slack. What stays: every pair one tree is certain of (not
-// flagged uncertain) is in the other, within the precision plus twice the slack.
+// The conductor's plateau cells fall back to the stand-in, whose pairs differ by up to its
+// slack; its exact ridges are critical curves, shifted or not. What stays: the same fallback
+// cells, and every pair one tree is certain of (not flagged uncertain) in the other, within the
+// precision plus twice the slack.
 TEST(ShiftInvariance, TheConductorKeepsItsCertainPairs) {
   const TreeResult base = exact_tree(dataset("conductor", {1, 0}));
   const double range = base.nodes.back().value - base.nodes.front().value;
@@ -127,6 +127,10 @@ TEST(ShiftInvariance, TheConductorKeepsItsCertainPairs) {
     const Variant v{1, k * range};
     const TreeResult t = exact_tree(dataset("conductor", v));
     ASSERT_TRUE(t.stats.exact && base.stats.exact && t.stats.precision);
+    // Its ridges are critical curves at every offset (the rounding tilts them by less than the
+    // precision): only the plateau's cells fall back, the same ones.
+    EXPECT_EQ(t.stats.exact->fallback_by_reason, base.stats.exact->fallback_by_reason);
+    EXPECT_EQ(t.stats.exact->fallback_cells, base.stats.exact->fallback_cells);
     const double tol =
         *t.stats.precision + *base.stats.precision +
         2 * std::max(t.stats.exact->fallback_error, base.stats.exact->fallback_error);
