@@ -210,34 +210,11 @@ bool slab_point(const SlabBox &b, Vec2 &out) {
 // is sound (the slack is measured from it); this one is the same to rounding in every cell the
 // curve crosses, so that their nodes merge as one flat region.
 double on_curve_value(const BernsteinTriangle &g, const SlabBox &b) {
-  Vec2 x = {std::clamp(b.c[0] + b.w0 * b.n[0], b.c[0] - b.r, b.c[0] + b.r),
-            std::clamp(b.c[1] + b.w0 * b.n[1], b.c[1] - b.r, b.c[1] + b.r)};
-  BernsteinTriangle::Jet j = g.jet(x[0], x[1]);
-  double norm = std::hypot(j.gradient[0], j.gradient[1]);
-  for (int it = 0; it < 8 && norm > 0; ++it) {
-    const double a = j.hessian[0][0], c = j.hessian[0][1], d = j.hessian[1][1];
-    const double mean = 0.5 * (a + d), rad = std::hypot(0.5 * (a - d), c);
-    const double theta = 0.5 * std::atan2(2 * c, a - d);
-    const Vec2 e[2] = {{-std::sin(theta), std::cos(theta)}, {std::cos(theta), std::sin(theta)}};
-    const double l[2] = {mean - rad, mean + rad};
-    const double lmax = std::max(std::abs(l[0]), std::abs(l[1]));
-    Vec2 next = x;
-    for (int k = 0; k < 2; ++k)
-      if (std::abs(l[k]) > 1e-6 * lmax) {
-        const double s = (e[k][0] * j.gradient[0] + e[k][1] * j.gradient[1]) / l[k];
-        next = {next[0] - s * e[k][0], next[1] - s * e[k][1]};
-      }
-    if (!in_box(b, next, 2 * b.r))
-      break;
-    const BernsteinTriangle::Jet jn = g.jet(next[0], next[1]);
-    const double nn = std::hypot(jn.gradient[0], jn.gradient[1]);
-    if (!(nn < norm))
-      break;
-    x = next;
-    j = jn;
-    norm = nn;
-  }
-  return std::abs(j.value - b.value) <= b.bound ? j.value : b.value;
+  const Vec2 start = {std::clamp(b.c[0] + b.w0 * b.n[0], b.c[0] - b.r, b.c[0] + b.r),
+                      std::clamp(b.c[1] + b.w0 * b.n[1], b.c[1] - b.r, b.c[1] + b.r)};
+  const Vec2 x = polish_zero(g, start, b.c, 3 * b.r, 1e-6);
+  const double v = g(x[0], x[1]);
+  return std::abs(v - b.value) <= b.bound ? v : b.value;
 }
 
 int find(std::vector<int> &parent, int i) {

@@ -35,42 +35,6 @@ double linf(const Vec2 &a, const Vec2 &b) {
   return std::max(std::abs(a[0] - b[0]), std::abs(a[1] - b[1]));
 }
 
-// Moves c towards the zero of the gradient by Newton steps with the Hessian's pseudo-inverse
-// (its near-null direction dropped), as long as the gradient shrinks and c stays within `reach`:
-// at a degenerate zero Newton converges only linearly along the null direction, but the other
-// coordinate (along which the zero is regular) comes out to full precision.
-Vec2 polish(const BernsteinTriangle &g, Vec2 c, double reach) {
-  const Vec2 start = c;
-  BernsteinTriangle::Jet j = g.jet(c[0], c[1]);
-  double gn = std::hypot(j.gradient[0], j.gradient[1]);
-  for (int it = 0; it < 100 && gn > 0; ++it) {
-    const double a = j.hessian[0][0], b = j.hessian[0][1], d = j.hessian[1][1];
-    const double mean = 0.5 * (a + d), r = std::hypot(0.5 * (a - d), b);
-    const double l[2] = {mean - r, mean + r};
-    const double theta = 0.5 * std::atan2(2 * b, a - d);
-    const Vec2 e[2] = {{-std::sin(theta), std::cos(theta)}, {std::cos(theta), std::sin(theta)}};
-    const double lmax = std::max(std::abs(l[0]), std::abs(l[1]));
-    Vec2 step{0, 0};
-    for (int k = 0; k < 2; ++k)
-      if (std::abs(l[k]) > 1e-8 * lmax) {
-        const double s = (e[k][0] * j.gradient[0] + e[k][1] * j.gradient[1]) / l[k];
-        step[0] -= s * e[k][0];
-        step[1] -= s * e[k][1];
-      }
-    const Vec2 next = {c[0] + step[0], c[1] + step[1]};
-    if (linf(next, start) > reach)
-      break;
-    const BernsteinTriangle::Jet jn = g.jet(next[0], next[1]);
-    const double nn = std::hypot(jn.gradient[0], jn.gradient[1]);
-    if (!(nn < gn))
-      break;
-    c = next;
-    j = jn;
-    gn = nn;
-  }
-  return c;
-}
-
 // True if g is constant to `tol` along the segment of half-length 1e-2 through c in the
 // direction of the Hessian's eigenvalue of least magnitude, with a gradient within 1e3 tol at
 // its ends: the tangent of a straight ridge or valley, where g stays at its value. At an isolated
@@ -124,6 +88,38 @@ double slack_on_square(const BernsteinTriangle &g, const Vec2 &c, double rho, do
 }
 
 } // namespace
+
+Vec2 polish_zero(const BernsteinTriangle &g, Vec2 c, const Vec2 &around, double reach,
+                 double null_ratio) {
+  BernsteinTriangle::Jet j = g.jet(c[0], c[1]);
+  double gn = std::hypot(j.gradient[0], j.gradient[1]);
+  for (int it = 0; it < 100 && gn > 0; ++it) {
+    const double a = j.hessian[0][0], b = j.hessian[0][1], d = j.hessian[1][1];
+    const double mean = 0.5 * (a + d), r = std::hypot(0.5 * (a - d), b);
+    const double l[2] = {mean - r, mean + r};
+    const double theta = 0.5 * std::atan2(2 * b, a - d);
+    const Vec2 e[2] = {{-std::sin(theta), std::cos(theta)}, {std::cos(theta), std::sin(theta)}};
+    const double lmax = std::max(std::abs(l[0]), std::abs(l[1]));
+    Vec2 step{0, 0};
+    for (int k = 0; k < 2; ++k)
+      if (std::abs(l[k]) > null_ratio * lmax) {
+        const double s = (e[k][0] * j.gradient[0] + e[k][1] * j.gradient[1]) / l[k];
+        step[0] -= s * e[k][0];
+        step[1] -= s * e[k][1];
+      }
+    const Vec2 next = {c[0] + step[0], c[1] + step[1]};
+    if (linf(next, around) > reach)
+      break;
+    const BernsteinTriangle::Jet jn = g.jet(next[0], next[1]);
+    const double nn = std::hypot(jn.gradient[0], jn.gradient[1]);
+    if (!(nn < gn))
+      break;
+    c = next;
+    j = jn;
+    gn = nn;
+  }
+  return c;
+}
 
 int certify_ray(const BernsteinTriangle &g, const Vec2 &c, const Vec2 &p, double level,
                 double margin, double tol) {
@@ -312,7 +308,7 @@ DegenerateResolution resolve_degenerate_zeros(const BernsteinTriangle &g,
   const double margin = f.margin, rounding = f.rounding;
   const BernsteinTriangle &neg = f.neg;
   for (Cluster &k : clusters) {
-    k.c = polish(g, k.c, 1e-4);
+    k.c = polish_zero(g, k.c, k.c, 1e-4);
     if (flat_along_null_direction(g, k.c, rounding + value_noise))
       return out; // a ridge or valley (a curve of critical points): not isolated
   }
@@ -408,7 +404,7 @@ DegenerateResolution resolve_degenerate_zeros(const BernsteinTriangle &g,
     if (clusters.size() == before || clusters.size() > kMaxClusters)
       return out;
     for (std::size_t i = before; i < clusters.size(); ++i)
-      clusters[i].c = polish(g, clusters[i].c, 1e-4);
+      clusters[i].c = polish_zero(g, clusters[i].c, clusters[i].c, 1e-4);
   }
   DegenerateResolution at_largest = classify(largest, z);
   // Then smaller squares, for a smaller slack: the first that resolves and classifies.

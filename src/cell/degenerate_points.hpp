@@ -81,6 +81,14 @@ bool sign_arcs_on_square(const BernsteinTriangle &g, const Vec2 &c, double r, do
 bool sign_arcs_on_polyline(const BernsteinTriangle &g, std::span<const Vec2> q, bool closed,
                            double level, double tol, std::vector<SignArc> &arcs);
 
+// Moves c towards a zero of the gradient by Newton steps with the Hessian's pseudo-inverse (its
+// eigenvalues below null_ratio of the largest dropped), as long as the gradient shrinks and c
+// stays within `reach` (max norm) of `around`: at a degenerate zero, or on a curve of zeros,
+// Newton converges only linearly along the null direction, but the other coordinate (along which
+// the zero is regular) comes out to full precision.
+Vec2 polish_zero(const BernsteinTriangle &g, Vec2 c, const Vec2 &around, double reach,
+                 double null_ratio = 1e-8);
+
 // The number of leading Bernstein coefficients of g on the segment c -> p that equal `level`
 // within `tol` (at least 1: the first is g(c)), if g is certified below `level` - margin on the
 // rest of the segment; else -1. For rays above the level, pass -g and -level.
