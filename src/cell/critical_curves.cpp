@@ -11,7 +11,7 @@ namespace {
 
 constexpr double kEps = std::numeric_limits<double>::epsilon();
 constexpr int kFirstGrid = 8; // the first boxes: an 8 x 8 grid over the unit square
-constexpr int kMaxDepth = 10; // splits below it: boxes down to 1 / 8192
+constexpr int kMaxDepth = 12; // splits below it: boxes down to 1 / 32768
 constexpr int64_t kMaxBoxes = 20000;
 constexpr int kRegionGrids[] = {8, 16, 32, 64}; // Q's grids, coarsest first
 // Slabs closer than this (reference units) meet; a boundary point this close to a slab is on it.
@@ -328,7 +328,9 @@ std::vector<Polyline> region_boundary(const std::vector<char> &in, int n) {
 } // namespace
 
 CurveResolution resolve_critical_curves(const BernsteinTriangle &g,
-                                        std::span<const Vec2> boundary_points, double value_noise) {
+                                        std::span<const Vec2> boundary_points, double value_noise,
+                                        const std::array<bool, 3> &corners,
+                                        const std::array<double, 3> &corner_reach) {
   CurveResolution out;
   const int d = g.degree();
   if (d < 2)
@@ -581,7 +583,7 @@ CurveResolution resolve_critical_curves(const BernsteinTriangle &g,
       classified = true;
     }
     if (!classified)
-      return CurveResolution{false, {}, 0, out.boxes};
+      return CurveResolution{};
     out.slack = std::max(out.slack, cv.slack);
   }
   // A boundary point on two curves cannot be.
@@ -589,7 +591,24 @@ CurveResolution resolve_critical_curves(const BernsteinTriangle &g,
   for (const CriticalCurve &cv : out.curves)
     for (int p : cv.boundary_nodes)
       if (seen[static_cast<std::size_t>(p)]++)
-        return CurveResolution{false, {}, 0, out.boxes};
+        return CurveResolution{};
+  // Corners whose edge's derivative vanishes there but which lie on no curve: their gradient is
+  // orthogonal to that edge. Their sectors come from the corner triangle (cell/degenerate_
+  // points.hpp), kept clear of every box of the cover, so that it holds no zero.
+  for (int k = 0; k < 3; ++k) {
+    if (!corners[k] || (k < static_cast<int>(seen.size()) && seen[static_cast<std::size_t>(k)]))
+      continue;
+    const Vec2 v = k == 0 ? Vec2{0, 0} : k == 1 ? Vec2{1, 0} : Vec2{0, 1};
+    double r0 = std::min(corner_reach[k], 0.25);
+    for (int i = 0; i < nb; ++i)
+      if (curve_of[static_cast<std::size_t>(i)] >= 0) {
+        const SlabBox &b = boxes[static_cast<std::size_t>(i)];
+        r0 = std::min(r0, 0.5 * (std::max(std::abs(v[0] - b.c[0]), std::abs(v[1] - b.c[1])) - b.r));
+      }
+    out.corners[k] = classify_corner(g, neg, k, r0, 1e-6, 4 * rounding + 2 * value_noise, margin);
+    if (!out.corners[k])
+      return CurveResolution{};
+  }
   out.resolved = true;
   return out;
 }

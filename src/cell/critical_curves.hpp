@@ -30,6 +30,8 @@
 #include "cell/degenerate_points.hpp"
 #include "poly/bernstein_triangle.hpp"
 
+#include <array>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -49,13 +51,19 @@ struct CurveResolution {
   std::vector<CriticalCurve> curves;
   double slack = 0; // the largest of the curves'
   int64_t boxes = 0;
+  std::array<std::optional<SectorRays>, 3> corners; // critical corners on no curve
 };
 
 // The critical curves of g, if every zero of its gradient in the cell lies on one and each is
 // classified; `boundary_points`: the cell's corners and edge nodes (reference coordinates), each
 // either off every curve's region or on a curve. `value_noise`: Field::precision.
+// `corners[k]`: corner k is critical for an edge (its derivative vanishes there,
+// kEdgeRootAtVertex); if on no curve, its sectors are classified in its corner triangle, of size
+// at most corner_reach[k] (in edge parameters), into `CurveResolution::corners`.
 CurveResolution resolve_critical_curves(const BernsteinTriangle &g,
                                         std::span<const Vec2> boundary_points,
-                                        double value_noise = 0);
+                                        double value_noise = 0,
+                                        const std::array<bool, 3> &corners = {},
+                                        const std::array<double, 3> &corner_reach = {});
 
 } // namespace hoct

@@ -421,6 +421,39 @@ DegenerateResolution resolve_degenerate_zeros(const BernsteinTriangle &g,
   return at_largest;
 }
 
+std::optional<SectorRays> classify_corner(const BernsteinTriangle &g, const BernsteinTriangle &neg,
+                                          int k, double r0, double min_r, double tol,
+                                          double margin) {
+  const Vec2 corner[3] = {{0, 0}, {1, 0}, {0, 1}};
+  const Vec2 &v = corner[k], &next = corner[(k + 1) % 3], &prev = corner[(k + 2) % 3];
+  const double level = g.coefficient(k == 1 ? g.degree() : 0, k == 2 ? g.degree() : 0);
+  thread_local std::vector<SignArc> arcs;
+  for (int t = 0; t < kSquareTries; ++t) {
+    const double r = r0 / std::pow(4.0, t);
+    if (!(r >= min_r))
+      break;
+    const std::array<Vec2, 2> side = {
+        Vec2{v[0] + r * (next[0] - v[0]), v[1] + r * (next[1] - v[1])},
+        Vec2{v[0] + r * (prev[0] - v[0]), v[1] + r * (prev[1] - v[1])}};
+    if (!sign_arcs_on_polyline(g, side, false, level, tol, arcs))
+      continue;
+    SectorRays rays;
+    bool classified = true;
+    // The first and last arcs go on along the edges (their chains); the others are inside.
+    for (std::size_t i = 1; i + 1 < arcs.size() && classified; ++i) {
+      const SignArc &a = arcs[i];
+      const int skip = a.lower ? certify_ray(g, v, a.point, level, margin, tol)
+                               : certify_ray(neg, v, a.point, -level, margin, tol);
+      classified = skip >= 0;
+      (a.lower ? rays.lower : rays.upper).push_back(a.point);
+      (a.lower ? rays.lower_skip : rays.upper_skip).push_back(skip);
+    }
+    if (classified)
+      return rays;
+  }
+  return std::nullopt;
+}
+
 CornerResolution resolve_critical_corners(const BernsteinTriangle &g,
                                           const std::array<bool, 3> &critical,
                                           const std::array<double, 3> &reach,
@@ -434,7 +467,6 @@ CornerResolution resolve_critical_corners(const BernsteinTriangle &g,
   const BernsteinTriangle &neg = f.neg;
   const Vec2 corner[3] = {{0, 0}, {1, 0}, {0, 1}};
   const double hessian = InterpolationError(g).hessian_bound();
-  thread_local std::vector<SignArc> arcs;
   for (double rho : kExclusions) {
     GradientZeros z;
     if (search) {
@@ -464,7 +496,7 @@ CornerResolution resolve_critical_corners(const BernsteinTriangle &g,
     for (int k = 0; k < 3 && ok; ++k) {
       if (!critical[k])
         continue;
-      const Vec2 &v = corner[k], &next = corner[(k + 1) % 3], &prev = corner[(k + 2) % 3];
+      const Vec2 &v = corner[k];
       double r0 = std::min(reach[k], 0.25);
       for (const GradientZero &p : z.zeros)
         r0 = std::min(r0, 0.5 * (linf(v, {p.u, p.v}) - p.radius));
@@ -476,34 +508,12 @@ CornerResolution resolve_critical_corners(const BernsteinTriangle &g,
       const bool zero_free = std::hypot(grad[0], grad[1]) > 2 * std::sqrt(2.0) * hessian * rho;
       const double tol = 4 * rounding + 2 * value_noise +
                          (zero_free ? 0.0 : 2 * slack_on_square(g, v, rho, level, rounding));
-      bool classified = false;
-      SectorRays rays;
-      for (int t = 0; t < kSquareTries && !classified; ++t) {
-        const double r = r0 / std::pow(4.0, t);
-        if (!(r >= 4 * rho))
-          break;
-        const std::array<Vec2, 2> side = {
-            Vec2{v[0] + r * (next[0] - v[0]), v[1] + r * (next[1] - v[1])},
-            Vec2{v[0] + r * (prev[0] - v[0]), v[1] + r * (prev[1] - v[1])}};
-        if (!sign_arcs_on_polyline(g, side, false, level, tol, arcs))
-          continue;
-        rays = {};
-        classified = true;
-        // The first and last arcs go on along the edges (their chains); the others are inside.
-        for (std::size_t i = 1; i + 1 < arcs.size() && classified; ++i) {
-          const SignArc &a = arcs[i];
-          const int skip = a.lower ? certify_ray(g, v, a.point, level, margin, tol)
-                                   : certify_ray(neg, v, a.point, -level, margin, tol);
-          classified = skip >= 0;
-          (a.lower ? rays.lower : rays.upper).push_back(a.point);
-          (a.lower ? rays.lower_skip : rays.upper_skip).push_back(skip);
-        }
-      }
-      if (!classified) {
+      std::optional<SectorRays> rays = classify_corner(g, neg, k, r0, 4 * rho, tol, margin);
+      if (!rays) {
         ok = false;
         break;
       }
-      res.corners[k] = std::move(rays);
+      res.corners[k] = std::move(*rays);
       res.slack = std::max(res.slack, tol);
     }
     if (ok) {

@@ -126,6 +126,13 @@ struct CornerResolution {
   double slack = 0;
 };
 
+// Corner k's sectors inside the cell from the sign arcs of g - g(v) on the side opposite v of
+// the corner triangle of size r (r0, then a quarter and a sixteenth of it, down to min_r), which
+// must hold no gradient zero (but at v, within the slack `tol`); `neg`: -g, for ascending rays.
+std::optional<SectorRays> classify_corner(const BernsteinTriangle &g, const BernsteinTriangle &neg,
+                                          int k, double r0, double min_r, double tol,
+                                          double margin);
+
 // `critical[k]`: corner k needs it; `reach[k]`: the largest r there (in edge parameters);
 // `search`: the gradient may vanish in the cell (else it has no zero: no search).
 CornerResolution resolve_critical_corners(const BernsteinTriangle &g,

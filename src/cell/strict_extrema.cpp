@@ -8,9 +8,7 @@
 namespace hoct {
 namespace {
 
-double slope_tolerance(const Field &field) {
-  return 1e-9 * field.value_scale();
-}
+double slope_tolerance(const Field &field) { return 1e-9 * field.value_scale(); }
 
 } // namespace
 

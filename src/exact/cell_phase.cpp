@@ -360,12 +360,9 @@ CellPhase run_cell_phase(const Mesh &mesh, const EdgeNodes &en, const ExactTreeO
         pts.assign(std::begin(kReferenceCorner), std::end(kReferenceCorner));
         thread_local std::vector<int> must;
         must.clear();
-        if (degenerate_edges) {
-          const std::array<bool, 3> corners = critical_corners(mesh, en, c, scratch.poly);
-          for (int k = 0; k < 3; ++k)
-            if (corners[k])
-              must.push_back(k);
-        }
+        std::array<bool, 3> corners{false, false, false};
+        if (degenerate_edges)
+          corners = critical_corners(mesh, en, c, scratch.poly);
         for (int k = 0; k < 3; ++k) {
           const int64_t e = topo.cell_edge(c, k);
           const bool rev = topo.edge_reversed(c, k);
@@ -377,7 +374,8 @@ CellPhase run_cell_phase(const Mesh &mesh, const EdgeNodes &en, const ExactTreeO
             pts.push_back(point_on_edge(k, rev ? 1 - en.nodes[gi].t : en.nodes[gi].t));
           }
         }
-        CurveResolution res = resolve_critical_curves(scratch.poly, pts, field.precision());
+        CurveResolution res = resolve_critical_curves(scratch.poly, pts, field.precision(), corners,
+                                                      corner_reach(mesh, en, c));
         if (!res.resolved)
           return false;
         for (int p : must) {
@@ -395,6 +393,12 @@ CellPhase run_cell_phase(const Mesh &mesh, const EdgeNodes &en, const ExactTreeO
         }
         scratch.curve_count[c - block] = static_cast<int32_t>(res.curves.size());
         scratch.degenerate_slack[c - block] = res.slack;
+        for (int k = 0; k < 3; ++k)
+          if (res.corners[k]) {
+            scratch.corner_index[c - block][k] = static_cast<int32_t>(scratch.corner_rays.size());
+            scratch.corner_rays.push_back(std::move(*res.corners[k]));
+            ++scratch.corner_count[c - block];
+          }
         return true;
       };
       for (int64_t c = block; c < block_end; ++c) {

@@ -195,6 +195,25 @@ TEST(CriticalCurves, ACurveOfSaddlesIsOneSaddle) {
   EXPECT_NEAR(t.nodes[4].value, 0.1375, 1e-12);
 }
 
+TEST(CriticalCurves, ASaddleOnAMeshEdgeIsCertified) {
+  // (x - 0.5)^2 - 2 (y - 0.375)^2, P2 on the lattice grid (x = 0.5 is a line of mesh edges): the
+  // saddle lies on a mesh edge, where its normal derivative vanishes; both cells classify the
+  // small region holding it (four sectors), and the vertices on x = 0.5, where the gradient is
+  // orthogonal to the horizontal edges, by their corner triangles.
+  const auto f = [](double x, double y) {
+    return (x - 0.5) * (x - 0.5) - 2 * (y - 0.375) * (y - 0.375);
+  };
+  const TreeResult t = tree_of(on_regular_grid(4, 2, f));
+  ASSERT_TRUE(t.stats.exact);
+  EXPECT_EQ(t.stats.exact->fallback_cells, 0);
+  EXPECT_GT(t.stats.exact->critical_curves, 0);
+  EXPECT_EQ(shape(t), "minimum(0,1) minimum(0,1) saddle(2,2) maximum(1,0) maximum(1,0)");
+  ASSERT_EQ(t.nodes.size(), 5u);
+  EXPECT_NEAR(t.nodes[2].value, 0, 1e-12);
+  EXPECT_NEAR(t.nodes[2].position[0], 0.5, 1e-3);
+  EXPECT_NEAR(t.nodes[2].position[1], 0.375, 1e-3);
+}
+
 // Pairs the stand-in does not resolve are named: a fallback node and a persistence within twice
 // the slack, counted in the statistics and flagged "uncertain" in the JSON.
 TEST(CriticalCurves, PairsWithinTheSlackAreFlagged) {
