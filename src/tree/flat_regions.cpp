@@ -4,11 +4,38 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 
 namespace hoct {
 
+namespace {
+
+// No arc is flat, the arcs are sorted with the lower node first and no node is regular: the
+// contraction would give the tree back as it is.
+bool nothing_to_contract(const ContourTree &in, double tolerance) {
+  if (!std::is_sorted(in.arcs.begin(), in.arcs.end()))
+    return false;
+  for (const auto &a : in.arcs)
+    if (a[0] >= a[1] || std::abs(in.values[a[1]] - in.values[a[0]]) <= tolerance)
+      return false;
+  for (const auto &d : in.degrees())
+    if (d[0] == 1 && d[1] == 1)
+      return false;
+  return true;
+}
+
+} // namespace
+
 FlatContraction contract_flat_arcs(const ContourTree &in, double tolerance) {
   const int64_t n = in.size();
+  if (nothing_to_contract(in, tolerance)) {
+    FlatContraction out;
+    out.tree = in;
+    out.kept.resize(static_cast<std::size_t>(n));
+    std::iota(out.kept.begin(), out.kept.end(), int64_t{0});
+    out.size.assign(static_cast<std::size_t>(n), 1);
+    return out;
+  }
   UnionFind uf(static_cast<std::size_t>(n));
   for (const auto &a : in.arcs)
     if (std::abs(in.values[a[1]] - in.values[a[0]]) <= tolerance)

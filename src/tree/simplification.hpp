@@ -10,7 +10,9 @@
 
 #include "tree/contour_tree.hpp"
 
+#include <array>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 namespace hoct {
@@ -33,6 +35,11 @@ struct Simplification {
 // Removes every leaf branch whose persistence is below `threshold` (absolute). A reduced tree is
 // expected (regular nodes are spliced out as they appear).
 Simplification simplify(const ContourTree &tree, double threshold);
+
+// The branches of `simplify(tree, 0)` (the same list) without the simplified tree: of the tree
+// with these node values (ascending in the total order) and arcs (lower node first).
+std::vector<Branch> branch_decomposition(std::span<const double> values,
+                                         std::span<const std::array<int64_t, 2>> arcs);
 
 // The children of every branch, by decreasing persistence.
 std::vector<std::vector<int64_t>> branch_children(const std::vector<Branch> &branches);

@@ -70,7 +70,10 @@ void decompose_branches(TreeResult &t) {
     t.branches.clear();
     return;
   }
-  t.branches = simplify(as_contour_tree(t), 0).branches;
+  std::vector<double> values(t.nodes.size());
+  for (std::size_t i = 0; i < t.nodes.size(); ++i)
+    values[i] = t.nodes[i].value;
+  t.branches = branch_decomposition(values, t.arcs);
 }
 
 namespace {
@@ -84,6 +87,7 @@ TreeResult derived_result(const TreeResult &t, const ContourTree &tree,
   r.augmented = false;
   const auto deg = tree.degrees();
   const auto types = tree.types();
+  r.nodes.reserve(kept.size());
   for (std::size_t i = 0; i < kept.size(); ++i) {
     TreeNode n = t.nodes[kept[i]];
     n.up = deg[i][0];
