@@ -120,7 +120,7 @@ TreeOutcome finish_tree(TreeResult tree, const TreeRequest &rq, const TreeContex
   // Plateaus (equal values, ordered by node id) give arcs of length zero and leaf branches of
   // persistence zero: artefacts of the tie-breaking. Each flat region becomes one node.
   if (!rq.augmented && !rq.keep_flat)
-    tree = contract_flat(tree);
+    tree = contract_flat(std::move(tree));
   else
     decompose_branches(tree);
   tree.stats.time.branches = clock.lap();

@@ -57,6 +57,8 @@ std::vector<PersistencePair> tree_pairs(const ContourTree &tree) {
 
 ContourTree as_contour_tree(const TreeResult &t) {
   ContourTree ct;
+  ct.nodes.reserve(t.nodes.size());
+  ct.values.reserve(t.nodes.size());
   for (std::size_t i = 0; i < t.nodes.size(); ++i) {
     ct.nodes.push_back(static_cast<int64_t>(i));
     ct.values.push_back(t.nodes[i].value);
@@ -79,33 +81,59 @@ void decompose_branches(TreeResult &t) {
 namespace {
 
 // The result for a tree derived from t's (contracted or simplified): `kept[i]` is the node of t
-// that node i of `tree` stands for; types and degrees follow the new tree.
+// that node i of `tree` stands for; types and degrees follow the new tree. With `take` (t itself,
+// which may be consumed) and nothing changed, t's nodes and pairs are moved.
 TreeResult derived_result(const TreeResult &t, const ContourTree &tree,
-                          const std::vector<int64_t> &kept) {
+                          const std::vector<int64_t> &kept, TreeResult *take = nullptr) {
   TreeResult r;
   r.method = t.method;
   r.augmented = false;
   const auto deg = tree.degrees();
   const auto types = tree.types();
-  r.nodes.reserve(kept.size());
-  for (std::size_t i = 0; i < kept.size(); ++i) {
-    TreeNode n = t.nodes[kept[i]];
-    n.up = deg[i][0];
-    n.down = deg[i][1];
-    n.type = types[i];
-    r.nodes.push_back(n);
-  }
   // Nothing changed (no flat region on a noisy field, say): t's pairs are the tree's.
   bool same = kept.size() == t.nodes.size() && tree.arcs == t.arcs;
   for (std::size_t i = 0; same && i < kept.size(); ++i)
     same = kept[i] == static_cast<int64_t>(i);
+  if (same && take) {
+    r.nodes = std::move(take->nodes);
+    r.pairs = std::move(take->pairs);
+  } else {
+    r.nodes.reserve(kept.size());
+    for (std::size_t i = 0; i < kept.size(); ++i)
+      r.nodes.push_back(t.nodes[kept[i]]);
+    r.pairs = same ? t.pairs : tree_pairs(tree);
+  }
+  for (std::size_t i = 0; i < kept.size(); ++i) {
+    TreeNode &n = r.nodes[i];
+    n.up = deg[i][0];
+    n.down = deg[i][1];
+    n.type = types[i];
+  }
   r.arcs = tree.arcs;
-  r.pairs = same ? t.pairs : tree_pairs(tree);
   r.reeb_graph = t.reeb_graph;
   r.loops = graph_loops(tree);
   r.stats = t.stats;
   r.input = t.input;
   r.graph = t.graph;
+  return r;
+}
+
+TreeResult contract_flat(const TreeResult &t, TreeResult *take) {
+  // Flat up to the rounding of polynomial evaluation, relative to the range (values are
+  // computed relative to a reference near them), plus two units in the last place of the
+  // absolute values they were shifted back to.
+  double magnitude = 0;
+  for (const auto &n : t.nodes)
+    magnitude = std::max(magnitude, std::abs(n.value));
+  const double range = t.nodes.empty() ? 0 : t.nodes.back().value - t.nodes.front().value;
+  const double tolerance = 1e-12 * range + 2 * std::numeric_limits<double>::epsilon() * magnitude;
+  const FlatContraction f = contract_flat_arcs(as_contour_tree(t), tolerance);
+  const std::size_t before = t.nodes.size();
+  TreeResult r = derived_result(t, f.tree, f.kept, take);
+  for (std::size_t i = 0; i < r.nodes.size(); ++i)
+    r.nodes[i].merged = f.size[i];
+  r.stats.flat_nodes_merged = static_cast<int64_t>(before - r.nodes.size());
+  decompose_branches(r);
   return r;
 }
 
@@ -137,23 +165,9 @@ void set_precision(TreeResult &t, double precision) {
     t.stats.pairs_within_degenerate_slack = degenerate;
 }
 
-TreeResult contract_flat(const TreeResult &t) {
-  // Flat up to the rounding of polynomial evaluation, relative to the range (values are
-  // computed relative to a reference near them), plus two units in the last place of the
-  // absolute values they were shifted back to.
-  double magnitude = 0;
-  for (const auto &n : t.nodes)
-    magnitude = std::max(magnitude, std::abs(n.value));
-  const double range = t.nodes.empty() ? 0 : t.nodes.back().value - t.nodes.front().value;
-  const double tolerance = 1e-12 * range + 2 * std::numeric_limits<double>::epsilon() * magnitude;
-  const FlatContraction f = contract_flat_arcs(as_contour_tree(t), tolerance);
-  TreeResult r = derived_result(t, f.tree, f.kept);
-  for (std::size_t i = 0; i < r.nodes.size(); ++i)
-    r.nodes[i].merged = f.size[i];
-  r.stats.flat_nodes_merged = static_cast<int64_t>(t.nodes.size() - r.nodes.size());
-  decompose_branches(r);
-  return r;
-}
+TreeResult contract_flat(const TreeResult &t) { return contract_flat(t, nullptr); }
+
+TreeResult contract_flat(TreeResult &&t) { return contract_flat(t, &t); }
 
 TreeResult simplify_tree(const TreeResult &t, double threshold) {
   const Simplification s = simplify(as_contour_tree(t), threshold);

@@ -153,6 +153,9 @@ TreeResult simplify_tree(const TreeResult &tree, double threshold);
 // (tree/flat_regions.hpp), recomputes pairs and
 // branches, and records "flat_nodes_merged" in the statistics.
 TreeResult contract_flat(const TreeResult &tree);
+// The same, consuming `tree`: where nothing is contracted, its nodes and pairs are moved, not
+// copied.
+TreeResult contract_flat(TreeResult &&tree);
 
 // Draws every arc on the surface through the tree's graph (needs tree.graph), the arcs on
 // `threads` threads (0 = all hardware threads); the same paths for any number.
