@@ -2,6 +2,7 @@
 
 #include "cell/critical_curves.hpp"
 #include "cell/degenerate_points.hpp"
+#include "cell/level_edges.hpp"
 #include "cell/sector_connections.hpp"
 #include "poly/gradient_zeros.hpp"
 #include "poly/reference_triangle.hpp"
@@ -414,6 +415,15 @@ CellPhase run_cell_phase(const Mesh &mesh, const EdgeNodes &en, const ExactTreeO
         bool constant_edge = false;
         for (int j = 0; j < 3; ++j) {
           const int64_t e = topo.cell_edge(c, j);
+          if (en.degeneracy[e] == kEdgeConstant) {
+            // A constant edge across which the field rises or falls into this cell: a piece of
+            // a level set, no node and nothing to classify.
+            scratch.poly.assign(field.degree(c), field.coefficients(c));
+            if (is_level_edge(scratch.poly, j, field.precision())) {
+              ++out.level_edges;
+              continue;
+            }
+          }
           if (en.degeneracy[e] != kEdgeOk) {
             why |= fallback_bit(FallbackReason::DegenerateEdge);
             at_vertices = at_vertices && en.degeneracy[e] == kEdgeRootAtVertex;

@@ -37,6 +37,7 @@ struct alignas(64) CellChunk {
   // the largest slack (cell/degenerate_points.hpp), and critical curves (cell/critical_curves.hpp).
   int64_t degenerate_points = 0, critical_corners = 0, critical_curves = 0;
   double degenerate_slack = 0;
+  int64_t level_edges = 0; // cell sides on constant edges certified as level edges
   PathCounters counters;
   // Thread time in the two passes over each block of cells (critical points, then connections).
   double critical_seconds = 0, connection_seconds = 0;

@@ -49,6 +49,7 @@ ExactCounts exact_counts(const Mesh &mesh, const ExactGraphBuild &b) {
   n.cells = mesh.topology.num_cells();
   n.graph_nodes = b.graph.size();
   n.edge_critical_points = static_cast<int64_t>(b.edge_nodes.nodes.size());
+  n.level_edges = b.totals.level_edges;
   n.interior_critical_points = b.totals.interior_nodes;
   n.connections_direct = b.totals.counters.direct;
   n.connections_traced = b.totals.counters.traced;

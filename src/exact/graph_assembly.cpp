@@ -43,6 +43,7 @@ ExactGraph assemble_graph(const Mesh &mesh, const EdgeNodes &en, CellPhase &&pha
     totals.degenerate_points += ch.degenerate_points;
     totals.critical_corners += ch.critical_corners;
     totals.critical_curves += ch.critical_curves;
+    totals.level_edges += ch.level_edges;
     totals.degenerate_slack = std::max(totals.degenerate_slack, ch.degenerate_slack);
     totals.critical_seconds += ch.critical_seconds;
     totals.connection_seconds += ch.connection_seconds;

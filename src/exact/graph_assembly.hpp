@@ -17,6 +17,7 @@ struct CellTotals {
   int64_t interior_nodes = 0, unresolved_zeros = 0;
   int64_t degenerate_points = 0, critical_corners = 0, critical_curves = 0;
   double degenerate_slack = 0;
+  int64_t level_edges = 0;
   double critical_seconds = 0, connection_seconds = 0; // thread time in the two passes
 };
 

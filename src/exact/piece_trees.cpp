@@ -383,6 +383,7 @@ PieceTrees merge_piece_trees(const PieceTrees &a, const PieceTrees &b, bool augm
   c.cells = x.cells + y.cells;
   c.graph_nodes = x.graph_nodes + y.graph_nodes - shared;
   c.edge_critical_points = x.edge_critical_points + y.edge_critical_points - shared_edge_nodes;
+  c.level_edges = x.level_edges + y.level_edges;
   c.interior_critical_points = x.interior_critical_points + y.interior_critical_points;
   c.connections_direct = x.connections_direct + y.connections_direct;
   c.connections_traced = x.connections_traced + y.connections_traced;

@@ -81,6 +81,7 @@ const std::vector<Entry> &table() {
         exact_entry("cells", &ExactCounts::cells),
         exact_entry("graph_nodes", &ExactCounts::graph_nodes),
         exact_entry("edge_critical_points", &ExactCounts::edge_critical_points),
+        exact_entry("level_edges", &ExactCounts::level_edges),
         exact_entry("interior_critical_points", &ExactCounts::interior_critical_points),
         exact_entry("connections_direct", &ExactCounts::connections_direct),
         exact_entry("connections_traced", &ExactCounts::connections_traced),

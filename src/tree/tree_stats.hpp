@@ -30,6 +30,9 @@ struct ExactCounts {
   int64_t cells = 0;
   int64_t graph_nodes = 0;
   int64_t edge_critical_points = 0;
+  // Constant edges across which the field rises or falls (cell/level_edges.hpp): no node, no
+  // fallback; counted once per cell side (an inner edge level on both sides counts twice).
+  int64_t level_edges = 0;
   int64_t interior_critical_points = 0;
   int64_t connections_direct = 0, connections_traced = 0, connections_failed = 0;
   int64_t descent_steps = 0;

@@ -244,14 +244,25 @@ TEST(ExactTree, DegenerateDataGivesAValidTreeAndCountsFallbacks) {
   std::vector<std::array<int64_t, 3>> t;
   testing::square_grid(6, rng, v, t);
   // A ridge: the maximum is the whole segment y = 0.47 (exactly quadratic, so the ridge cells
-  // have a curve of critical points).
+  // have a curve of critical points), the sides y = 0 and y = 1 constant edges (level edges).
+  // Both are certified: no fallback.
   {
     const Mesh mesh = build_mesh(testing::lagrange_mesh(
         v, t, [](int64_t) { return 2; }, nullptr,
         [](const Vec3 &p) { return -(p[1] - 0.47) * (p[1] - 0.47); }, rng));
     const TreeResult tree = exact_contour_tree(mesh);
     check_invariants(tree, mesh);
-    EXPECT_GT(stat(tree, "fallback_cells"), 0);
+    EXPECT_EQ(stat(tree, "fallback_cells"), 0);
+    EXPECT_GT(stat(tree, "critical_curves"), 0);
+    EXPECT_EQ(stat(tree, "level_edges"), 12); // the bottom and top sides' six edges each
+    // (Flat regions not contracted here: the sides' vertices are nodes, all of the side's value.)
+    for (const TreeNode &n : tree.nodes) {
+      const bool top = std::abs(n.value + 0.53 * 0.53) < 1e-12;
+      const bool bottom = std::abs(n.value + 0.47 * 0.47) < 1e-12;
+      const bool ridge = std::abs(n.value) < 1e-12;
+      EXPECT_TRUE(top || bottom || ridge) << n.value;
+      EXPECT_EQ(n.type == NodeType::Maximum, ridge && n.type != NodeType::Saddle) << n.value;
+    }
   }
   // A plateau: constant where x < 0.4, a bowl elsewhere; constant cells fall back.
   {

@@ -95,6 +95,23 @@ inline void square_grid(int n, std::mt19937_64 &rng, std::vector<Vec3> &verts,
     }
 }
 
+// The same grid with its vertices on the lattice (no jitter): the lines x = i / n and y = j / n
+// are lines of mesh edges. Degree `degree`, values f(x, y); cells' corners rotated by `seed`.
+inline MeshInput lattice_grid(int n, int degree, const std::function<double(double, double)> &f,
+                              uint64_t seed = 3) {
+  std::mt19937_64 rng(seed);
+  std::vector<Vec3> v;
+  std::vector<std::array<int64_t, 3>> t;
+  square_grid(n, rng, v, t);
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i)
+      v[static_cast<std::size_t>(j * (n + 1) + i)] = {static_cast<double>(i) / n,
+                                                      static_cast<double>(j) / n, 0};
+  return lagrange_mesh(
+      v, t, [degree](int64_t) { return degree; }, nullptr,
+      [&f](const Vec3 &p) { return f(p[0], p[1]); }, rng);
+}
+
 // Octahedron with each face split into k^2 triangles, vertices projected to the unit sphere by
 // the `place` callback of lagrange_mesh (pass sphere_projection). Outward oriented.
 inline void octahedron(int k, std::vector<Vec3> &verts, std::vector<std::array<int64_t, 3>> &tris) {

@@ -115,10 +115,10 @@ INSTANTIATE_TEST_SUITE_P(Datasets, ShiftInvariance,
                            return s;
                          });
 
-// The conductor's plateau cells fall back to the stand-in, whose pairs differ by up to its
-// slack; its exact ridges are critical curves, shifted or not. What stays: the same fallback
-// cells, and every pair one tree is certain of (not flagged uncertain) in the other, within the
-// precision plus twice the slack.
+// The conductor: its exact ridges are critical curves and the constant edges around its plateau
+// level edges, shifted or not; only the plateau's constant cells fall back (exactly: no slack).
+// What stays: the same fallback cells and level edges, the same node types, and every pair one
+// tree is certain of (not flagged uncertain) in the other, within the precision.
 TEST(ShiftInvariance, TheConductorKeepsItsCertainPairs) {
   const TreeResult base = exact_tree(dataset("conductor", {1, 0}));
   const double range = base.nodes.back().value - base.nodes.front().value;
@@ -131,6 +131,14 @@ TEST(ShiftInvariance, TheConductorKeepsItsCertainPairs) {
     // precision): only the plateau's cells fall back, the same ones.
     EXPECT_EQ(t.stats.exact->fallback_by_reason, base.stats.exact->fallback_by_reason);
     EXPECT_EQ(t.stats.exact->fallback_cells, base.stats.exact->fallback_cells);
+    EXPECT_EQ(t.stats.exact->level_edges, base.stats.exact->level_edges);
+    EXPECT_GT(t.stats.exact->level_edges, 0);
+    EXPECT_EQ(t.stats.exact->fallback_cells,
+              t.stats.exact->fallbacks(FallbackReason::ConstantCell));
+    EXPECT_EQ(t.stats.exact->fallback_error, 0);
+    ASSERT_EQ(t.nodes.size(), base.nodes.size());
+    for (std::size_t i = 0; i < t.nodes.size(); ++i)
+      EXPECT_EQ(t.nodes[i].type, base.nodes[i].type) << "node " << i;
     const double tol =
         *t.stats.precision + *base.stats.precision +
         2 * std::max(t.stats.exact->fallback_error, base.stats.exact->fallback_error);
