@@ -1,6 +1,7 @@
 #include "exact/cell_phase.hpp"
 
 #include "cell/critical_curves.hpp"
+#include "cell/critical_edges.hpp"
 #include "cell/degenerate_points.hpp"
 #include "cell/level_edges.hpp"
 #include "cell/sector_connections.hpp"
@@ -12,6 +13,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <functional>
 #include <optional>
@@ -413,6 +415,10 @@ CellPhase run_cell_phase(const Mesh &mesh, const EdgeNodes &en, const ExactTreeO
         // Every degenerate edge of the cell only has its derivative vanish at a vertex.
         bool at_vertices = true;
         bool constant_edge = false;
+        // The cell's local edges that are critical edges (a ridge or valley along them), and
+        // their largest slack.
+        unsigned critical_edge_mask = 0;
+        double critical_edge_slack = 0;
         for (int j = 0; j < 3; ++j) {
           const int64_t e = topo.cell_edge(c, j);
           if (en.degeneracy[e] == kEdgeConstant) {
@@ -421,6 +427,11 @@ CellPhase run_cell_phase(const Mesh &mesh, const EdgeNodes &en, const ExactTreeO
             scratch.poly.assign(field.degree(c), field.coefficients(c));
             if (is_level_edge(scratch.poly, j, field.precision())) {
               ++out.level_edges;
+              continue;
+            }
+            if (const auto ce = critical_edge(scratch.poly, j, field.precision())) {
+              critical_edge_mask |= 1u << j;
+              critical_edge_slack = std::max(critical_edge_slack, ce->slack);
               continue;
             }
           }
@@ -432,6 +443,30 @@ CellPhase run_cell_phase(const Mesh &mesh, const EdgeNodes &en, const ExactTreeO
           edge_nodes_on |= en.count(e) != 0;
         }
         scratch.corner_index[c - block] = {-1, -1, -1};
+        if (critical_edge_mask != 0) {
+          // A ridge or valley along an edge, the cell on one side of it and without other
+          // critical points: its corners' sectors reach the other edges, whose chains connect
+          // them. The cell's other degenerate edges may only have their derivative vanish at
+          // those corners (the curve's ends).
+          bool certified = !why || at_vertices;
+          if (why && at_vertices) {
+            const std::array<bool, 3> cc = critical_corners(mesh, en, c, scratch.poly);
+            for (int k = 0; k < 3; ++k) {
+              const bool on_curve =
+                  (critical_edge_mask >> k & 1u) || (critical_edge_mask >> ((k + 2) % 3) & 1u);
+              certified = certified && (!cc[k] || on_curve);
+            }
+          }
+          if (certified) {
+            fallback[c] = 0;
+            scratch.curve_count[c - block] = std::popcount(critical_edge_mask);
+            scratch.degenerate_slack[c - block] = critical_edge_slack;
+            if (edge_nodes_on)
+              scratch.to_connect[connect_count++] = static_cast<int32_t>(c - block);
+            continue;
+          }
+          why |= fallback_bit(FallbackReason::DegenerateEdge);
+        }
         // Most cells: no gradient zero, decided on the stored coefficients.
         const GradientScreen screen = screen_gradient(field.coefficients(c), field.degree(c),
                                                       zero_options.constant_tolerance);

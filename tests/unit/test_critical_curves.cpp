@@ -161,11 +161,63 @@ TEST(CriticalCurves, AValleyAlongMeshEdges) {
   const TreeResult flat =
       tree_of(on_regular_grid(4, 2, [](double x, double) { return (x - 0.5) * (x - 0.5); }));
   EXPECT_EQ(shape(flat), "minimum(0,2) maximum(1,0) maximum(1,0)");
+  ASSERT_TRUE(flat.stats.exact);
+  // Certified: the valley's four edges are critical edges for the two cells on each, the other
+  // vertical edges level edges; the cells touching the valley at a corner classify it there.
+  EXPECT_EQ(flat.stats.exact->fallback_cells, 0);
+  EXPECT_EQ(flat.stats.exact->critical_curves, 8);
+  EXPECT_EQ(flat.stats.exact->level_edges, 24);
   const TreeResult tilted = tree_of(
       on_regular_grid(4, 2, [](double x, double y) { return (x - 0.5) * (x - 0.5) + 0.1 * y; }));
   EXPECT_EQ(shape(tilted), "minimum(0,1) saddle(1,2) maximum(1,0) maximum(1,0)");
   ASSERT_EQ(tilted.nodes.size(), 4u);
   EXPECT_NEAR(tilted.nodes[1].value, 0.1, 1e-12);
+}
+
+TEST(CriticalCurves, RidgesAndValleysAlongMeshEdgesAreCertified) {
+  struct Case {
+    const char *what;
+    int degree;
+    Field2 f;
+    const char *shape;
+    double curve_value;
+  };
+  const std::vector<Case> cases = {
+      // The diagonal y = x is a line of mesh edges: the ridge is the maximum, the corners
+      // (1, 0) and (0, 1) the minima.
+      {"ridge on the diagonal", 2, [](double x, double y) { return -(x - y) * (x - y); },
+       "minimum(0,1) minimum(0,1) maximum(2,0)", 0},
+      // A valley whose depth varies along it (P3: q = 1 + y / 2 in the cells' frames).
+      {"valley of varying depth", 3,
+       [](double x, double y) { return 1 + (x - 0.5) * (x - 0.5) * (1 + 0.5 * y); },
+       "minimum(0,2) maximum(1,0) maximum(1,0)", 1},
+      // A ridge on a line of edges between two valleys inside cells (P4): s = x - 0.5,
+      // -s^2 (1 - 6 s^2); the valleys at |s| = 12^-1/2 (-1/24), the sides x = 0, 1 at 0.125.
+      {"ridge between valleys", 4,
+       [](double x, double) {
+         const double s = x - 0.5;
+         return -s * s * (1 - 6 * s * s);
+       },
+       "minimum(0,2) minimum(0,2) maximum(2,0) maximum(1,0) maximum(1,0)", 0},
+      // The valley at 1e5 (pascal): certified the same, within the data's precision.
+      {"valley at 1e5", 2, [](double x, double) { return 1e5 + (x - 0.5) * (x - 0.5); },
+       "minimum(0,2) maximum(1,0) maximum(1,0)", 1e5},
+  };
+  for (const Case &c : cases) {
+    SCOPED_TRACE(c.what);
+    const MeshInput in = on_regular_grid(4, c.degree, c.f);
+    const Mesh mesh = build_mesh(in);
+    const TreeResult t = compute_tree(mesh, TreeRequest{}, &in).tree;
+    EXPECT_EQ(shape(t), c.shape);
+    ASSERT_TRUE(t.stats.exact);
+    EXPECT_EQ(t.stats.exact->fallback_cells, 0);
+    EXPECT_GT(t.stats.exact->critical_curves, 0);
+    bool found = false;
+    for (const auto &n : t.nodes)
+      found = found || std::abs(n.value - c.curve_value) < 1e-12 * (1 + std::abs(c.curve_value));
+    EXPECT_TRUE(found) << "no node at the curve's value " << c.curve_value;
+    testing::expect_refinements_converge(mesh, in, t);
+  }
 }
 
 TEST(CriticalCurves, ACurveOfSaddlesIsOneSaddle) {

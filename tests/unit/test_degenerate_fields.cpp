@@ -86,11 +86,10 @@ TEST(DegenerateFields, ConstantCellsAreFlatRegionsWithoutSubVertices) {
   // Zero left of the grid line x = x0 (a plateau of constant cubic cells), a cubic that vanishes
   // on that line to its right (positive next to it: the plateau is a minimum; cubic, so that the
   // cubic cells hold it exactly). Constant cells add no sub-vertices to the graph (their edges'
-  // chains already bound them). The cells along the plateau's edge: where the field rises across
-  // it (power 1) the edge is a level edge for them and they need no fallback; where it leaves
-  // the plateau flat (power 2: its gradient vanishes on the edge) they fall back to the K x K
-  // refinement (K = 6 for cubic cells). The plateau is one minimum, as in the PL tree of a fine
-  // refinement, and the two trees' diagrams agree.
+  // chains already bound them), and the cells along the plateau's edge need no fallback: where
+  // the field rises across it (power 1) the edge is a level edge for them, where it leaves the
+  // plateau flat (power 2: its gradient vanishes on the edge) a critical edge. The plateau is
+  // one minimum, as in the PL tree of a fine refinement, and the two trees' diagrams agree.
   for (int power : {1, 2}) {
     SCOPED_TRACE("power " + std::to_string(power));
     const int n = 14;
@@ -111,13 +110,10 @@ TEST(DegenerateFields, ConstantCellsAreFlatRegionsWithoutSubVertices) {
     };
     const int64_t constant = stat("fallback_constant_cell"), fallback = stat("fallback_cells");
     ASSERT_EQ(constant, 2 * 5 * n); // the cells left of x0
-    if (power == 1) {
-      EXPECT_EQ(fallback, constant);
-      EXPECT_EQ(stat("level_edges"), n); // the line x0, seen from its right
-    } else {
-      EXPECT_GT(fallback, constant);
-      EXPECT_EQ(stat("level_edges"), 0);
-    }
+    // The line x0, seen from its right: level edges, or critical edges (a valley's border).
+    EXPECT_EQ(fallback, constant);
+    EXPECT_EQ(stat("level_edges"), power == 1 ? n : 0);
+    EXPECT_EQ(stat("critical_curves"), power == 1 ? 0 : n);
     const int64_t refined_nodes = (fallback - constant) * 28; // (K + 1)(K + 2) / 2, K = 6
     EXPECT_LE(stat("graph_nodes"), m.topology.num_vertices() + stat("edge_critical_points") +
                                        stat("interior_critical_points") + refined_nodes);
