@@ -1,5 +1,7 @@
 #include "cell/critical_curves.hpp"
 
+#include "poly/symmetric_eigen2.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -75,12 +77,10 @@ Verdict examine(const BernsteinTriangle &g, const Model &m, double target, const
   // First without the eigenvectors (most boxes): |grad g(x)| <= |H| rho + rg at a zero.
   if (std::hypot(j.gradient[0], j.gradient[1]) > std::sqrt(a * a + 2 * b * b + d * d) * rho + rg)
     return Verdict::kNoZero;
-  const double mean = 0.5 * (a + d), rad = std::hypot(0.5 * (a - d), b);
-  const double theta = 0.5 * std::atan2(2 * b, a - d);
-  const Vec2 e_hi = {std::cos(theta), std::sin(theta)}, e_lo = {-std::sin(theta), std::cos(theta)};
-  const bool hi_first = std::abs(mean + rad) >= std::abs(mean - rad);
-  const double lambda = hi_first ? mean + rad : mean - rad, mu = hi_first ? mean - rad : mean + rad;
-  const Vec2 n = hi_first ? e_hi : e_lo, t = hi_first ? e_lo : e_hi;
+  const SymmetricEigen2 eh = symmetric_eigen2(j.hessian);
+  const bool hi_first = std::abs(eh.hi) >= std::abs(eh.lo);
+  const double lambda = eh.larger(), mu = eh.smaller();
+  const Vec2 n = hi_first ? eh.v_hi : eh.v_lo, t = hi_first ? eh.v_lo : eh.v_hi;
   const double gn = n[0] * j.gradient[0] + n[1] * j.gradient[1];
   const double gt = t[0] * j.gradient[0] + t[1] * j.gradient[1];
   // How far the box reaches along n and t from its centre.

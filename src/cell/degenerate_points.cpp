@@ -5,6 +5,7 @@
 #include "poly/lagrange_to_bernstein.hpp"
 #include "poly/lattice.hpp"
 #include "poly/root_isolation.hpp"
+#include "poly/symmetric_eigen2.hpp"
 
 #include <algorithm>
 #include <array>
@@ -45,11 +46,9 @@ bool flat_along_null_direction(const BernsteinTriangle &g, const Vec2 &c, double
   const double a = h[0][0], b = h[0][1], d = h[1][1];
   if (!(std::abs(a) + std::abs(b) + std::abs(d) > 0))
     return false; // no direction stands out (a monkey saddle); a plane would be constant
-  const double theta = 0.5 * std::atan2(2 * b, a - d);
-  const double mean = 0.5 * (a + d);
   // The eigenvector of the eigenvalue nearer zero: of mean - r if mean >= 0, else of mean + r.
-  const Vec2 e =
-      mean >= 0 ? Vec2{-std::sin(theta), std::cos(theta)} : Vec2{std::cos(theta), std::sin(theta)};
+  const SymmetricEigen2 eh = symmetric_eigen2(h);
+  const Vec2 e = 0.5 * (a + d) >= 0 ? eh.v_lo : eh.v_hi;
   constexpr double kHalf = 1e-2;
   const BernsteinPoly r = g.restrict_to_segment({c[0] - kHalf * e[0], c[1] - kHalf * e[1]},
                                                 {c[0] + kHalf * e[0], c[1] + kHalf * e[1]});
@@ -94,11 +93,9 @@ Vec2 polish_zero(const BernsteinTriangle &g, Vec2 c, const Vec2 &around, double 
   BernsteinTriangle::Jet j = g.jet(c[0], c[1]);
   double gn = std::hypot(j.gradient[0], j.gradient[1]);
   for (int it = 0; it < 100 && gn > 0; ++it) {
-    const double a = j.hessian[0][0], b = j.hessian[0][1], d = j.hessian[1][1];
-    const double mean = 0.5 * (a + d), r = std::hypot(0.5 * (a - d), b);
-    const double l[2] = {mean - r, mean + r};
-    const double theta = 0.5 * std::atan2(2 * b, a - d);
-    const Vec2 e[2] = {{-std::sin(theta), std::cos(theta)}, {std::cos(theta), std::sin(theta)}};
+    const SymmetricEigen2 eh = symmetric_eigen2(j.hessian);
+    const double l[2] = {eh.lo, eh.hi};
+    const Vec2 e[2] = {eh.v_lo, eh.v_hi};
     const double lmax = std::max(std::abs(l[0]), std::abs(l[1]));
     Vec2 step{0, 0};
     for (int k = 0; k < 2; ++k)

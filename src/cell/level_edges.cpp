@@ -40,29 +40,17 @@ int strict_sign(const std::vector<double> &c, double margin, int depth) {
 
 } // namespace
 
+double edge_derivative_margin(const BernsteinTriangle &g, double precision) {
+  return std::max(1e3 * 64 * std::numeric_limits<double>::epsilon() * g.gradient_scale(),
+                  2 * g.degree() * precision);
+}
+
 bool is_level_edge(const BernsteinTriangle &g, int k, double precision) {
   const int d = g.degree();
   if (d < 1)
     return false;
-  // The largest gradient coefficient, and the inward normal derivative on the edge.
-  double grad_scale = 0;
-  for (int b = 0; b < d; ++b)
-    for (int a = 0; a + b < d; ++a) {
-      const double x = g.coefficient(a, b);
-      grad_scale = std::max({grad_scale, d * std::abs(g.coefficient(a + 1, b) - x),
-                             d * std::abs(g.coefficient(a, b + 1) - x)});
-    }
-  // Above the rounding of the gradient's coefficients and above what the data's precision (how
-  // far the stored values may be from the field) lets them move: a nearly constant cell's
-  // gradient is noise, of either sign.
-  const double margin =
-      std::max(1e3 * 64 * std::numeric_limits<double>::epsilon() * grad_scale, 2 * d * precision);
-  const Vec2 n = inward_normal(k);
-  BernsteinTriangle dn = g.du();
-  const BernsteinTriangle dv = g.dv();
-  for (std::size_t i = 0; i < dn.coefficients().size(); ++i)
-    dn.coefficients()[i] = n[0] * dn.coefficients()[i] + n[1] * dv.coefficients()[i];
-  return strict_sign(dn.edge(k).coefficients(), margin, kMaxSplits) != 0;
+  const double margin = edge_derivative_margin(g, precision);
+  return strict_sign(g.along(inward_normal(k)).edge(k).coefficients(), margin, kMaxSplits) != 0;
 }
 
 } // namespace hoct

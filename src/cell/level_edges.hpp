@@ -20,4 +20,9 @@ namespace hoct {
 // border), without changing what this cell's graph says.
 bool is_level_edge(const BernsteinTriangle &g, int k, double precision);
 
+// That margin: a derivative of g whose Bernstein coefficients are within it of zero may be zero
+// (the rounding of g's gradient coefficients, and what the data's precision lets them move: a
+// nearly constant cell's gradient is noise, of either sign).
+double edge_derivative_margin(const BernsteinTriangle &g, double precision);
+
 } // namespace hoct

@@ -1,26 +1,12 @@
 #include "cell/sector_connections.hpp"
 
+#include "poly/symmetric_eigen2.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
 namespace hoct {
-namespace {
-
-// Eigen-decomposition of a symmetric 2x2 matrix: eigenvalues ascending, unit eigenvectors.
-void eigen2(const Mat2 &h, double lambda[2], Vec2 vec[2]) {
-  const double a = h[0][0], b = h[0][1], c = h[1][1];
-  const double mean = 0.5 * (a + c), diff = 0.5 * (a - c);
-  const double r = std::hypot(diff, b);
-  lambda[0] = mean - r;
-  lambda[1] = mean + r;
-  // Eigenvector of the larger eigenvalue: angle theta with tan(2 theta) = 2b / (a - c).
-  const double theta = 0.5 * std::atan2(2 * b, a - c);
-  vec[1] = {std::cos(theta), std::sin(theta)};
-  vec[0] = {-std::sin(theta), std::cos(theta)};
-}
-
-} // namespace
 
 void connect_sectors(const BernsteinTriangle &g, const CellNodes &cn,
                      const std::vector<int> &interior, const std::vector<CellEdgeNode> &edge,
@@ -120,9 +106,9 @@ void connect_sectors(const BernsteinTriangle &g, const CellNodes &cn,
       }
       continue;
     }
-    double lambda[2];
-    Vec2 vec[2];
-    eigen2(hessian(p), lambda, vec);
+    const SymmetricEigen2 eh = symmetric_eigen2(hessian(p));
+    const double lambda[2] = {eh.lo, eh.hi};
+    const Vec2 vec[2] = {eh.v_lo, eh.v_hi};
     const Vec2 neg0 = {-vec[0][0], -vec[0][1]}, neg1 = {-vec[1][0], -vec[1][1]};
     if (lambda[0] < 0 && lambda[1] > 0) { // saddle: two lower, two upper sectors
       lower(node, vec[0], 2);
@@ -143,14 +129,7 @@ void connect_sectors(const BernsteinTriangle &g, const CellNodes &cn,
   // field lying on the edge (degenerate: fall back). The level is relative to the gradient, not
   // the values: in a thin cell the reference normal derivative is small with the cell's width.
   // The largest gradient coefficient, d |c[a+1,b] - c[a,b]| or d |c[a,b+1] - c[a,b]|.
-  double grad_scale = 0;
-  const int d = g.degree();
-  for (int b = 0; b < d; ++b)
-    for (int a = 0; a + b < d; ++a) {
-      const double c = g.coefficient(a, b);
-      grad_scale = std::max({grad_scale, d * std::abs(g.coefficient(a + 1, b) - c),
-                             d * std::abs(g.coefficient(a, b + 1) - c)});
-    }
+  const double grad_scale = g.gradient_scale();
   const double gscale = 1e3 * 64 * std::numeric_limits<double>::epsilon() * grad_scale;
   for (const CellEdgeNode &e : edge) {
     const Vec2 &p = cn.nodes[e.node].uv;

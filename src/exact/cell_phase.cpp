@@ -8,6 +8,7 @@
 #include "poly/gradient_zeros.hpp"
 #include "poly/reference_triangle.hpp"
 #include "poly/root_isolation.hpp"
+#include "poly/symmetric_eigen2.hpp"
 #include "util/parallel_for.hpp"
 #include "util/stopwatch.hpp"
 
@@ -255,10 +256,7 @@ bool nearly_singular_hessian(const BernsteinTriangle &g,
            std::abs(g.coefficient(a, b + 2) - 2 * g.coefficient(a, b + 1) + g.coefficient(a, b))});
   scale *= d * (d - 1);
   for (const InteriorCritical &p : critical) {
-    const Mat2 h = g.jet(p.uv[0], p.uv[1]).hessian;
-    const double mean = 0.5 * (h[0][0] + h[1][1]);
-    const double r = std::hypot(0.5 * (h[0][0] - h[1][1]), h[0][1]);
-    if (std::min(std::abs(mean - r), std::abs(mean + r)) <= 1e-3 * scale)
+    if (std::abs(symmetric_eigen2(g.jet(p.uv[0], p.uv[1]).hessian).smaller()) <= 1e-3 * scale)
       return true;
   }
   return false;
@@ -272,10 +270,8 @@ bool nearly_singular_hessian(const BernsteinTriangle &g,
 bool split_ridge(const BernsteinTriangle &g, const GradientZeros &z,
                  const std::function<Mat2()> &frame) {
   auto ratio = [](const Mat2 &h) {
-    const double mean = 0.5 * (h[0][0] + h[1][1]);
-    const double r = std::hypot(0.5 * (h[0][0] - h[1][1]), 0.5 * (h[0][1] + h[1][0]));
-    const double lo = std::min(std::abs(mean - r), std::abs(mean + r));
-    const double hi = std::max(std::abs(mean - r), std::abs(mean + r));
+    const SymmetricEigen2 e = symmetric_eigen2(h);
+    const double lo = std::abs(e.smaller()), hi = std::abs(e.larger());
     return hi > 0 ? lo / hi : 1.0;
   };
   std::optional<Mat2> inv;
@@ -419,6 +415,7 @@ CellPhase run_cell_phase(const Mesh &mesh, const EdgeNodes &en, const ExactTreeO
         // their largest slack.
         unsigned critical_edge_mask = 0;
         double critical_edge_slack = 0;
+        int critical_edge_curves = 0, critical_edge_ends = 0;
         for (int j = 0; j < 3; ++j) {
           const int64_t e = topo.cell_edge(c, j);
           if (en.degeneracy[e] == kEdgeConstant) {
@@ -432,6 +429,8 @@ CellPhase run_cell_phase(const Mesh &mesh, const EdgeNodes &en, const ExactTreeO
             if (const auto ce = critical_edge(scratch.poly, j, field.precision())) {
               critical_edge_mask |= 1u << j;
               critical_edge_slack = std::max(critical_edge_slack, ce->slack);
+              critical_edge_curves += ce->curve;
+              critical_edge_ends += ce->curve ? 0 : std::popcount(ce->ends);
               continue;
             }
           }
@@ -444,10 +443,10 @@ CellPhase run_cell_phase(const Mesh &mesh, const EdgeNodes &en, const ExactTreeO
         }
         scratch.corner_index[c - block] = {-1, -1, -1};
         if (critical_edge_mask != 0) {
-          // A ridge or valley along an edge, the cell on one side of it and without other
-          // critical points: its corners' sectors reach the other edges, whose chains connect
-          // them. The cell's other degenerate edges may only have their derivative vanish at
-          // those corners (the curve's ends).
+          // A ridge or valley along an edge, or a constant edge critical at its ends, the cell
+          // on one side of it and without other critical points: its corners' sectors reach the
+          // other edges, whose chains connect them. The cell's other degenerate edges may only
+          // have their derivative vanish at those corners.
           bool certified = !why || at_vertices;
           if (why && at_vertices) {
             const std::array<bool, 3> cc = critical_corners(mesh, en, c, scratch.poly);
@@ -459,7 +458,8 @@ CellPhase run_cell_phase(const Mesh &mesh, const EdgeNodes &en, const ExactTreeO
           }
           if (certified) {
             fallback[c] = 0;
-            scratch.curve_count[c - block] = std::popcount(critical_edge_mask);
+            scratch.curve_count[c - block] = critical_edge_curves;
+            scratch.corner_count[c - block] = critical_edge_ends;
             scratch.degenerate_slack[c - block] = critical_edge_slack;
             if (edge_nodes_on)
               scratch.to_connect[connect_count++] = static_cast<int32_t>(c - block);

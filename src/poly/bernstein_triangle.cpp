@@ -388,6 +388,25 @@ bool BernsteinTriangle::is_constant() const {
   return std::all_of(c_.begin(), c_.end(), [&](double x) { return x == c_[0]; });
 }
 
+BernsteinTriangle BernsteinTriangle::along(const Vec2 &e) const {
+  BernsteinTriangle r = du();
+  const BernsteinTriangle v = dv();
+  for (std::size_t i = 0; i < r.c_.size(); ++i)
+    r.c_[i] = e[0] * r.c_[i] + e[1] * v.c_[i];
+  return r;
+}
+
+double BernsteinTriangle::gradient_scale() const {
+  double s = 0;
+  for (int b = 0; b < d_; ++b)
+    for (int a = 0; a + b < d_; ++a) {
+      const double x = coefficient(a, b);
+      s = std::max(
+          {s, d_ * std::abs(coefficient(a + 1, b) - x), d_ * std::abs(coefficient(a, b + 1) - x)});
+    }
+  return s;
+}
+
 void bernstein_from_lattice_values(const double *values, int degree, double *out) {
   // out[i] = sum over j of M(i, j) values[j], each a dot product taken in j order (the same
   // result to the bit), four rows at a time: a lone dot product waits on its previous addition

@@ -39,6 +39,8 @@ public:
   // Partial derivatives as polynomials of degree d-1 (degree 0 zero polynomial for d = 0).
   BernsteinTriangle du() const;
   BernsteinTriangle dv() const;
+  // The derivative along e (reference coordinates): e[0] du + e[1] dv, of degree d - 1.
+  BernsteinTriangle along(const Vec2 &e) const;
   Vec2 gradient(double u, double v) const;
   // [[g_uu, g_uv], [g_uv, g_vv]].
   Mat2 hessian(double u, double v) const;
@@ -71,6 +73,9 @@ public:
   std::pair<double, double> bounds() const;
   // True if all coefficients are equal (the polynomial is constant).
   bool is_constant() const;
+  // The largest Bernstein coefficient of du and dv in magnitude, d |c[a+1,b] - c[a,b]| or
+  // d |c[a,b+1] - c[a,b]|: the scale against which the gradient's rounding is judged.
+  double gradient_scale() const;
 
 private:
   int d_ = 0;

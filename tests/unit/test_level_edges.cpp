@@ -57,6 +57,25 @@ TEST(LevelEdges, AnOffsetKeepsThemLevel) {
   EXPECT_EQ(t.stats.exact->level_edges, 8);
 }
 
+TEST(LevelEdges, DirichletSidesMeetingAtACriticalCorner) {
+  // x y (3 - x - y) (P3): zero on the bottom and left sides, whose normal derivatives vanish at
+  // the corner (0, 0), a critical point (the gradient is zero there). The two cells at that
+  // corner (split by the diagonal) rise from their side everywhere but there: certified, the
+  // corner counted as critical. The sides are one minimum, the corner (1, 1) the maximum (1).
+  const MeshInput in =
+      testing::lattice_grid(4, 3, [](double x, double y) { return x * y * (3 - x - y); });
+  const Mesh mesh = build_mesh(in);
+  const TreeResult t = compute_tree(mesh, TreeRequest{}, &in).tree;
+  EXPECT_EQ(testing::tree_shape(t), "minimum(0,1) maximum(1,0)");
+  ASSERT_EQ(t.nodes.size(), 2u);
+  EXPECT_NEAR(t.nodes[0].value, 0, 1e-12);
+  EXPECT_NEAR(t.nodes[1].value, 1, 1e-12);
+  ASSERT_TRUE(t.stats.exact);
+  EXPECT_EQ(t.stats.exact->fallback_cells, 0);
+  EXPECT_GE(t.stats.exact->critical_corners, 2);
+  testing::expect_refinements_converge(mesh, in, t);
+}
+
 TEST(LevelEdges, AKinkAlongMeshEdgesIsOneMinimum) {
   // |x - 0.5| (linear in each cell, held as P2): every vertical edge is constant, the field
   // rising from x = 0.5 on both sides. The kink is the minimum, each side x = 0, x = 1 a maximum.
