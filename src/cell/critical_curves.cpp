@@ -14,7 +14,6 @@ namespace {
 constexpr double kEps = std::numeric_limits<double>::epsilon();
 constexpr int kFirstGrid = 8; // the first boxes: an 8 x 8 grid over the unit square
 constexpr int kMaxDepth = 12; // splits below it: boxes down to 1 / 32768
-constexpr int64_t kMaxBoxes = 20000;
 constexpr int kRegionGrids[] = {8, 16, 32, 64}; // Q's grids, coarsest first
 // Slabs closer than this (reference units) meet; a boundary point this close to a slab is on it.
 constexpr double kTouch = 1e-12;
@@ -330,7 +329,8 @@ std::vector<Polyline> region_boundary(const std::vector<char> &in, int n) {
 CurveResolution resolve_critical_curves(const BernsteinTriangle &g,
                                         std::span<const Vec2> boundary_points, double value_noise,
                                         const std::array<bool, 3> &corners,
-                                        const std::array<double, 3> &corner_reach) {
+                                        const std::array<double, 3> &corner_reach,
+                                        int64_t max_boxes) {
   CurveResolution out;
   const int d = g.degree();
   if (d < 2)
@@ -362,7 +362,7 @@ CurveResolution resolve_critical_curves(const BernsteinTriangle &g,
   while (!stack.empty()) {
     const Pending p = stack.back();
     stack.pop_back();
-    if (++out.boxes > kMaxBoxes)
+    if (++out.boxes > max_boxes)
       return out;
     SlabBox b;
     switch (examine(g, m, target, p.c, p.r, b)) {

@@ -59,11 +59,14 @@ struct CurveResolution {
 // either off every curve's region or on a curve. `value_noise`: Field::precision.
 // `corners[k]`: corner k is critical for an edge (its derivative vanishes there,
 // kEdgeRootAtVertex); if on no curve, its sectors are classified in its corner triangle, of size
-// at most corner_reach[k] (in edge parameters), into `CurveResolution::corners`.
+// at most corner_reach[k] (in edge parameters), into `CurveResolution::corners`. `max_boxes`:
+// the cover gives up (unresolved) past that many boxes.
+inline constexpr int64_t kCurveCoverBoxes = 20000;
 CurveResolution resolve_critical_curves(const BernsteinTriangle &g,
                                         std::span<const Vec2> boundary_points,
                                         double value_noise = 0,
                                         const std::array<bool, 3> &corners = {},
-                                        const std::array<double, 3> &corner_reach = {});
+                                        const std::array<double, 3> &corner_reach = {},
+                                        int64_t max_boxes = kCurveCoverBoxes);
 
 } // namespace hoct

@@ -33,6 +33,13 @@ constexpr int64_t kCellBlock = 512;
 // Points of a critical curve that paths from the cell's other nodes may end at.
 constexpr std::size_t kCurveTargets = 8;
 
+// The critical-curve cover's budget in a cell beside a level edge. Beside a plateau (data clamped
+// to a level) such cells wiggle, and a cover there takes thousands of boxes, milliseconds per
+// cell on every cell of a plateau's border; they fall back instead, as before their constant
+// edge was known to be level. A quadratic ridge meeting a level edge (the conductor's) takes a
+// few dozen. (Decided by the cell alone, so that pieces of a partitioned mesh decide alike.)
+constexpr int64_t kCurveBoxesBesideLevelEdges = 256;
+
 // Per-thread buffers of the cell phase, reused from cell to cell.
 struct CellScratch {
   // The block's certified interior critical points, cell by cell (the block's cell i's from
@@ -62,7 +69,8 @@ struct CellScratch {
   // how many.
   std::vector<CriticalCurve> curves;
   int32_t curve_count[kCellBlock];
-  std::vector<Vec2> boundary_points; // the current cell's corners and edge nodes
+  std::vector<Vec2> boundary_points;  // the current cell's corners and edge nodes
+  bool beside_level_edge[kCellBlock]; // the block's cells with a level edge
 };
 
 // Which corners of cell c are critical: an edge whose derivative vanishes at the vertex
@@ -373,8 +381,9 @@ CellPhase run_cell_phase(const Mesh &mesh, const EdgeNodes &en, const ExactTreeO
             pts.push_back(point_on_edge(k, rev ? 1 - en.nodes[gi].t : en.nodes[gi].t));
           }
         }
-        CurveResolution res = resolve_critical_curves(scratch.poly, pts, field.precision(), corners,
-                                                      corner_reach(mesh, en, c));
+        CurveResolution res = resolve_critical_curves(
+            scratch.poly, pts, field.precision(), corners, corner_reach(mesh, en, c),
+            scratch.beside_level_edge[c - block] ? kCurveBoxesBesideLevelEdges : kCurveCoverBoxes);
         if (!res.resolved)
           return false;
         for (int p : must) {
@@ -411,19 +420,25 @@ CellPhase run_cell_phase(const Mesh &mesh, const EdgeNodes &en, const ExactTreeO
         // Every degenerate edge of the cell only has its derivative vanish at a vertex.
         bool at_vertices = true;
         bool constant_edge = false;
+        // Most cells: no gradient zero, decided on the stored coefficients (a constant cell's
+        // edges are neither level nor critical edges: not looked at).
+        const GradientScreen screen = screen_gradient(field.coefficients(c), field.degree(c),
+                                                      zero_options.constant_tolerance);
         // The cell's local edges that are critical edges (a ridge or valley along them), and
         // their largest slack.
         unsigned critical_edge_mask = 0;
         double critical_edge_slack = 0;
         int critical_edge_curves = 0, critical_edge_ends = 0;
+        scratch.beside_level_edge[c - block] = false;
         for (int j = 0; j < 3; ++j) {
           const int64_t e = topo.cell_edge(c, j);
-          if (en.degeneracy[e] == kEdgeConstant) {
+          if (en.degeneracy[e] == kEdgeConstant && screen.verdict != GradientScreen::kConstant) {
             // A constant edge across which the field rises or falls into this cell: a piece of
             // a level set, no node and nothing to classify.
             scratch.poly.assign(field.degree(c), field.coefficients(c));
             if (is_level_edge(scratch.poly, j, field.precision())) {
               ++out.level_edges;
+              scratch.beside_level_edge[c - block] = true;
               continue;
             }
             if (const auto ce = critical_edge(scratch.poly, j, field.precision())) {
@@ -467,9 +482,6 @@ CellPhase run_cell_phase(const Mesh &mesh, const EdgeNodes &en, const ExactTreeO
           }
           why |= fallback_bit(FallbackReason::DegenerateEdge);
         }
-        // Most cells: no gradient zero, decided on the stored coefficients.
-        const GradientScreen screen = screen_gradient(field.coefficients(c), field.degree(c),
-                                                      zero_options.constant_tolerance);
         if (screen.verdict == GradientScreen::kConstant) {
           why |= fallback_bit(FallbackReason::ConstantCell);
         } else if (why && at_vertices) {
