@@ -361,12 +361,14 @@ PYBIND11_MODULE(_hoct, m) {
                                  d[py::str(k)] = v;
                                return d;
                              })
-      .def("simplify",
-           [](const PyTree &t, double threshold) {
-             PyTree r;
-             r.tree = simplify_tree(t.tree, py_checks::threshold(threshold, "simplify"));
-             return r;
-           })
+      .def(
+          "simplify",
+          [](const PyTree &t, double threshold, bool loops) {
+            PyTree r;
+            r.tree = simplify_tree(t.tree, py_checks::threshold(threshold, "simplify"), loops);
+            return r;
+          },
+          py::arg("threshold"), py::arg("loops") = false)
       .def("arc_paths",
            [](PyTree &t) {
              compute_arc_paths(t.tree, 0); // every hardware thread: the same paths
@@ -375,15 +377,16 @@ PYBIND11_MODULE(_hoct, m) {
                out.emplace_back(p.begin(), p.end());
              return out;
            })
-      .def("simplify_by",
-           [](const PyTree &t, const std::string &spec) {
-             const TreeResult &x = t.tree;
-             const double range =
-                 x.nodes.empty() ? 0 : x.nodes.back().value - x.nodes.front().value;
-             PyTree r;
-             r.tree = simplify_tree(x, parse_threshold(spec, "simplify_by").absolute(range));
-             return r;
-           })
+      .def(
+          "simplify_by",
+          [](const PyTree &t, const std::string &spec, bool loops) {
+            const TreeResult &x = t.tree;
+            const double range = x.nodes.empty() ? 0 : x.nodes.back().value - x.nodes.front().value;
+            PyTree r;
+            r.tree = simplify_tree(x, parse_threshold(spec, "simplify_by").absolute(range), loops);
+            return r;
+          },
+          py::arg("spec"), py::arg("loops") = false)
       .def(
           "to_json",
           [](const PyTree &t, bool timings) {

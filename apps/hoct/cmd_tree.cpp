@@ -29,6 +29,7 @@ struct TreeOptions {
   bool branches = false;
   bool linear = false, augmented = false, force = false, quiet = false, keep_flat = false;
   bool no_timings = false;
+  bool simplify_loops = false;
   MergeOption merge;
   int refine = 0;
   int threads = 0;
@@ -45,6 +46,9 @@ TreeRequest request_of(const TreeOptions &o) {
   rq.keep_flat = o.keep_flat;
   if (!o.simplify.empty())
     rq.simplify = parse_threshold(o.simplify, "--simplify");
+  if (o.simplify_loops && o.simplify.empty())
+    throw Error("--simplify-loops needs --simplify THRESHOLD");
+  rq.simplify_loops = o.simplify_loops;
   rq.force = o.force;
   rq.threads = o.threads;
   rq.arcs = o.vtp.empty() ? ArcGeometry::None : ArcGeometry::Paths;
@@ -127,6 +131,9 @@ void register_tree(CLI::App &app) {
   sub->add_option("--simplify", o->simplify,
                   "Remove leaf branches with persistence below this (absolute, or % of the value "
                   "range, e.g. 0.5%)");
+  sub->add_flag("--simplify-loops", o->simplify_loops,
+                "With --simplify, also remove the loops of a Reeb graph whose essential pair is "
+                "below the threshold (the smallest first, each collapsed to one chain)");
   sub->add_flag("--branches", o->branches, "Print the branch decomposition as an indented list");
   sub->add_flag("--keep-flat", o->keep_flat,
                 "Keep the nodes and zero-length arcs that plateaus (equal values) produce, instead "

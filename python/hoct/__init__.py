@@ -345,19 +345,24 @@ _native = {name: getattr(Tree, name) for name in ("simplify", "simplify_by", "wr
                                                   "write_vtp", "write_svg")}
 
 
-def _simplify(self, threshold):
+def _simplify(self, threshold, loops=False):
     """The tree simplified by an absolute persistence threshold: a finite number >= 0 (nan, inf
-    and negatives are refused, as by `--simplify`)."""
+    and negatives are refused, as by `--simplify`). `loops=True`: a Reeb graph's loops whose
+    essential pair is below the threshold are removed too (`--simplify-loops`)."""
     if isinstance(threshold, bool) or not isinstance(threshold, numbers.Real):
         raise TypeError("simplify: the threshold must be a number, not %s (%r); simplify_by "
                         "takes a text such as '0.5%%'" % (type(threshold).__name__, threshold))
-    return _native["simplify"](self, float(threshold))
+    if not isinstance(loops, bool):
+        raise TypeError("simplify: loops must be True or False, not %r" % (loops,))
+    return _native["simplify"](self, float(threshold), loops)
 
 
-def _simplify_by(self, spec):
+def _simplify_by(self, spec, loops=False):
     """The tree simplified by a persistence threshold: a finite number >= 0, or a percentage of
-    the value range such as '0.5%' (as `--simplify`)."""
-    return _native["simplify_by"](self, _args.threshold(spec, "simplify_by"))
+    the value range such as '0.5%' (as `--simplify`); `loops` as for `simplify`."""
+    if not isinstance(loops, bool):
+        raise TypeError("simplify_by: loops must be True or False, not %r" % (loops,))
+    return _native["simplify_by"](self, _args.threshold(spec, "simplify_by"), loops)
 
 
 def _write_json(self, path, timings=True):

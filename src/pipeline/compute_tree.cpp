@@ -20,6 +20,8 @@ void check_request(const TreeRequest &rq, const MeshInput *input) {
     throw Error("the linear method needs the mesh's Lagrange nodes as read (the input)");
   if (rq.simplify && rq.augmented)
     throw Error("simplification works on the reduced tree (drop --augmented)");
+  if (rq.simplify_loops && !rq.simplify)
+    throw Error("removing loops needs a threshold (--simplify)");
   if (rq.threads < 0)
     throw Error("threads must be 0 (all cores) or more, not " + std::to_string(rq.threads));
 }
@@ -140,7 +142,7 @@ TreeOutcome finish_tree(TreeResult tree, const TreeRequest &rq, const TreeContex
     const double range =
         tree.nodes.empty() ? 0 : tree.nodes.back().value - tree.nodes.front().value;
     clock.lap();
-    out.simplified = simplify_tree(tree, rq.simplify->absolute(range));
+    out.simplified = simplify_tree(tree, rq.simplify->absolute(range), rq.simplify_loops);
     // Its branches: the whole tree's, then simplified and decomposed again.
     out.simplified->stats.time.branches = *tree.stats.time.branches + clock.lap();
     out.simplified->forced = out.warnings;

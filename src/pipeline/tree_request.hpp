@@ -32,6 +32,7 @@ struct TreeRequest {
   bool augmented = false; // keep the regular nodes (then no contraction, no simplification)
   bool keep_flat = false; // keep the nodes and zero-length arcs of plateaus
   std::optional<Threshold> simplify;
+  bool simplify_loops = false; // the simplification removes a Reeb graph's loops below it too
   bool force = false; // compute what is well defined on a domain that is not a disk or sphere
   int threads = 0;    // 0: every hardware thread; the result does not depend on it
   ArcGeometry arcs = ArcGeometry::None;

@@ -8,8 +8,15 @@
 namespace hoct {
 
 std::vector<PersistencePair> loop_pairs(const ContourTree &g) {
-  const int64_t n = g.size(), m = static_cast<int64_t>(g.arcs.size());
   std::vector<PersistencePair> out;
+  for (LoopCycle &c : loop_cycles(g))
+    out.push_back(c.pair);
+  return out;
+}
+
+std::vector<LoopCycle> loop_cycles(const ContourTree &g) {
+  const int64_t n = g.size(), m = static_cast<int64_t>(g.arcs.size());
+  std::vector<LoopCycle> out;
   if (graph_loops(g) == 0)
     return out;
   // The 2-core: arcs off every leaf removed until none is left (they carry no cycle).
@@ -112,7 +119,10 @@ std::vector<PersistencePair> loop_pairs(const ContourTree &g) {
       if (cycle.empty())
         continue; // cannot happen for an independent cycle
       const int64_t bottom = g.arcs[order[cycle.back()]][0];
-      out.push_back({PersistencePair::Kind::Loop, v, bottom, g.values[v], g.values[bottom]});
+      LoopCycle loop{{PersistencePair::Kind::Loop, v, bottom, g.values[v], g.values[bottom]}, {}};
+      for (int64_t r : cycle)
+        loop.arcs.push_back(order[r]);
+      out.push_back(std::move(loop));
       by_pivot.emplace(cycle.back(), std::move(cycle));
     }
   return out;

@@ -19,4 +19,13 @@ namespace hoct {
 // whose nodes ascend in the total order). None for a tree.
 std::vector<PersistencePair> loop_pairs(const ContourTree &graph);
 
+// Each loop's pair with the reduced cycle that carries it: arcs (indices of graph.arcs) whose
+// every node has an even number of them, all between the pair's bottom and top (lower ends at
+// or above the bottom, upper ends at or below the top), the bottom's arc among them.
+struct LoopCycle {
+  PersistencePair pair;
+  std::vector<int64_t> arcs;
+};
+std::vector<LoopCycle> loop_cycles(const ContourTree &graph);
+
 } // namespace hoct

@@ -1,13 +1,21 @@
 #include "tree/simplification.hpp"
 
 #include "tree/leaf_pruning.hpp"
+#include "tree/loop_removal.hpp"
 
 #include <algorithm>
 #include <cmath>
 
 namespace hoct {
 
-Simplification simplify(const ContourTree &in, double threshold) {
+Simplification simplify(const ContourTree &tree, double threshold, bool loops) {
+  // Loops below the threshold out first; `base` maps the graph left's nodes to the input's.
+  LoopRemoval removal;
+  if (loops && graph_loops(tree) > 0)
+    removal = remove_loops(tree, threshold);
+  const bool removing = loops && graph_loops(tree) > 0;
+  const ContourTree &in = removing ? removal.graph : tree;
+  auto base = [&](int64_t v) { return removing ? removal.kept[static_cast<std::size_t>(v)] : v; };
   LeafPruning pruning(in.values, in.arcs);
   pruning.prune(threshold);
   // The simplified tree: the nodes left, the arcs between them.
@@ -19,14 +27,19 @@ Simplification simplify(const ContourTree &in, double threshold) {
       index[v] = out.tree.size();
       out.tree.nodes.push_back(in.nodes[v]);
       out.tree.values.push_back(in.values[v]);
-      out.kept.push_back(v);
+      out.kept.push_back(base(v));
     }
   for (const auto &[id, lo, hi] : pruning.arcs_left())
     out.tree.arcs.push_back({index[lo], index[hi]});
   std::sort(out.tree.arcs.begin(), out.tree.arcs.end());
   out.pruned_leaves = static_cast<int64_t>(pruning.order().size());
+  out.removed_loops = removal.removed;
   pruning.prune(INFINITY);
   out.branches = pruning.branches();
+  for (Branch &b : out.branches) {
+    b.extremum = base(b.extremum);
+    b.saddle = base(b.saddle);
+  }
   return out;
 }
 

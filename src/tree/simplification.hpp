@@ -30,11 +30,14 @@ struct Simplification {
   std::vector<int64_t> kept;    // for each node of the simplified tree, its index in the input
   std::vector<Branch> branches; // of the INPUT tree: the root, then in reverse pruning order
   int64_t pruned_leaves = 0;
+  int64_t removed_loops = 0;
 };
 
 // Removes every leaf branch whose persistence is below `threshold` (absolute). A reduced tree is
-// expected (regular nodes are spliced out as they appear).
-Simplification simplify(const ContourTree &tree, double threshold);
+// expected (regular nodes are spliced out as they appear). On a Reeb graph leaves are pruned
+// and loops kept; with `loops`, the loops whose essential pair is below the threshold are
+// removed first (tree/loop_removal.hpp), and the branches are those of the graph left.
+Simplification simplify(const ContourTree &tree, double threshold, bool loops = false);
 
 // The branches of `simplify(tree, 0)` (the same list) without the simplified tree: of the tree
 // with these node values (ascending in the total order) and arcs (lower node first).

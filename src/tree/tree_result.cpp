@@ -169,11 +169,13 @@ TreeResult contract_flat(const TreeResult &t) { return contract_flat(t, nullptr)
 
 TreeResult contract_flat(TreeResult &&t) { return contract_flat(t, &t); }
 
-TreeResult simplify_tree(const TreeResult &t, double threshold) {
-  const Simplification s = simplify(as_contour_tree(t), threshold);
+TreeResult simplify_tree(const TreeResult &t, double threshold, bool loops) {
+  const Simplification s = simplify(as_contour_tree(t), threshold, loops);
   TreeResult r = derived_result(t, s.tree, s.kept);
   r.stats.nodes_before_simplification = static_cast<int64_t>(t.nodes.size());
   r.stats.simplification_threshold = threshold;
+  if (loops)
+    r.stats.loops_removed = s.removed_loops;
   decompose_branches(r);
   return r;
 }

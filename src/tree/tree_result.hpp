@@ -145,8 +145,9 @@ ContourTree as_contour_tree(const TreeResult &tree);
 
 // Simplifies a reduced tree by persistence (absolute threshold): keeps the nodes that survive,
 // recomputes pairs and branches, and records "nodes_before_simplification" and
-// "simplification_threshold" in the statistics.
-TreeResult simplify_tree(const TreeResult &tree, double threshold);
+// "simplification_threshold" in the statistics. With `loops`, a Reeb graph's loops below the
+// threshold go too ("loops_removed").
+TreeResult simplify_tree(const TreeResult &tree, double threshold, bool loops = false);
 
 // Contracts the zero-length arcs (within 1e-12 of the value range, plus the rounding of
 // values of the nodes' magnitude) of flat regions

@@ -104,6 +104,7 @@ const std::vector<Entry> &table() {
     e.push_back(
         plain_entry("nodes_before_simplification", &TreeStats::nodes_before_simplification));
     e.push_back(plain_entry("simplification_threshold", &TreeStats::simplification_threshold));
+    e.push_back(plain_entry("loops_removed", &TreeStats::loops_removed));
     e.push_back(plain_entry("precision", &TreeStats::precision));
     e.push_back(plain_entry("pairs_below_precision", &TreeStats::pairs_below_precision));
     e.push_back(

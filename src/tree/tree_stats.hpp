@@ -88,6 +88,7 @@ struct TreeStats {
   std::optional<int64_t> flat_nodes_merged;
   std::optional<int64_t> nodes_before_simplification;
   std::optional<double> simplification_threshold;
+  std::optional<int64_t> loops_removed; // by a simplification asked to remove loops
   // The smallest persistence the input's values resolve (mesh/field.hpp, Field::precision), and
   // the pairs at or below it: uncertain, kept and flagged.
   std::optional<double> precision;

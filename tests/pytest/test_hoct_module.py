@@ -182,6 +182,14 @@ def test_annulus_reeb_graph_has_its_loop_in_networkx():
     pairs = g.pairs
     loops = [p for p, k in zip(pairs["persistence"], pairs["kind"]) if k == "loop"]
     assert len(loops) == 1 and abs(loops[0] - 5.2) < 1e-12
+    # Simplified: the loop stays unless asked for; below the threshold it goes when asked.
+    assert g.simplify(6).loops == 1 and g.simplify_by("60%").loops == 1
+    gone = g.simplify(6, loops=True)
+    assert gone.loops == 0 and gone.stats["loops_removed"] == 1
+    assert g.simplify_by("60%", loops=True).loops == 0
+    assert g.simplify(5, loops=True).loops == 1  # 5.2 is above 5
+    with pytest.raises(TypeError, match="simplify: loops must be True or False"):
+        g.simplify(6, loops="yes")
 
 
 def test_read_on_threads_gives_the_same_mesh_and_tree(tmp):

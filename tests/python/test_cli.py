@@ -87,6 +87,26 @@ with tempdir() as tmp:
     bad = run("tree", p("g.vtu"), "--simplify", "lots", check=False)
     R.check(bad.returncode == 1 and "is not a threshold" in bad.stderr, bad.stderr.strip())
 
+    # A Reeb graph's loops below the threshold removed on request (the plate's 100 holes).
+    run("generate", "plate", "-o", p("plate.vtu"))
+    run("tree", p("plate.vtu"), "--json", p("plate.json"))
+    whole = json.load(open(p("plate.json")))
+    loops = sorted(pr["persistence"] for pr in whole["pairs"] if pr["kind"] == "loop")
+    R.check(len(loops) == whole["loops"] > 2, f"plate: {len(loops)} loop pairs, {whole['loops']} loops")
+    cut = loops[len(loops) // 2]  # about half stay
+    run("tree", p("plate.vtu"), "--simplify", repr(cut), "--simplify-loops", "--json", p("pl.json"))
+    run("tree", p("plate.vtu"), "--simplify", repr(cut), "--json", p("pk.json"))
+    pl, pk = json.load(open(p("pl.json"))), json.load(open(p("pk.json")))
+    left = [x for x in loops if x >= cut]
+    R.check(pl["loops"] == len(left) and pl["stats"]["loops_removed"] == len(loops) - len(left),
+            f"--simplify-loops: {pl['loops']} loops left of {len(loops)}, {len(left)} at or above {cut}")
+    R.check(pk["loops"] == len(loops) and "loops_removed" not in pk["stats"],
+            f"--simplify alone keeps the loops: {pk['loops']}")
+    R.check(all(pr["persistence"] >= cut for pr in pl["pairs"] if pr["kind"] == "loop"),
+            "loop pairs left are at or above the threshold")
+    bad = run("tree", p("plate.vtu"), "--simplify-loops", check=False)
+    R.check(bad.returncode == 1 and "needs --simplify" in bad.stderr, bad.stderr.strip())
+
     # Pictures of the field: PNG of the right size, not blank, with the glyph colours in it.
     for name in ("gauss", "sphere", "two-triangle"):
         run("generate", name, "-o", p(name + ".vtu"))
