@@ -11,8 +11,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
+#include <string>
+#include <vector>
 
 namespace hoct {
 namespace {
@@ -22,27 +25,34 @@ TreeResult tree_of(const MeshInput &in) {
   return compute_tree(mesh, TreeRequest{}, &in).tree;
 }
 
+// The exact tree of `in`, checked: its shape, its nodes' values (ascending), no fallback cell, and
+// the PL trees of refinements converging to it.
+TreeResult certified_tree(const MeshInput &in, const std::string &shape,
+                          const std::vector<double> &values) {
+  const Mesh mesh = build_mesh(in);
+  TreeResult t = compute_tree(mesh, TreeRequest{}, &in).tree;
+  EXPECT_EQ(testing::tree_shape(t), shape);
+  EXPECT_EQ(t.nodes.size(), values.size());
+  for (std::size_t i = 0; i < std::min(t.nodes.size(), values.size()); ++i)
+    EXPECT_NEAR(t.nodes[i].value, values[i], 1e-12) << "node " << i;
+  EXPECT_TRUE(t.stats.exact && t.stats.exact->fallback_cells == 0);
+  testing::expect_refinements_converge(mesh, in, t);
+  return t;
+}
+
 // y (1 - y) (1 + x / 2): zero on the bottom and top sides (Dirichlet), rising into the square
 // from both; no interior critical point. The two sides are minima, joined at the left side's
 // middle (0, 0.5) at 0.25; the maximum is the right side's middle (1, 0.5) at 0.375.
 double dirichlet(double x, double y) { return y * (1 - y) * (1 + x / 2); }
 
 TEST(LevelEdges, DirichletSidesAreMinimaWithoutFallback) {
-  const MeshInput in = testing::lattice_grid(4, 3, dirichlet);
-  const Mesh mesh = build_mesh(in);
-  const TreeResult t = compute_tree(mesh, TreeRequest{}, &in).tree;
-  EXPECT_EQ(testing::tree_shape(t), "minimum(0,1) minimum(0,1) saddle(2,1) maximum(1,0)");
+  const TreeResult t =
+      certified_tree(testing::lattice_grid(4, 3, dirichlet),
+                     "minimum(0,1) minimum(0,1) saddle(2,1) maximum(1,0)", {0, 0, 0.25, 0.375});
   ASSERT_EQ(t.nodes.size(), 4u);
-  EXPECT_NEAR(t.nodes[0].value, 0, 1e-12);
-  EXPECT_NEAR(t.nodes[1].value, 0, 1e-12);
-  EXPECT_NEAR(t.nodes[2].value, 0.25, 1e-12);
   EXPECT_NEAR(t.nodes[2].position[0], 0, 1e-12);
   EXPECT_NEAR(t.nodes[2].position[1], 0.5, 1e-12);
-  EXPECT_NEAR(t.nodes[3].value, 0.375, 1e-12);
-  ASSERT_TRUE(t.stats.exact);
-  EXPECT_EQ(t.stats.exact->fallback_cells, 0);
   EXPECT_EQ(t.stats.exact->level_edges, 8); // four on each of the two sides, one cell each
-  testing::expect_refinements_converge(mesh, in, t);
 }
 
 TEST(LevelEdges, AnOffsetKeepsThemLevel) {
@@ -62,35 +72,19 @@ TEST(LevelEdges, DirichletSidesMeetingAtACriticalCorner) {
   // the corner (0, 0), a critical point (the gradient is zero there). The two cells at that
   // corner (split by the diagonal) rise from their side everywhere but there: certified, the
   // corner counted as critical. The sides are one minimum, the corner (1, 1) the maximum (1).
-  const MeshInput in =
-      testing::lattice_grid(4, 3, [](double x, double y) { return x * y * (3 - x - y); });
-  const Mesh mesh = build_mesh(in);
-  const TreeResult t = compute_tree(mesh, TreeRequest{}, &in).tree;
-  EXPECT_EQ(testing::tree_shape(t), "minimum(0,1) maximum(1,0)");
-  ASSERT_EQ(t.nodes.size(), 2u);
-  EXPECT_NEAR(t.nodes[0].value, 0, 1e-12);
-  EXPECT_NEAR(t.nodes[1].value, 1, 1e-12);
-  ASSERT_TRUE(t.stats.exact);
-  EXPECT_EQ(t.stats.exact->fallback_cells, 0);
+  const TreeResult t = certified_tree(
+      testing::lattice_grid(4, 3, [](double x, double y) { return x * y * (3 - x - y); }),
+      "minimum(0,1) maximum(1,0)", {0, 1});
   EXPECT_GE(t.stats.exact->critical_corners, 2);
-  testing::expect_refinements_converge(mesh, in, t);
 }
 
 TEST(LevelEdges, AKinkAlongMeshEdgesIsOneMinimum) {
   // |x - 0.5| (linear in each cell, held as P2): every vertical edge is constant, the field
   // rising from x = 0.5 on both sides. The kink is the minimum, each side x = 0, x = 1 a maximum.
-  const MeshInput in =
-      testing::lattice_grid(4, 2, [](double x, double) { return std::abs(x - 0.5); });
-  const Mesh mesh = build_mesh(in);
-  const TreeResult t = compute_tree(mesh, TreeRequest{}, &in).tree;
-  EXPECT_EQ(testing::tree_shape(t), "minimum(0,2) maximum(1,0) maximum(1,0)");
-  ASSERT_EQ(t.nodes.size(), 3u);
-  EXPECT_NEAR(t.nodes[0].value, 0, 1e-12);
-  EXPECT_NEAR(t.nodes[1].value, 0.5, 1e-12);
-  ASSERT_TRUE(t.stats.exact);
-  EXPECT_EQ(t.stats.exact->fallback_cells, 0);
+  const TreeResult t = certified_tree(
+      testing::lattice_grid(4, 2, [](double x, double) { return std::abs(x - 0.5); }),
+      "minimum(0,2) maximum(1,0) maximum(1,0)", {0, 0.5, 0.5});
   EXPECT_EQ(t.stats.exact->level_edges, 32); // 12 inner vertical edges twice, 8 on the sides
-  testing::expect_refinements_converge(mesh, in, t);
 }
 
 TEST(LevelEdges, AnEdgeWhereTheGradientVanishesIsNone) {
