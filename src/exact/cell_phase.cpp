@@ -327,6 +327,11 @@ CellPhase run_cell_phase(const Mesh &mesh, const EdgeNodes &en, const ExactTreeO
     int64_t cell = begin;
     GradientZeroOptions zero_options;
     zero_options.frame = [&] { return mesh.geometry.frame(cell); };
+    // Beside a level edge (a plateau's border, where cells wiggle and searches are at their
+    // costliest) the search gives up sooner: such cells fell back unsearched before their edge
+    // was known to be level.
+    GradientZeroOptions level_options = zero_options;
+    level_options.deep_limit = 4;
     CellScratch scratch;
     auto block_start = clock_type::now();
     for (int64_t block = begin; block < end; block += kCellBlock) {
@@ -516,12 +521,16 @@ CellPhase run_cell_phase(const Mesh &mesh, const EdgeNodes &en, const ExactTreeO
           scratch.poly.assign(field.degree(c), field.coefficients(c));
           const BernsteinTriangle &g = scratch.poly;
           cell = c;
-          const GradientZeros z = find_gradient_zeros(g, zero_options, screen);
+          const bool beside_level = scratch.beside_level_edge[c - block];
+          const GradientZeros z =
+              find_gradient_zeros(g, beside_level ? level_options : zero_options, screen);
           // Zeros the search cannot certify: degenerate critical points, classified by their
-          // sectors where that is certified; else the cell falls back.
+          // sectors where that is certified (not beside a level edge: the cost, as above); else
+          // the cell falls back.
           if (!z.constant && (z.budget_exhausted || z.unresolved > 0)) {
-            DegenerateResolution res =
-                resolve_degenerate_zeros(g, z, zero_options, field.precision());
+            DegenerateResolution res;
+            if (!beside_level)
+              res = resolve_degenerate_zeros(g, z, zero_options, field.precision());
             if (res.resolved) {
               for (const GradientZero &p : res.zeros) {
                 if (p.near_boundary)
