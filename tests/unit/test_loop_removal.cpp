@@ -8,6 +8,8 @@
 #include "tree/loop_removal.hpp"
 #include "tree/simplification.hpp"
 
+#include "test_graphs.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -15,16 +17,6 @@
 
 namespace hoct {
 namespace {
-
-ContourTree graph(std::vector<double> values, std::vector<std::array<int64_t, 2>> arcs) {
-  ContourTree g;
-  for (std::size_t i = 0; i < values.size(); ++i)
-    g.nodes.push_back(static_cast<int64_t>(i));
-  g.values = std::move(values);
-  std::sort(arcs.begin(), arcs.end());
-  g.arcs = std::move(arcs);
-  return g;
-}
 
 std::vector<double> loop_persistences(const ContourTree &g) {
   std::vector<double> p;
@@ -36,7 +28,8 @@ std::vector<double> loop_persistences(const ContourTree &g) {
 
 // Two loops made of parallel arcs: 1-2 (persistence 1) and 3-4 (persistence 1.5).
 ContourTree two_loops() {
-  return graph({0, 1, 2, 5, 6.5, 10}, {{0, 1}, {1, 2}, {1, 2}, {2, 3}, {3, 4}, {3, 4}, {4, 5}});
+  return testing::graph_of({0, 1, 2, 5, 6.5, 10},
+                           {{0, 1}, {1, 2}, {1, 2}, {2, 3}, {3, 4}, {3, 4}, {4, 5}});
 }
 
 TEST(LoopRemoval, TheSmallerLoopGoesFirst) {
@@ -61,8 +54,9 @@ TEST(LoopRemoval, ALoopWithBranchesCollapsesToOneChain) {
   // The loop 2-3-5-4-2 (bottom 2 at 1, top 5 at 3: persistence 2); node 3 has a maximum 6 above
   // it, node 4 a minimum 1 below it. Collapsed, its nodes in value order form one chain
   // 2-3-4-5; 2 and 5 become regular, 3 stays an up-fork and 4 a down-fork: a tree.
-  const ContourTree g = graph({0, 0.5, 1, 2, 2.5, 3, 3.5, 5},
-                              {{0, 2}, {2, 3}, {2, 4}, {1, 4}, {3, 5}, {4, 5}, {3, 6}, {5, 7}});
+  const ContourTree g =
+      testing::graph_of({0, 0.5, 1, 2, 2.5, 3, 3.5, 5},
+                        {{0, 2}, {2, 3}, {2, 4}, {1, 4}, {3, 5}, {4, 5}, {3, 6}, {5, 7}});
   ASSERT_EQ(loop_persistences(g), (std::vector<double>{2}));
   EXPECT_EQ(remove_loops(g, 2).removed, 0); // below, not at
   const LoopRemoval r = remove_loops(g, 2.5);

@@ -6,6 +6,8 @@
 #include "tree/contour_tree.hpp"
 #include "tree/stand_in_contraction.hpp"
 
+#include "test_graphs.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -14,20 +16,10 @@
 namespace hoct {
 namespace {
 
-ContourTree graph(std::vector<double> values, std::vector<std::array<int64_t, 2>> arcs) {
-  ContourTree g;
-  for (std::size_t i = 0; i < values.size(); ++i)
-    g.nodes.push_back(static_cast<int64_t>(i));
-  g.values = std::move(values);
-  std::sort(arcs.begin(), arcs.end());
-  g.arcs = std::move(arcs);
-  return g;
-}
-
 TEST(StandInContraction, ABrokenRidgeIsOneMaximum) {
   // Maxima 2 (0.99) and 3 (1.0) joined at saddle 1 (0.97), all the stand-in's (slack 0.05): the
   // arc 1-2 (0.02) is contracted, 1 left regular is spliced out: the minimum and one maximum.
-  const ContourTree g = graph({0, 0.97, 0.99, 1.0}, {{0, 1}, {1, 2}, {1, 3}});
+  const ContourTree g = testing::graph_of({0, 0.97, 0.99, 1.0}, {{0, 1}, {1, 2}, {1, 3}});
   const StandInContraction c = contract_stand_in_arcs(g, {-1, 0.05, 0.05, 0.05});
   EXPECT_EQ(c.contracted, 1);
   EXPECT_EQ(c.tree.nodes, (std::vector<int64_t>{0, 3}));
@@ -38,14 +30,15 @@ TEST(StandInContraction, ABrokenRidgeIsOneMaximum) {
 
 TEST(StandInContraction, ALoopWithinTheSlackIsKept) {
   // Two parallel arcs between stand-in nodes 1 and 2 (a loop of persistence 0.05).
-  const ContourTree two = graph({0, 1, 1.05, 2}, {{0, 1}, {1, 2}, {1, 2}, {2, 3}});
+  const ContourTree two = testing::graph_of({0, 1, 1.05, 2}, {{0, 1}, {1, 2}, {1, 2}, {2, 3}});
   const StandInContraction a = contract_stand_in_arcs(two, {-1, 0.1, 0.1, -1});
   EXPECT_EQ(a.contracted, 0);
   EXPECT_EQ(a.tree.arcs, two.arcs);
   EXPECT_EQ(graph_loops(a.tree), 1);
   // A triangle 1-2-3 of stand-in nodes: the arc 1-2 contracted (2 has one arc down) makes the
   // loop two parallel arcs 1-3, which stay.
-  const ContourTree tri = graph({0, 1, 1.02, 1.04, 2}, {{0, 1}, {1, 2}, {1, 3}, {2, 3}, {3, 4}});
+  const ContourTree tri =
+      testing::graph_of({0, 1, 1.02, 1.04, 2}, {{0, 1}, {1, 2}, {1, 3}, {2, 3}, {3, 4}});
   const StandInContraction b = contract_stand_in_arcs(tri, {-1, 0.1, 0.1, 0.1, -1});
   EXPECT_EQ(b.contracted, 1);
   EXPECT_EQ(graph_loops(b.tree), 1);
