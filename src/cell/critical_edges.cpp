@@ -2,6 +2,7 @@
 
 #include "cell/level_edges.hpp"
 #include "poly/lattice.hpp"
+#include "poly/reference_triangle.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -18,11 +19,6 @@ int row(int d, int k, int a, int b) { return k == 0 ? b : (k == 1 ? d - a - b : 
 int q_index(int d, int k, int a, int b) {
   return k == 0 ? lattice_index(d - 2, a, b - 2)
                 : (k == 1 ? lattice_index(d - 2, a, b) : lattice_index(d - 2, a - 2, b));
-}
-
-// The reference gradient of the barycentric coordinate that vanishes on local edge k.
-Vec2 coordinate_gradient(int k) {
-  return k == 0 ? Vec2{0, 1} : (k == 1 ? Vec2{-1, -1} : Vec2{1, 0});
 }
 
 double max_abs(const BernsteinTriangle &p) {
@@ -57,7 +53,7 @@ std::optional<CriticalEdge> whole_edge(const BernsteinTriangle &g, int k, double
   if (side == 0)
     return std::nullopt;
   // D / w = 2 q |grad w|^2 + w (grad q . grad w), of degree d - 2.
-  const Vec2 gw = coordinate_gradient(k);
+  const Vec2 gw = inward_normal(k); // grad w in reference coordinates
   BernsteinTriangle h = q;
   for (double &x : h.coefficients())
     x *= 2 * (gw[0] * gw[0] + gw[1] * gw[1]);
@@ -85,7 +81,7 @@ std::optional<CriticalEdge> critical_edge(const BernsteinTriangle &g, int k, dou
   // The value at the edge's first corner (corner k).
   const double c =
       k == 0 ? g.coefficient(0, 0) : (k == 1 ? g.coefficient(d, 0) : g.coefficient(0, d));
-  const BernsteinTriangle dw = g.along(coordinate_gradient(k));
+  const BernsteinTriangle dw = g.along(inward_normal(k)); // D: inward_normal(k) is grad w
   const double margin = edge_derivative_margin(g, precision);
   // D on the edge: all of it within the margin of zero is a whole critical edge.
   const int m = d - 1;

@@ -435,12 +435,15 @@ CellPhase run_cell_phase(const Mesh &mesh, const EdgeNodes &en, const ExactTreeO
         double critical_edge_slack = 0;
         int critical_edge_curves = 0, critical_edge_ends = 0;
         scratch.beside_level_edge[c - block] = false;
+        bool poly_set = false; // scratch.poly holds cell c's polynomial
         for (int j = 0; j < 3; ++j) {
           const int64_t e = topo.cell_edge(c, j);
           if (en.degeneracy[e] == kEdgeConstant && screen.verdict != GradientScreen::kConstant) {
             // A constant edge across which the field rises or falls into this cell: a piece of
             // a level set, no node and nothing to classify.
-            scratch.poly.assign(field.degree(c), field.coefficients(c));
+            if (!poly_set)
+              scratch.poly.assign(field.degree(c), field.coefficients(c));
+            poly_set = true;
             if (is_level_edge(scratch.poly, j, field.precision())) {
               ++out.level_edges;
               scratch.beside_level_edge[c - block] = true;

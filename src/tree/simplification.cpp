@@ -10,10 +10,10 @@ namespace hoct {
 
 Simplification simplify(const ContourTree &tree, double threshold, bool loops) {
   // Loops below the threshold out first; `base` maps the graph left's nodes to the input's.
-  LoopRemoval removal;
-  if (loops && graph_loops(tree) > 0)
-    removal = remove_loops(tree, threshold);
   const bool removing = loops && graph_loops(tree) > 0;
+  LoopRemoval removal;
+  if (removing)
+    removal = remove_loops(tree, threshold);
   const ContourTree &in = removing ? removal.graph : tree;
   auto base = [&](int64_t v) { return removing ? removal.kept[static_cast<std::size_t>(v)] : v; };
   LeafPruning pruning(in.values, in.arcs);
