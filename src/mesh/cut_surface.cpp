@@ -146,26 +146,25 @@ void walk_fan(const Topology &t, int64_t v, Fan &fan) {
 } // namespace
 
 CornerCut cut_corners(const Topology &t, std::span<const int64_t> cut_edges) {
-  const int64_t nc = t.num_cells(), nv = t.num_vertices();
-  std::vector<uint8_t> is_cut(static_cast<std::size_t>(t.num_edges()), 0), on_cut(nv, 0);
+  const int64_t nv = t.num_vertices();
+  std::vector<uint8_t> is_cut(static_cast<std::size_t>(t.num_edges()), 0);
   std::vector<int64_t> cut_vertices;
   for (int64_t e : cut_edges) {
     is_cut[e] = 1;
     for (int64_t v : t.edge_vertices(e))
-      if (!on_cut[v]) {
-        on_cut[v] = 1;
-        cut_vertices.push_back(v);
-      }
+      cut_vertices.push_back(v);
   }
   std::sort(cut_vertices.begin(), cut_vertices.end());
+  cut_vertices.erase(std::unique(cut_vertices.begin(), cut_vertices.end()), cut_vertices.end());
   // Each vertex on the cut: the wedges of its fan between cut (or boundary) edges, one copy
   // each, numbered in the order of the wedges' lowest corners (3 cell + corner). Recorded as
-  // (corner, wedge rank) per corner at the vertex.
-  std::vector<int64_t> wedges(static_cast<std::size_t>(nv), 1);
+  // (corner, wedge rank) per corner at the vertex, and the wedge count per cut vertex.
+  std::vector<int64_t> wedges(cut_vertices.size());
   std::vector<std::pair<int64_t, int64_t>> corner_rank; // (corner, rank among v's copies)
-  std::vector<int64_t> wedge_of, lowest, order;
+  std::vector<int64_t> wedge_of, lowest, order, rank;
   Fan fan;
-  for (int64_t v : cut_vertices) {
+  for (std::size_t iv = 0; iv < cut_vertices.size(); ++iv) {
+    const int64_t v = cut_vertices[iv];
     walk_fan(t, v, fan);
     const std::size_t m = fan.cells.size();
     // A cycle starts after one of its cut crossings (an interior vertex on the cut has two).
@@ -193,33 +192,60 @@ CornerCut cut_corners(const Topology &t, std::span<const int64_t> cut_edges) {
     std::iota(order.begin(), order.end(), int64_t{0});
     std::sort(order.begin(), order.end(),
               [&](int64_t a, int64_t b) { return lowest[a] < lowest[b]; });
-    std::vector<int64_t> rank(lowest.size());
+    rank.resize(lowest.size());
     for (std::size_t r = 0; r < order.size(); ++r)
       rank[order[r]] = static_cast<int64_t>(r);
-    for (std::size_t i = 0; i < m; ++i)
-      corner_rank.push_back({3 * fan.cells[i] + corner_of(t, fan.cells[i], v), rank[wedge_of[i]]});
-    wedges[v] = static_cast<int64_t>(lowest.size());
+    if (lowest.size() > 1)
+      for (std::size_t i = 0; i < m; ++i)
+        corner_rank.push_back(
+            {3 * fan.cells[i] + corner_of(t, fan.cells[i], v), rank[wedge_of[i]]});
+    wedges[iv] = static_cast<int64_t>(lowest.size());
   }
-  std::vector<int64_t> first(static_cast<std::size_t>(nv) + 1, 0);
-  for (int64_t v = 0; v < nv; ++v)
-    first[v + 1] = first[v] + wedges[v];
+  // The copies: every vertex once, a vertex on the cut once per wedge, in the originals' order.
   CornerCut out;
-  out.vertex_origin.resize(static_cast<std::size_t>(first[nv]));
+  out.first.resize(static_cast<std::size_t>(nv) + 1);
+  int64_t extra = 0;
+  std::size_t next_cut = 0;
+  for (int64_t v = 0; v < nv; ++v) {
+    out.first[v] = v + extra;
+    if (next_cut < cut_vertices.size() && cut_vertices[next_cut] == v)
+      extra += wedges[next_cut++] - 1;
+  }
+  out.first[nv] = nv + extra;
+  out.vertex_origin.resize(static_cast<std::size_t>(nv + extra));
   for (int64_t v = 0; v < nv; ++v)
-    for (int64_t i = first[v]; i < first[v + 1]; ++i)
+    for (int64_t i = out.first[v]; i < out.first[v + 1]; ++i)
       out.vertex_origin[i] = v;
-  out.corner_vertex.resize(static_cast<std::size_t>(3 * nc));
-  for (int64_t c = 0; c < nc; ++c)
-    for (int k = 0; k < 3; ++k)
-      out.corner_vertex[3 * c + k] = first[t.cell_vertices(c)[k]];
-  for (const auto &[corner, rank] : corner_rank)
-    out.corner_vertex[corner] += rank;
-  for (int64_t v : cut_vertices)
-    if (wedges[v] > 1) {
-      for (int64_t i = first[v]; i < first[v + 1]; ++i)
+  for (std::size_t iv = 0; iv < cut_vertices.size(); ++iv)
+    if (wedges[iv] > 1) {
+      const int64_t v = cut_vertices[iv];
+      for (int64_t i = out.first[v]; i < out.first[v + 1]; ++i)
         out.copies.push_back(i);
       out.group_offset.push_back(static_cast<int64_t>(out.copies.size()));
     }
+  std::sort(corner_rank.begin(), corner_rank.end());
+  out.split_corners.reserve(corner_rank.size());
+  for (const auto &[corner, r] : corner_rank)
+    out.split_corners.push_back({corner, out.first[t.cell_vertices(corner / 3)[corner % 3]] + r});
+  return out;
+}
+
+int64_t CornerCut::corner_vertex(const Topology &t, int64_t c, int k) const {
+  const int64_t v = t.cell_vertices(c)[k];
+  if (first[v + 1] - first[v] == 1)
+    return first[v];
+  const auto at = std::lower_bound(split_corners.begin(), split_corners.end(),
+                                   std::pair<int64_t, int64_t>{3 * c + k, -1});
+  return at->second;
+}
+
+std::vector<int64_t> corner_vertices(const Topology &t, const CornerCut &cut) {
+  std::vector<int64_t> out(static_cast<std::size_t>(3 * t.num_cells()));
+  for (int64_t c = 0; c < t.num_cells(); ++c)
+    for (int k = 0; k < 3; ++k)
+      out[3 * c + k] = cut.first[t.cell_vertices(c)[k]];
+  for (const auto &[corner, v] : cut.split_corners)
+    out[corner] = v;
   return out;
 }
 
@@ -233,7 +259,7 @@ std::vector<std::array<int64_t, 4>> seam_vertices(const Topology &t, const Corne
     for (int side = 0; side < 2; ++side) {
       const int64_t c = t.edge_cells_begin(e)[side];
       for (int k = 0; k < 2; ++k)
-        s[2 * side + k] = cut.corner_vertex[3 * c + corner_of(t, c, ends[k])];
+        s[2 * side + k] = cut.corner_vertex(t, c, corner_of(t, c, ends[k]));
     }
     seams.push_back(s);
   }
@@ -242,18 +268,16 @@ std::vector<std::array<int64_t, 4>> seam_vertices(const Topology &t, const Corne
 
 CutSurface cut_open(const Mesh &mesh, std::span<const int64_t> cut_edges) {
   const Topology &t = mesh.topology;
-  const int64_t nc = t.num_cells();
   std::vector<uint8_t> is_cut(static_cast<std::size_t>(t.num_edges()), 0);
   for (int64_t e : cut_edges)
     is_cut[e] = 1;
   CornerCut corner_cut = cut_corners(t, cut_edges);
   CutSurface out;
+  std::vector<int64_t> edge_origin;
+  Topology cut = t.cut_open(corner_cut.first, corner_cut.split_corners, is_cut, &edge_origin);
   out.vertex_origin = std::move(corner_cut.vertex_origin);
   out.group_offset = std::move(corner_cut.group_offset);
   out.copies = std::move(corner_cut.copies);
-  Topology cut =
-      t.cut_open(corner_cut.corner_vertex, static_cast<int64_t>(out.vertex_origin.size()), is_cut);
-  corner_cut.corner_vertex = {};
   const auto disks = [&](const Topology &x) {
     return x.components() == t.components() && x.euler_characteristic() == x.components() &&
            x.boundary_loops() == x.components();
@@ -265,21 +289,16 @@ CutSurface cut_open(const Mesh &mesh, std::span<const int64_t> cut_edges) {
                 std::to_string(cut.euler_characteristic()) + ", " +
                 std::to_string(cut.boundary_loops()) + " boundary loops, " +
                 std::to_string(cut.components()) + " components): an internal error");
-  // Each edge of the cut mesh stands for the edge of its cells' original; the copies keep the
-  // originals' order, so no edge is reversed.
-  std::vector<int64_t> edge_origin(static_cast<std::size_t>(cut.num_edges()), -1);
-  std::vector<std::array<int64_t, 2>> seam_of(static_cast<std::size_t>(t.num_edges()), {-1, -1});
-  for (int64_t c = 0; c < nc; ++c)
-    for (int k = 0; k < 3; ++k) {
-      const int64_t e = t.cell_edge(c, k), e2 = cut.cell_edge(c, k);
-      if (cut.edge_reversed(c, k) != t.edge_reversed(c, k))
-        throw Error("cutting the surface open reversed an edge: an internal error");
-      edge_origin[e2] = e;
-      if (is_cut[e])
-        seam_of[e][seam_of[e][0] < 0 ? 0 : 1] = e2;
+  // Each cut edge's copies: the edge of its first cell, then of its second, in the cut mesh.
+  out.seams.reserve(cut_edges.size());
+  for (int64_t e : cut_edges) {
+    std::array<int64_t, 2> seam{};
+    for (int side = 0; side < 2; ++side) {
+      const int64_t c = t.edge_cells_begin(e)[side];
+      seam[side] = cut.cell_edge(c, t.local_edge(c, e));
     }
-  for (int64_t e : cut_edges)
-    out.seams.push_back(seam_of[e]);
+    out.seams.push_back(seam);
+  }
 
   Mesh &m = out.mesh;
   m.source = mesh.source;

@@ -14,6 +14,7 @@
 #include <array>
 #include <cstdint>
 #include <span>
+#include <utility>
 #include <vector>
 
 namespace hoct {
@@ -24,18 +25,29 @@ std::vector<int64_t> cut_graph_edges(const Topology &topology);
 
 // The corners of a triangle mesh cut open along `cut_edges`: each vertex on the cut copied once
 // per wedge of cells between cut (or boundary) edges around it, its copies numbered
-// consecutively in the order of the original vertices (so no edge changes orientation).
+// consecutively in the order of the original vertices (so no edge changes orientation). Only the
+// vertices on the cut are walked: every other corner keeps its vertex, renumbered.
 struct CornerCut {
-  // Per corner (3 per cell, in the cell's corner order), the vertex of the cut mesh there.
-  std::vector<int64_t> corner_vertex;
+  // Per vertex v of the original, its copies in the cut mesh: first[v] .. first[v + 1] - 1
+  // (num_vertices + 1 entries).
+  std::vector<int64_t> first;
+  // Every corner (3 cell + corner) at a vertex with two or more copies, with the copy there;
+  // ascending by corner. A corner at any other vertex v is at first[v].
+  std::vector<std::pair<int64_t, int64_t>> split_corners;
   // Per vertex of the cut mesh, the vertex of the original it is a copy of (ascending).
   std::vector<int64_t> vertex_origin;
   // Vertices of the cut mesh that are copies of one original vertex: group i is
   // copies[group_offset[i] .. group_offset[i + 1]) (vertices on the cut only, 2 or more each).
   std::vector<int64_t> group_offset{0}, copies;
+
+  // The vertex of the cut mesh at corner k of cell c.
+  int64_t corner_vertex(const Topology &topology, int64_t c, int k) const;
 };
 
 CornerCut cut_corners(const Topology &topology, std::span<const int64_t> cut_edges);
+
+// Every corner's vertex in the cut mesh, 3 per cell in the cells' corner order.
+std::vector<int64_t> corner_vertices(const Topology &topology, const CornerCut &cut);
 
 // Each cut edge (lo, hi) of the original as its two copies in the cut mesh, {lo1, hi1, lo2, hi2}:
 // the copies at its first cell's corners, then at its second's.

@@ -56,8 +56,8 @@ BernsteinTriangle Field::cell_polynomial(int64_t c) const {
 }
 
 BernsteinPoly Field::edge_polynomial(int64_t e) const {
-  return BernsteinPoly(std::vector<double>(edge_coef_.begin() + edge_offset_[e],
-                                           edge_coef_.begin() + edge_offset_[e + 1]));
+  const auto s = edge_coefficients(e);
+  return BernsteinPoly(std::vector<double>(s.begin(), s.end()));
 }
 
 double Field::value(int64_t c, double u, double v) const {
@@ -118,7 +118,7 @@ Field Field::build(const MeshInput &in, const Topology &topo, ProblemLog &proble
   f.edge_offset_[0] = 0;
   for (int64_t e = 0; e < ne; ++e)
     f.edge_offset_[e + 1] = f.edge_offset_[e] + f.edge_degree_[e] + 1;
-  f.edge_coef_.resize(f.edge_offset_[ne]);
+  f.edge_coef_->resize(f.edge_offset_[ne]);
   // Fixed blocks of edges, each with its own problem log, appended in block order: the same
   // report on any thread count.
   const int64_t blocks = problem_blocks(ne);
@@ -133,7 +133,7 @@ Field Field::build(const MeshInput &in, const Topology &topo, ProblemLog &proble
       const int k = owner_local[e];
       const int d = f.edge_degree_[e];
       edge_node_values(in, ref, c, k, topo.edge_reversed(c, k), vals, ids);
-      double *p = f.edge_coef_.data() + f.edge_offset_[e];
+      double *p = f.edge_coef_->data() + f.edge_offset_[e];
       bernstein_from_equispaced(vals, d, p);
 
       // Continuity: every other cell of the edge must agree with the owner.
@@ -240,7 +240,7 @@ void Field::assemble_cells(const Topology &topo, const std::vector<int> &cell_de
         const int64_t e = topo.cell_edge(c, k);
         const bool rev = topo.edge_reversed(c, k);
         if (edge_degree_[e] == d) {
-          const double *p = edge_coef_.data() + edge_offset_[e];
+          const double *p = edge_coef_->data() + edge_offset_[e];
           for (int t = 0; t <= d; ++t)
             out[edge_lattice_index(d, k, t)] = p[rev ? d - t : t];
         } else {
@@ -310,10 +310,10 @@ Field Field::build_from_polynomials(const Topology &topo,
       }
     }
   }
-  f.edge_coef_.resize(f.edge_offset_[ne]);
+  f.edge_coef_->resize(f.edge_offset_[ne]);
   for (int64_t e = 0; e < ne; ++e)
     std::copy(edges[e].coefficients().begin(), edges[e].coefficients().end(),
-              f.edge_coef_.begin() + f.edge_offset_[e]);
+              f.edge_coef_->begin() + f.edge_offset_[e]);
   // Vertex values from the lowest-id cell at each vertex; the others must agree.
   f.vertex_value_.assign(topo.num_vertices(), NAN);
   for (int64_t c = 0; c < nc; ++c)
@@ -347,16 +347,16 @@ void Field::pin_edge_ends(const Topology &topo, int threads) {
   const int64_t ne = topo.num_edges();
   parallel_for(ne, threads_for(ne, threads, 65536), [&](int64_t begin, int64_t end, int) {
     for (int64_t e = begin; e < end; ++e) {
-      edge_coef_[edge_offset_[e]] = vertex_value_[topo.edge_vertices(e)[0]];
-      edge_coef_[edge_offset_[e + 1] - 1] = vertex_value_[topo.edge_vertices(e)[1]];
+      (*edge_coef_)[edge_offset_[e]] = vertex_value_[topo.edge_vertices(e)[0]];
+      (*edge_coef_)[edge_offset_[e] + edge_degree_[e]] = vertex_value_[topo.edge_vertices(e)[1]];
     }
   });
 }
 
 Field Field::on_cut_topology(const Topology &cut, std::span<const int64_t> edge_origin,
                              std::span<const int64_t> vertex_origin) const {
-  // Everything but the edges and vertices, which the cut renumbers (the cells' coefficients
-  // shared, not copied).
+  // Everything but the edges and vertices, which the cut renumbers (the cells' and edges'
+  // coefficients shared, not copied).
   Field f;
   f.degree_ = degree_;
   f.input_degree_ = input_degree_;
@@ -367,18 +367,15 @@ Field Field::on_cut_topology(const Topology &cut, std::span<const int64_t> edge_
   f.reference_ = reference_;
   f.precision_ = precision_;
   f.max_degree_ = max_degree_;
+  f.edge_coef_ = edge_coef_;
   const int64_t ne = cut.num_edges();
   f.edge_degree_.resize(static_cast<std::size_t>(ne));
-  f.edge_offset_.assign(static_cast<std::size_t>(ne) + 1, 0);
+  f.edge_offset_.resize(static_cast<std::size_t>(ne) + 1);
   for (int64_t e = 0; e < ne; ++e) {
     f.edge_degree_[e] = edge_degree_[edge_origin[e]];
-    f.edge_offset_[e + 1] = f.edge_offset_[e] + f.edge_degree_[e] + 1;
+    f.edge_offset_[e] = edge_offset_[edge_origin[e]];
   }
-  f.edge_coef_.resize(static_cast<std::size_t>(f.edge_offset_[ne]));
-  for (int64_t e = 0; e < ne; ++e) {
-    const auto from = edge_coefficients(edge_origin[e]);
-    std::copy(from.begin(), from.end(), f.edge_coef_.begin() + f.edge_offset_[e]);
-  }
+  f.edge_offset_[ne] = static_cast<int64_t>(f.edge_coef_->size());
   f.vertex_value_.resize(vertex_origin.size());
   for (std::size_t v = 0; v < vertex_origin.size(); ++v)
     f.vertex_value_[v] = vertex_value_[vertex_origin[v]];

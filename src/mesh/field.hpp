@@ -58,8 +58,8 @@ public:
 
   // The same field on `cut`, a copy of its topology with some vertices and edges duplicated
   // (mesh/cut_surface): the same cells and polynomials (their coefficients shared, not copied);
-  // edge e of `cut` carries the polynomial
-  // of edge edge_origin[e] (in the same orientation), vertex v the value of vertex_origin[v].
+  // edge e of `cut` carries the polynomial of edge edge_origin[e] (in the same orientation),
+  // vertex v the value of vertex_origin[v].
   Field on_cut_topology(const Topology &cut, std::span<const int64_t> edge_origin,
                         std::span<const int64_t> vertex_origin) const;
 
@@ -75,8 +75,7 @@ public:
   // The edge's polynomial, parameterised from its lower to its higher vertex.
   BernsteinPoly edge_polynomial(int64_t e) const;
   std::span<const double> edge_coefficients(int64_t e) const {
-    return {edge_coef_.data() + edge_offset_[e],
-            static_cast<std::size_t>(edge_offset_[e + 1] - edge_offset_[e])};
+    return {edge_coef_->data() + edge_offset_[e], static_cast<std::size_t>(edge_degree_[e]) + 1};
   }
 
   // The field at mesh vertex v minus reference(): the one value every edge and cell uses there
@@ -113,13 +112,17 @@ private:
   void pin_edge_ends(const Topology &topology, int threads);
 
   std::vector<uint8_t> degree_, input_degree_, edge_degree_;
-  std::vector<int64_t> offset_, edge_offset_;
+  std::vector<int64_t> offset_;
+  UninitializedVector<int64_t> edge_offset_;
   // Filled completely by parallel loops right after sizing (first touched by their threads). The
   // cells' coefficients, never changed once built, are shared by copies of the field (the field
   // of a surface cut open has the same cells: on_cut_topology).
   std::shared_ptr<UninitializedVector<double>> coef_ =
       std::make_shared<UninitializedVector<double>>();
-  UninitializedVector<double> edge_coef_;
+  // The edges' coefficients, edge e's from edge_offset_[e] (edge_degree_[e] + 1 of them). Shared
+  // like the cells': the cut field's copies of an edge point at its original's.
+  std::shared_ptr<UninitializedVector<double>> edge_coef_ =
+      std::make_shared<UninitializedVector<double>>();
   std::vector<double> vertex_value_;
   double min_value_ = 0, max_value_ = 0, reference_ = 0, precision_ = 0;
   int max_degree_ = 0;

@@ -13,6 +13,7 @@
 #include <array>
 #include <cstdint>
 #include <span>
+#include <utility>
 #include <vector>
 
 namespace hoct {
@@ -25,14 +26,18 @@ public:
   static Topology build(const MeshInput &input, ProblemLog &problems, int threads = 1);
 
   // This topology cut open along the interior edges e with is_cut[e] (mesh/cut_surface.hpp):
-  // corner k of cell c becomes vertex corner_vertex[3 c + k] of `num_vertices` (the vertices'
-  // copies numbered in the order of the originals, vertex i its own point i), each cut edge one
-  // boundary edge per side. The same as build() of those corners would give, derived from this
-  // one without sorting the edges again (src/mesh/topology_cut.cpp). The components are this
-  // one's (the caller cuts no component apart); Euler characteristic and boundary loops are
-  // counted. Throws std::logic_error where the numbering would reverse an edge.
-  Topology cut_open(std::span<const int64_t> corner_vertex, int64_t num_vertices,
-                    std::span<const uint8_t> is_cut) const;
+  // vertex v becomes vertices first[v] .. first[v + 1] - 1 (the copies numbered in the order of
+  // the originals, vertex i its own point i), its corners the first of them except the corners
+  // (3 c + k, vertex) listed, ascending, in `split_corners`; each cut edge one boundary edge per
+  // side. The same as build() of those corners would give, derived from this one without sorting
+  // the edges again (src/mesh/topology_cut.cpp). The components are this one's (the caller cuts
+  // no component apart); Euler characteristic and boundary loops are counted. `edge_origin`, if
+  // given, receives per edge of the cut the edge of this topology it copies. Throws
+  // std::logic_error where the numbering would reverse an edge or a cut edge is not interior.
+  Topology cut_open(std::span<const int64_t> first,
+                    std::span<const std::pair<int64_t, int64_t>> split_corners,
+                    std::span<const uint8_t> is_cut,
+                    std::vector<int64_t> *edge_origin = nullptr) const;
 
   int64_t num_vertices() const { return static_cast<int64_t>(vertex_point_.size()); }
   int64_t num_edges() const { return static_cast<int64_t>(edge_vertices_.size()); }

@@ -33,7 +33,9 @@ PlCut cut_pl_mesh(const PlMesh &pl, int threads) {
   out.triangles.resize(pl.triangles.size());
   for (std::size_t c = 0; c < pl.triangles.size(); ++c)
     for (int k = 0; k < 3; ++k)
-      out.triangles[c][k] = cut.corner_vertex[3 * c + k];
+      out.triangles[c][k] = cut.first[topo.cell_vertices(static_cast<int64_t>(c))[k]];
+  for (const auto &[corner, v] : cut.split_corners)
+    out.triangles[corner / 3][corner % 3] = v;
   // The seams: each copy of a cut edge is one PL edge, monotone, from its lower end up (the
   // copies keep the originals' id order, so both copies agree on which end is lower).
   out.keep.assign(static_cast<std::size_t>(n), 0);

@@ -229,11 +229,13 @@ TEST(ReebGraph, TheDerivedCutTopologyIsTheBuiltOne) {
     for (int64_t e : cut)
       is_cut[e] = 1;
     const int64_t nv = static_cast<int64_t>(corners.vertex_origin.size());
-    const Topology derived = t.cut_open(corners.corner_vertex, nv, is_cut);
+    std::vector<int64_t> edge_origin;
+    const Topology derived = t.cut_open(corners.first, corners.split_corners, is_cut, &edge_origin);
+    const std::vector<int64_t> corner_vertex = corner_vertices(t, corners);
     MeshInput cut_input;
     cut_input.points.resize(static_cast<std::size_t>(nv));
     for (int64_t c = 0; c < t.num_cells(); ++c)
-      cut_input.add_cell(1, &corners.corner_vertex[3 * c]);
+      cut_input.add_cell(1, &corner_vertex[3 * c]);
     ProblemLog cut_problems;
     const Topology built = Topology::build(cut_input, cut_problems);
     EXPECT_FALSE(cut_problems.has_errors()) << name << cut_problems.summary();
@@ -250,7 +252,19 @@ TEST(ReebGraph, TheDerivedCutTopologyIsTheBuiltOne) {
       for (int i = 0; i < built.edge_cell_count(e); ++i)
         EXPECT_EQ(derived.edge_cells_begin(e)[i], built.edge_cells_begin(e)[i]) << name;
     }
+    // Each edge of the cut copies the original edge between its vertices' originals, and each
+    // cell's edges copy the cell's original edges.
+    ASSERT_EQ(edge_origin.size(), static_cast<std::size_t>(built.num_edges())) << name;
+    for (int64_t e = 0; e < built.num_edges(); ++e)
+      for (int i = 0; i < 2; ++i)
+        EXPECT_EQ(corners.vertex_origin[derived.edge_vertices(e)[i]],
+                  t.edge_vertices(edge_origin[e])[i])
+            << name << " edge " << e;
     for (int64_t c = 0; c < t.num_cells(); ++c) {
+      for (int k = 0; k < 3; ++k) {
+        EXPECT_EQ(edge_origin[derived.cell_edge(c, k)], t.cell_edge(c, k)) << name;
+        EXPECT_EQ(corners.corner_vertex(t, c, k), corner_vertex[3 * c + k]) << name;
+      }
       EXPECT_EQ(derived.cell_vertices(c), built.cell_vertices(c)) << name;
       EXPECT_EQ(derived.cell_parity(c), built.cell_parity(c)) << name << " cell " << c;
       for (int k = 0; k < 3; ++k) {
