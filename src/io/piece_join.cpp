@@ -25,7 +25,7 @@ std::string position(const Vec3 &p) {
 
 } // namespace
 
-MeshInput join_pieces(std::vector<MeshPiece> pieces, const std::string &where, bool by_ids,
+MeshInput join_pieces(std::vector<FilePiece> pieces, const std::string &where, bool by_ids,
                       int threads) {
   auto fail = [&](const std::string &what) { throw InputError(where + ": " + what); };
   MeshInput out;
@@ -34,7 +34,7 @@ MeshInput join_pieces(std::vector<MeshPiece> pieces, const std::string &where, b
   std::string field_file;
   bool ids = by_ids;
   std::size_t filled = 0; // pieces that are not empty
-  for (const MeshPiece &p : pieces) {
+  for (const FilePiece &p : pieces) {
     if (p.input.num_cells() == 0 && p.input.points.empty())
       continue;
     ++filled;

@@ -10,7 +10,7 @@
 
 namespace hoct {
 
-struct MeshPiece {
+struct FilePiece {
   MeshInput input;
   VtuPieceArrays arrays; // its ghost levels and global ids (none for a part joined already)
   std::string file;      // the piece's file, for messages
@@ -25,7 +25,7 @@ struct MeshPiece {
 // (within 1e-9 of the largest magnitude). Every piece must have the same field. Throws
 // InputError "<where>: ..." naming the piece files for anything else. Empty pieces (an idle
 // rank's) are skipped; no cell at all is an error.
-MeshInput join_pieces(std::vector<MeshPiece> pieces, const std::string &where, bool by_ids,
+MeshInput join_pieces(std::vector<FilePiece> pieces, const std::string &where, bool by_ids,
                       int threads = 1);
 
 } // namespace hoct

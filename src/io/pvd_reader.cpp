@@ -106,11 +106,11 @@ MeshInput read_pvd(const std::string &path, const FieldSelection &field, const R
   FieldSelection one_step = field;
   one_step.step = -1;
   one_step.time.reset();
-  std::vector<MeshPiece> parts(step.files.size());
+  std::vector<FilePiece> parts(step.files.size());
   ReadLimits budget = limits;
   for (std::size_t k = 0; k < step.files.size(); ++k) {
     const std::string &file = step.files[k];
-    MeshPiece &p = parts[k];
+    FilePiece &p = parts[k];
     p.file = file;
     try {
       if (lowercase_extension(file) == ".pvtu")
@@ -134,7 +134,7 @@ MeshInput read_pvd(const std::string &path, const FieldSelection &field, const R
     m = std::move(parts.front().input);
   } else {
     std::vector<std::string> warnings;
-    for (MeshPiece &p : parts)
+    for (FilePiece &p : parts)
       for (std::string &w : p.input.warnings)
         warnings.push_back(std::move(w));
     m = join_pieces(std::move(parts), path, /*by_ids=*/false, limits.threads);

@@ -49,10 +49,10 @@ MeshInput read_pvtu(const std::string &path, const FieldSelection &field,
   if (files.empty())
     throw InputError(path + ": no <Piece> in <PUnstructuredGrid>: the partitioned grid lists no "
                             "piece files");
-  std::vector<MeshPiece> pieces(files.size());
+  std::vector<FilePiece> pieces(files.size());
   ReadLimits budget = limits; // each piece's counts checked with those read before
   for (std::size_t k = 0; k < files.size(); ++k) {
-    MeshPiece &p = pieces[k];
+    FilePiece &p = pieces[k];
     p.file = files[k];
     try {
       p.input = read_vtu_piece(files[k], field, budget,

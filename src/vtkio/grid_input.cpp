@@ -83,7 +83,7 @@ vtkDataArray *find_point_array(vtkPointData *pd, const FieldSelection &field,
   return nullptr;
 }
 
-MeshPiece grid_piece(vtkDataSet *data, vtkDataArray *array, int component,
+FilePiece grid_piece(vtkDataSet *data, vtkDataArray *array, int component,
                      const std::string &where) {
   auto fail = [&](const std::string &what) { throw InputError(where + ": " + what); };
   const vtkIdType np = data->GetNumberOfPoints(), nc = data->GetNumberOfCells();
@@ -101,7 +101,7 @@ MeshPiece grid_piece(vtkDataSet *data, vtkDataArray *array, int component,
   if (array->GetNumberOfTuples() != np)
     fail("point array '" + name + "' has " + std::to_string(array->GetNumberOfTuples()) +
          " values for " + std::to_string(np) + " points");
-  MeshPiece piece;
+  FilePiece piece;
   piece.file = where;
   MeshInput &m = piece.input;
   m.source = where;

@@ -33,7 +33,7 @@ std::string list_point_arrays(vtkPointData *pd);
 // GlobalNodeId / GlobalIds / GlobalPointIds). `where` starts every message ("mesh.e, block 2").
 // Throws hoct::InputError naming the cell or point for anything else (other cell types,
 // non-finite coordinates or values). A piece without triangles is returned empty.
-MeshPiece grid_piece(vtkDataSet *data, vtkDataArray *array, int component,
+FilePiece grid_piece(vtkDataSet *data, vtkDataArray *array, int component,
                      const std::string &where);
 
 } // namespace hoct::vtkio

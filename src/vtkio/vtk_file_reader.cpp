@@ -249,7 +249,7 @@ vtkSmartPointer<vtkAlgorithm> make_reader(const std::string &path, Kind kind) {
 }
 
 struct VtkRead {
-  std::vector<MeshPiece> pieces;
+  std::vector<FilePiece> pieces;
   std::vector<std::string> skipped; // blocks without the field
   std::string detail;               // the time step read
 };
@@ -355,7 +355,7 @@ MeshInput read_piece(const std::string &path, const FieldSelection &field, const
   VtkRead r = read_pieces(path, Kind::XmlGrid, field, nullptr);
   if (r.pieces.size() != 1)
     throw InputError(path + ": expected one unstructured grid");
-  MeshPiece &p = r.pieces.front();
+  FilePiece &p = r.pieces.front();
   check_memory(limits, p.input.num_points(), p.input.num_cells(), p.input.cell_nodes.size(), path);
   if (p.input.num_cells() == 0 && !(request.allow_empty && p.input.points.empty()))
     throw InputError(path + ": " + kVtkSurfaceCells);
@@ -377,7 +377,7 @@ MeshInput read_vtk_file(const std::string &path, const FieldSelection &field,
   }
   VtkRead r = read_pieces(path, *kind, field, contents);
   std::size_t cells = 0, points = 0, nodes = 0;
-  for (const MeshPiece &p : r.pieces) {
+  for (const FilePiece &p : r.pieces) {
     cells += p.input.num_cells();
     points += p.input.num_points();
     nodes += p.input.cell_nodes.size();
@@ -392,8 +392,8 @@ MeshInput read_vtk_file(const std::string &path, const FieldSelection &field,
     if (a.ghost_cells > 0 || a.ghost_points > 0)
       m.warnings.push_back(lone_piece_warning(path, a.ghost_cells, a.ghost_points));
   } else { // blocks: joined as pieces (ghost copies dropped, shared points merged)
-    std::vector<MeshPiece> kept;
-    for (MeshPiece &p : r.pieces)
+    std::vector<FilePiece> kept;
+    for (FilePiece &p : r.pieces)
       if (p.input.num_cells() > 0)
         kept.push_back(std::move(p));
     m = join_pieces(std::move(kept), path, true, limits.threads);

@@ -78,7 +78,7 @@ vtkDataArray *point_scalar(vtkUnstructuredGrid *grid, vtkDataArray *selected,
 MeshInput mesh_input_from_grid(vtkUnstructuredGrid *grid, vtkDataArray *scalar) {
   if (!scalar)
     fail("no point scalar array selected");
-  MeshPiece piece = vtkio::grid_piece(grid, scalar, FieldSelection::kScalar, "the input grid");
+  FilePiece piece = vtkio::grid_piece(grid, scalar, FieldSelection::kScalar, "the input grid");
   if (piece.input.num_cells() == 0)
     fail(kVtkSurfaceCells);
   return std::move(piece.input);
