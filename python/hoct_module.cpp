@@ -14,6 +14,11 @@
 #ifdef HOCT_WITH_VTK
 #include "vtkio/vtk_file_reader.hpp"
 #endif
+#ifdef HOCT_WITH_MPI
+#include "distributed/distributed_tree.hpp"
+
+#include <mpi.h>
+#endif
 #include "pipeline/domain_check.hpp"
 #include "poly/lagrange_node_order.hpp"
 #include "tree/merge_tree.hpp"
@@ -25,6 +30,7 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <cstdio>
 #include <memory>
 #include <optional>
 
@@ -156,6 +162,63 @@ PyTree py_contour_tree(const PyMesh &m, const std::string &method, int refine, i
   rq.arcs = ArcGeometry::Graph;
   TreeOutcome out = compute_tree(*m.mesh, rq, &m.input);
   return {out.simplified ? std::move(*out.simplified) : std::move(out.tree)};
+}
+
+// The exact tree over the ranks of an MPI communicator (mpi4py's, by its Fortran handle): every
+// rank holds the whole mesh and calls this; rank 0 gets the tree, the others None.
+py::object py_contour_tree_mpi(const PyMesh &m, long long fortran_comm, int threads, bool keep_flat,
+                               bool force, bool augmented, const std::string &simplify) {
+#ifdef HOCT_WITH_MPI
+  int initialized = 0, finalized = 0;
+  MPI_Initialized(&initialized);
+  MPI_Finalized(&finalized);
+  if (!initialized || finalized)
+    throw Error("contour_tree: comm given but MPI is not running in this process (import "
+                "mpi4py.MPI first)");
+  const MPI_Comm comm = MPI_Comm_f2c(static_cast<MPI_Fint>(fortran_comm));
+  TreeRequest rq;
+  rq.method = TreeMethod::Exact;
+  rq.threads = threads;
+  rq.keep_flat = keep_flat;
+  rq.force = force;
+  rq.augmented = augmented;
+  if (!simplify.empty())
+    rq.simplify = parse_threshold(simplify, "contour_tree: simplify");
+  rq.arcs = ArcGeometry::None; // the arcs' paths need the whole graph on one rank
+  std::optional<DistributedOutcome> d;
+  {
+    py::gil_scoped_release release;
+    try {
+      d = distributed_tree(m.input, rq, comm);
+    } catch (const AgreedError &) {
+      throw; // every rank raises it
+    } catch (const std::exception &e) {
+      // This rank's alone: the others would wait for it at their next collective step.
+      int ranks = 1, rank = 0;
+      MPI_Comm_size(comm, &ranks);
+      MPI_Comm_rank(comm, &rank);
+      if (ranks > 1) {
+        std::fprintf(stderr, "hoct: error (MPI rank %d): %s\n", rank, e.what());
+        MPI_Abort(comm, 1);
+      }
+      throw;
+    }
+  }
+  if (d->rank != 0)
+    return py::none();
+  TreeOutcome &out = d->outcome;
+  return py::cast(PyTree{out.simplified ? std::move(*out.simplified) : std::move(out.tree)});
+#else
+  (void)m;
+  (void)fortran_comm;
+  (void)threads;
+  (void)keep_flat;
+  (void)force;
+  (void)augmented;
+  (void)simplify;
+  throw Error("contour_tree: this hoct was built without MPI (Debian: libopenmpi-dev), so it "
+              "cannot use comm");
+#endif
 }
 
 py::dict merge_tree_dict(const PyTree &t, bool join) {
@@ -461,6 +524,7 @@ PYBIND11_MODULE(_hoct, m) {
   m.def("from_arrays", &from_arrays);
   m.def("is_bookkeeping_array", &is_bookkeeping_array);
   m.def("contour_tree", &py_contour_tree, py::call_guard<py::gil_scoped_release>());
+  m.def("contour_tree_mpi", &py_contour_tree_mpi);
   m.def(
       "generate",
       [](const std::string &name, int degree, long long cells, uint64_t seed, double frequency,

@@ -14,6 +14,8 @@ HOCT_PACKAGES=(
   libnetcdf-dev libhdf5-dev libxml2-dev libboost-dev
   # DOLFINx: the tests read the files it writes (.vtu, .pvtu, XDMF), written by it
   python3-dolfinx
+  # mpi4py: the Python module's contour_tree(..., comm=) over MPI, and its test
+  python3-mpi4py
 )
 # Opt-in (about 125 packages, 1.2 GB): deal.II 9.4, for tests/python/test_dealii_files.py, which
 # reads the files deal.II writes and is skipped without it.

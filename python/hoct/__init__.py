@@ -301,7 +301,7 @@ def from_meshio(mesh, scalar=None, component=None, merge_duplicates=None):
 
 
 def contour_tree(mesh, simplify=None, threads=None, method="exact", refine=4, keep_flat=False,
-                 force=False, augmented=False):
+                 force=False, augmented=False, comm=None):
     """The contour tree of `mesh`, as `hoct tree` computes it (the same library call); on a
     domain that is not one disk or one sphere its Reeb graph (`kind`, `loops`), by every method:
 
@@ -315,10 +315,29 @@ def contour_tree(mesh, simplify=None, threads=None, method="exact", refine=4, ke
     force      compute what is well defined past inverted or folded cells and unmerged
                duplicate vertices (`--force`); without it such a mesh raises HoctError
 
+    comm       an mpi4py communicator (`from mpi4py import MPI; comm=MPI.COMM_WORLD`): the
+               exact tree computed over its ranks, as `mpirun -np N hoct tree` does. Every rank
+               calls this with the same whole mesh (each reads the file); each computes the tree
+               of its share of the cells and the ranks merge their join and split trees. Rank 0
+               gets the tree (the same as without comm, and its arcs not drawn on the surface:
+               `write_vtp` draws them straight); the other ranks get None. Errors are raised on
+               every rank; one that only one rank meets ends the job (MPI_Abort), as the others
+               would wait for it. Not over MPI: method "linear" and "refine", Reeb graphs.
+
     The arguments follow the flags' rules: simplify a finite number >= 0 or "N%" with N such a
     number (nan, -1, "-5%" are refused), refine an integer 1..1024, threads 1..1024, the
     switches True or False."""
     what = "contour_tree"
+    if comm is not None:
+        if not callable(getattr(comm, "py2f", None)):
+            raise HoctError(what + ": comm must be an mpi4py communicator (mpi4py.MPI.Comm)")
+        if _args.text(method, what + ": method") != "exact":
+            raise HoctError(what + ": over MPI only the exact tree is computed (method='exact')")
+        return _hoct.contour_tree_mpi(mesh, comm.py2f(), _args.threads(threads, what),
+                                      _args.flag(keep_flat, what + ": keep_flat"),
+                                      _args.flag(force, what + ": force"),
+                                      _args.flag(augmented, what + ": augmented"),
+                                      _args.threshold(simplify, what + ": simplify"))
     return _hoct.contour_tree(mesh, _args.text(method, what + ": method"),
                               _args.integer(refine, what + ": refine", 1, _args.MAX_REFINE),
                               _args.threads(threads, what), _args.flag(keep_flat, what + ": keep_flat"),

@@ -27,49 +27,49 @@ namespace {
 // Blocks of at most 1 GiB per MPI call (counts are ints).
 constexpr int64_t kChunk = int64_t{1} << 30;
 
-void send_bytes(const std::vector<std::byte> &bytes, int to, int tag) {
+void send_bytes(MPI_Comm comm, const std::vector<std::byte> &bytes, int to, int tag) {
   const uint64_t n = bytes.size();
-  MPI_Send(&n, 1, MPI_UINT64_T, to, tag, MPI_COMM_WORLD);
+  MPI_Send(&n, 1, MPI_UINT64_T, to, tag, comm);
   for (uint64_t at = 0; at < n; at += kChunk)
     MPI_Send(bytes.data() + at, static_cast<int>(std::min<uint64_t>(kChunk, n - at)), MPI_BYTE, to,
-             tag, MPI_COMM_WORLD);
+             tag, comm);
 }
 
-std::vector<std::byte> receive_bytes(int from, int tag) {
+std::vector<std::byte> receive_bytes(MPI_Comm comm, int from, int tag) {
   uint64_t n = 0;
-  MPI_Recv(&n, 1, MPI_UINT64_T, from, tag, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+  MPI_Recv(&n, 1, MPI_UINT64_T, from, tag, comm, MPI_STATUS_IGNORE);
   std::vector<std::byte> bytes(n);
   for (uint64_t at = 0; at < n; at += kChunk)
     MPI_Recv(bytes.data() + at, static_cast<int>(std::min<uint64_t>(kChunk, n - at)), MPI_BYTE,
-             from, tag, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+             from, tag, comm, MPI_STATUS_IGNORE);
   return bytes;
 }
 
-void broadcast_string(std::string &s, int root) {
+void broadcast_string(MPI_Comm comm, std::string &s, int root) {
   uint64_t n = s.size();
-  MPI_Bcast(&n, 1, MPI_UINT64_T, root, MPI_COMM_WORLD);
+  MPI_Bcast(&n, 1, MPI_UINT64_T, root, comm);
   s.resize(n);
-  MPI_Bcast(s.data(), static_cast<int>(n), MPI_CHAR, root, MPI_COMM_WORLD);
+  MPI_Bcast(s.data(), static_cast<int>(n), MPI_CHAR, root, comm);
 }
 
 // A collective step's end: if any rank failed (a non-empty message), every rank throws the
 // lowest failing rank's message.
-void agree(const std::string &failure, int rank, int ranks) {
+void agree(MPI_Comm comm, const std::string &failure, int rank, int ranks) {
   int first = failure.empty() ? ranks : rank;
-  MPI_Allreduce(MPI_IN_PLACE, &first, 1, MPI_INT, MPI_MIN, MPI_COMM_WORLD);
+  MPI_Allreduce(MPI_IN_PLACE, &first, 1, MPI_INT, MPI_MIN, comm);
   if (first == ranks)
     return;
   std::string message = failure;
-  broadcast_string(message, first);
+  broadcast_string(comm, message, first);
   throw AgreedError(message);
 }
 
 // The whole mesh's scales from every piece's.
-MeshScales reduce_scales(const MeshScales &own) {
+MeshScales reduce_scales(MPI_Comm comm, const MeshScales &own) {
   double v[9] = {own.min_value,  -own.max_value, -static_cast<double>(own.max_degree),
                  own.box[0][0],  own.box[0][1],  own.box[0][2],
                  -own.box[1][0], -own.box[1][1], -own.box[1][2]};
-  MPI_Allreduce(MPI_IN_PLACE, v, 9, MPI_DOUBLE, MPI_MIN, MPI_COMM_WORLD);
+  MPI_Allreduce(MPI_IN_PLACE, v, 9, MPI_DOUBLE, MPI_MIN, comm);
   MeshScales s;
   s.min_value = v[0];
   s.max_value = -v[1];
@@ -149,10 +149,11 @@ void decode_problems(const std::string &s, ProblemLog &log) {
 }
 
 // Every rank's string on rank 0, in rank order.
-std::vector<std::string> gather_strings(const std::string &own, int rank, int ranks) {
+std::vector<std::string> gather_strings(MPI_Comm comm, const std::string &own, int rank,
+                                        int ranks) {
   int n = static_cast<int>(own.size());
   std::vector<int> sizes(static_cast<std::size_t>(ranks)), offsets(static_cast<std::size_t>(ranks));
-  MPI_Gather(&n, 1, MPI_INT, sizes.data(), 1, MPI_INT, 0, MPI_COMM_WORLD);
+  MPI_Gather(&n, 1, MPI_INT, sizes.data(), 1, MPI_INT, 0, comm);
   std::string all;
   if (rank == 0) {
     int total = 0;
@@ -162,8 +163,7 @@ std::vector<std::string> gather_strings(const std::string &own, int rank, int ra
     }
     all.resize(static_cast<std::size_t>(total));
   }
-  MPI_Gatherv(own.data(), n, MPI_CHAR, all.data(), sizes.data(), offsets.data(), MPI_CHAR, 0,
-              MPI_COMM_WORLD);
+  MPI_Gatherv(own.data(), n, MPI_CHAR, all.data(), sizes.data(), offsets.data(), MPI_CHAR, 0, comm);
   std::vector<std::string> out;
   if (rank == 0)
     for (int r = 0; r < ranks; ++r)
@@ -178,13 +178,45 @@ void agree_on_failure(const std::string &failure) {
   int rank = 0, ranks = 1;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   MPI_Comm_size(MPI_COMM_WORLD, &ranks);
-  agree(failure, rank, ranks);
+  agree(MPI_COMM_WORLD, failure, rank, ranks);
 }
 
 DistributedOutcome distributed_tree(const MeshInput &whole, const TreeRequest &rq) {
+  return distributed_tree(whole, rq, MPI_COMM_WORLD);
+}
+
+namespace {
+
+// The library's own communicator for one call (MPI_Comm_dup: collective, freed at the end).
+class OwnComm {
+public:
+  explicit OwnComm(MPI_Comm of) { MPI_Comm_dup(of, &comm_); }
+  ~OwnComm() { MPI_Comm_free(&comm_); }
+  OwnComm(const OwnComm &) = delete;
+  OwnComm &operator=(const OwnComm &) = delete;
+  MPI_Comm get() const { return comm_; }
+
+private:
+  MPI_Comm comm_ = MPI_COMM_NULL;
+};
+
+DistributedOutcome distributed_tree_on(const MeshInput &whole, const TreeRequest &rq,
+                                       MPI_Comm comm);
+
+} // namespace
+
+DistributedOutcome distributed_tree(const MeshInput &whole, const TreeRequest &rq, MPI_Comm comm) {
+  const OwnComm own(comm);
+  return distributed_tree_on(whole, rq, own.get());
+}
+
+namespace {
+
+DistributedOutcome distributed_tree_on(const MeshInput &whole, const TreeRequest &rq,
+                                       MPI_Comm comm) {
   DistributedOutcome d;
-  MPI_Comm_rank(MPI_COMM_WORLD, &d.rank);
-  MPI_Comm_size(MPI_COMM_WORLD, &d.ranks);
+  MPI_Comm_rank(comm, &d.rank);
+  MPI_Comm_size(comm, &d.ranks);
   const int rank = d.rank, ranks = d.ranks;
   if (rq.method != TreeMethod::Exact)
     throw Error("over MPI only the exact tree is computed (drop --linear and --refine, or run "
@@ -206,12 +238,12 @@ DistributedOutcome distributed_tree(const MeshInput &whole, const TreeRequest &r
   MeshBuildOptions bo;
   bo.throw_on_error = false;
   bo.threads = threads;
-  bo.whole_scales = reduce_scales;
+  bo.whole_scales = [comm](const MeshScales &own) { return reduce_scales(comm, own); };
   // More ranks than cells: a rank without cells takes part in the collective steps only.
   const bool empty_piece = me.cells == 0;
   Mesh mesh;
   if (empty_piece) {
-    reduce_scales(MeshScales{});
+    reduce_scales(comm, MeshScales{});
     mesh.complete = true;
   } else {
     mesh = build_mesh(piece.input, bo);
@@ -221,9 +253,9 @@ DistributedOutcome distributed_tree(const MeshInput &whole, const TreeRequest &r
   // 2. The checks: each piece's own, and on rank 0 the whole mesh's topology, duplicate
   // vertices and shape (only once every piece found its cells well formed).
   int complete = mesh.complete ? 1 : 0;
-  MPI_Allreduce(MPI_IN_PLACE, &complete, 1, MPI_INT, MPI_MIN, MPI_COMM_WORLD);
+  MPI_Allreduce(MPI_IN_PLACE, &complete, 1, MPI_INT, MPI_MIN, comm);
   const std::vector<std::string> logs =
-      gather_strings(encode_problems(mesh.problems, begin), rank, ranks);
+      gather_strings(comm, encode_problems(mesh.problems, begin), rank, ranks);
   std::string failure;
   std::vector<std::string> warnings;
   if (rank == 0) {
@@ -263,13 +295,13 @@ DistributedOutcome distributed_tree(const MeshInput &whole, const TreeRequest &r
       failure = e.what();
     }
   }
-  agree(failure, rank, ranks);
+  agree(comm, failure, rank, ranks);
   // The field's reference and precision (the whole's, as every piece computes them) from the
   // first rank with cells.
   int source = empty_piece ? ranks : rank;
-  MPI_Allreduce(MPI_IN_PLACE, &source, 1, MPI_INT, MPI_MIN, MPI_COMM_WORLD);
+  MPI_Allreduce(MPI_IN_PLACE, &source, 1, MPI_INT, MPI_MIN, comm);
   double field_scale[2] = {mesh.field.reference(), mesh.field.precision()};
-  MPI_Bcast(field_scale, 2, MPI_DOUBLE, source, MPI_COMM_WORLD);
+  MPI_Bcast(field_scale, 2, MPI_DOUBLE, source, comm);
 
   // 3. The piece's kept trees, 4. merged in a binary tree of ranks.
   PieceTrees trees;
@@ -289,20 +321,20 @@ DistributedOutcome distributed_tree(const MeshInput &whole, const TreeRequest &r
   } catch (const std::exception &e) {
     failure = std::string(e.what());
   }
-  agree(failure, rank, ranks);
+  agree(comm, failure, rank, ranks);
   me.piece_seconds = build_seconds + clock.seconds();
   me.kept_nodes = static_cast<int64_t>(trees.nodes.size());
   const double tree_start = clock.seconds();
   for (int step = 1; step < ranks; step *= 2) {
     if (rank % (2 * step) == step) {
       const std::vector<std::byte> bytes = encode_piece_trees(trees);
-      send_bytes(bytes, rank - step, step);
+      send_bytes(comm, bytes, rank - step, step);
       me.bytes_sent += static_cast<int64_t>(bytes.size());
       ++me.messages;
       break;
     }
     if (rank % (2 * step) == 0 && rank + step < ranks) {
-      const std::vector<std::byte> bytes = receive_bytes(rank + step, step);
+      const std::vector<std::byte> bytes = receive_bytes(comm, rank + step, step);
       me.bytes_received += static_cast<int64_t>(bytes.size());
       ++me.messages;
       trees = merge_piece_trees(trees, decode_piece_trees(bytes), rq.augmented, threads);
@@ -316,7 +348,7 @@ DistributedOutcome distributed_tree(const MeshInput &whole, const TreeRequest &r
   if (rank == 0)
     d.reports.resize(static_cast<std::size_t>(ranks));
   MPI_Gather(&me, sizeof(RankReport), MPI_BYTE, d.reports.data(), sizeof(RankReport), MPI_BYTE, 0,
-             MPI_COMM_WORLD);
+             comm);
   if (rank != 0)
     return d;
 
@@ -337,5 +369,7 @@ DistributedOutcome distributed_tree(const MeshInput &whole, const TreeRequest &r
   d.outcome = finish_tree(std::move(tree), finish, context);
   return d;
 }
+
+} // namespace
 
 } // namespace hoct

@@ -1,15 +1,17 @@
-// The exact tree over MPI: every rank of MPI_COMM_WORLD holds the whole input (each reads the
-// file), builds the mesh of its own piece of contiguous cells (mesh/mesh_partition) with the
-// whole mesh's scales, computes its piece's kept join and split trees (exact/piece_trees) and
-// the ranks merge them in a binary reduction tree; rank 0 checks the whole mesh's topology and
-// shape meanwhile, and finishes the tree (flat regions, branches, simplification) as
-// compute_tree does. The tree is the one `hoct tree` computes without MPI, for any number of
-// ranks. Every rank must call it; errors on any rank are thrown on all.
+// The exact tree over MPI: every rank of MPI_COMM_WORLD (or of a given communicator) holds the
+// whole input (each reads the file), builds the mesh of its own piece of contiguous cells
+// (mesh/mesh_partition) with the whole mesh's scales, computes its piece's kept join and split
+// trees (exact/piece_trees) and the ranks merge them in a binary reduction tree; rank 0 checks the
+// whole mesh's topology and shape meanwhile, and finishes the tree (flat regions, branches,
+// simplification) as compute_tree does. The tree is the one `hoct tree` computes without MPI, for
+// any number of ranks. Every rank must call it; errors on any rank are thrown on all.
 #pragma once
 
 #include "mesh/mesh_input.hpp"
 #include "pipeline/tree_request.hpp"
 #include "util/error.hpp"
+
+#include <mpi.h>
 
 #include <cstdint>
 #include <vector>
@@ -32,6 +34,10 @@ struct DistributedOutcome {
 };
 
 DistributedOutcome distributed_tree(const MeshInput &whole, const TreeRequest &request);
+// The same over the ranks of `comm` (every one of them must call it; rank 0 of `comm` gets the
+// tree). The library works on its own duplicate of `comm`: no message of the caller's is seen.
+DistributedOutcome distributed_tree(const MeshInput &whole, const TreeRequest &request,
+                                    MPI_Comm comm);
 
 // An error every rank throws together (at one collective step), with the message of the lowest
 // rank that failed: each rank may then end normally (rank 0 reports it). Any other exception is

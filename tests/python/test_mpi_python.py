@@ -1,0 +1,155 @@
+"""`hoct.contour_tree(mesh, comm=...)` under mpi4py: the distributed exact tree from Python
+(issue 31's Python entry point), the same library call as `mpirun -np N hoct tree`.
+
+The independent truth is the command line's single-process tree, computed without MPI: on
+generated genus-0 datasets (plateaus, quadrilaterals, a field at +1e7 with --simplify,
+--augmented) the JSON rank 0 writes (`write_json(timings=False)`) must be byte-identical to
+`hoct tree --json --no-timings` for 1, 2, 3 and 4 ranks, and the other ranks get None. The
+communicator is the one given: four ranks split into two groups of two compute two different
+trees at once, each group's rank 0 matching its own file's. Refusals are raised on every rank
+as HoctError with one message (a domain with holes, method="linear", a comm that is no mpi4py
+communicator), and no rank is left waiting.
+
+Skipped (exit 77) without mpirun, mpi4py or an MPI build of hoct."""
+import os
+import re
+import shutil
+import subprocess
+import sys
+import textwrap
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from hoct_testing import Results, run, tempdir  # noqa: E402
+
+MPIRUN = shutil.which("mpirun")
+if not MPIRUN:
+    print("SKIPPED: no mpirun (Debian: openmpi-bin)")
+    sys.exit(77)
+PYTHON = "/usr/bin/python3"
+if subprocess.run([PYTHON, "-c", "import mpi4py.MPI"], capture_output=True).returncode != 0:
+    print("SKIPPED: no mpi4py (Debian: python3-mpi4py)")
+    sys.exit(77)
+ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
+           OMPI_MCA_rmaps_base_oversubscribe="1")
+r = Results()
+
+# One script for every case: argv = mode, then file and output pairs.
+SCRIPT = textwrap.dedent('''
+    import json, sys
+    from mpi4py import MPI
+    import hoct
+    mode, args = sys.argv[1], sys.argv[2:]
+    world = MPI.COMM_WORLD
+    kwargs = json.loads(args[0])
+    if mode == "trees":          # every rank: the tree of args[1], rank 0 writes args[2]
+        comm, path, out = world, args[1], args[2]
+    elif mode == "split":        # two groups of ranks, each its own file and output
+        group = world.rank % 2
+        comm = world.Split(group, world.rank)
+        path, out = args[1 + 2 * group], args[2 + 2 * group]
+    else:                        # "raises": every rank must raise HoctError
+        path = args[1]
+    mesh = hoct.read(path)
+    if mode == "raises":
+        try:
+            hoct.contour_tree(mesh, comm=(world if kwargs.pop("world", True) else "world"),
+                              threads=1, **kwargs)
+        except hoct.HoctError as e:
+            print(f"\\nRAISED {world.rank}: {e}", flush=True)
+        else:
+            print(f"\\nNOT RAISED {world.rank}", flush=True)
+        sys.exit(0)
+    tree = hoct.contour_tree(mesh, comm=comm, threads=1, **kwargs)
+    if comm.rank == 0:
+        tree.write_json(out, timings=False)
+    elif tree is not None:
+        print(f"rank {world.rank} got a tree", flush=True)
+        sys.exit(3)
+''')
+
+
+def mpi(n, *args):
+    return subprocess.run([MPIRUN, "--oversubscribe", "-np", str(n), PYTHON, script,
+                           *map(str, args)], capture_output=True, text=True, env=ENV, timeout=600)
+
+
+def read(path):
+    with open(path, "rb") as f:
+        return f.read()
+
+
+def flags(kwargs):
+    out = []
+    if "simplify" in kwargs:
+        out += ["--simplify", kwargs["simplify"]]
+    if kwargs.get("augmented"):
+        out.append("--augmented")
+    return out
+
+
+with tempdir() as d:
+    script = os.path.join(d, "tree_mpi.py")
+    with open(script, "w") as f:
+        f.write(SCRIPT)
+    import json
+    heater = os.path.join(d, "heater.vtu")
+    run("generate", "heater", "--cells", "3000", "-o", heater)
+    probe = mpi(1, "trees", "{}", heater, os.path.join(d, "probe.json"))
+    if "built without MPI" in probe.stderr:
+        print("SKIPPED: this hoct was built without MPI")
+        sys.exit(77)
+    r.check(probe.returncode == 0, f"one rank: exit {probe.returncode}: {probe.stderr[-2000:]}")
+
+    cases = [
+        ("heater", ["--cells", "3000"], {}),
+        ("conductor", ["--cells", "2000"], {}),
+        ("random", ["--cells", "3000", "--plateau", "30"], {}),
+        ("random", ["--cells", "3000", "--plateau", "30"], {"augmented": True}),
+        ("random", ["--cells", "2000", "--degree", "5", "--offset", "1e7"], {"simplify": "1%"}),
+        ("random", ["--cells", "1500", "--quads", "--degree", "3"], {}),
+    ]
+    wants = []
+    for k, (name, gen, kwargs) in enumerate(cases):
+        path = os.path.join(d, f"{name}{k}.vtu")
+        run("generate", name, *gen, "-o", path)
+        want = os.path.join(d, f"want{k}.json")
+        run("tree", path, "--json", want, "--no-timings", "-q", *flags(kwargs))
+        wants.append((path, want))
+        label = f"{name} {' '.join(gen)} {kwargs}"
+        for n in (1, 2, 3, 4):
+            got = os.path.join(d, f"got{k}_{n}.json")
+            p = mpi(n, "trees", json.dumps(kwargs), path, got)
+            r.check(p.returncode == 0, f"{label}, {n} ranks: exit {p.returncode}: "
+                    f"{p.stdout[-500:]}{p.stderr[-1500:]}")
+            if p.returncode == 0:
+                r.check(read(got) == read(want), f"{label}, {n} ranks: JSON differs from the CLI's")
+        print(f"{label}: 1-4 ranks checked", flush=True)
+
+    # Two communicators at once: ranks 0, 2 (group 0) and 1, 3 (group 1), two files.
+    (a, want_a), (b, want_b) = wants[0], wants[2]
+    got_a, got_b = os.path.join(d, "split_a.json"), os.path.join(d, "split_b.json")
+    p = mpi(4, "split", "{}", a, got_a, b, got_b)
+    r.check(p.returncode == 0, f"split communicators: exit {p.returncode}: {p.stderr[-1500:]}")
+    if p.returncode == 0:
+        r.check(read(got_a) == read(want_a), "split communicators: group 0's tree differs")
+        r.check(read(got_b) == read(want_b), "split communicators: group 1's tree differs")
+    print("split communicators checked", flush=True)
+
+    # Refusals: raised on every rank, with one message, and the job ends normally.
+    plate = os.path.join(d, "plate.vtu")
+    run("generate", "plate", "--cells", "2000", "--degree", "2", "-o", plate)
+    for label, path, kwargs, text in [
+        ("holes", plate, {}, "Reeb graph is not computed over MPI"),
+        ("linear", heater, {"method": "linear"}, "only the exact tree"),
+        ("not a communicator", heater, {"world": False}, "mpi4py communicator"),
+    ]:
+        p = mpi(3, "raises", json.dumps(kwargs), path)
+        # The ranks' lines may interleave: each rank's report is found by its own marker.
+        raised = sorted(int(x) for x in re.findall(r"RAISED (\d+): ", p.stdout))
+        r.check(p.returncode == 0 and raised == [0, 1, 2] and "NOT RAISED" not in p.stdout
+                and p.stdout.count(text) == 3,
+                f"{label}: want HoctError ('{text}') on all 3 ranks, got exit {p.returncode}: "
+                f"{p.stdout[-1500:]}{p.stderr[-1000:]}")
+        print(f"{label}: refused on every rank", flush=True)
+
+r.finish()
