@@ -4,7 +4,9 @@ pvbatch runs this script on rank 0; every rank executes the pipeline. A single-p
 two processes puts the whole mesh on rank 0 and nothing on rank 1: rank 1's filter must produce
 empty outputs without an error (ctest fails on an "ERR|" line, see tests/CMakeLists.txt), and
 rank 0's output must equal `hoct tree --json`. The filter names no scalar (the default). Then the
-mesh redistributed over both ranks: the filter warns, once, that the tree is computed per piece.
+mesh redistributed over both ranks: the pieces are gathered and the tree is computed over both
+processes; rank 0's output must be the CLI's tree (nodes as a set: the gathered pieces number
+the cells their own way), with and without simplification.
 """
 
 import os
@@ -38,6 +40,27 @@ def catch(proxy, event):
     return messages
 
 
+def compare_whole(name, nodes, arcs, tree):
+    """Output 0 and 1 against the CLI's tree, as sets: the nodes' values, types and positions
+    (to 1e-9), and the number of arcs."""
+    n = len(tree["nodes"])
+    tp.check(nodes.GetNumberOfVerts() == n,
+             f"{name}: {nodes.GetNumberOfVerts()} critical points, the CLI has {n}")
+    if nodes.GetNumberOfVerts() != n or nodes.GetNumberOfPoints() < n:
+        return
+    pd = nodes.PointData
+
+    def key(value, code, position):
+        return (round(value, 9), int(code), tuple(round(x, 9) for x in position))
+
+    got = sorted(key(pd["Value"][i], pd["CriticalType"][i], nodes.Points[i]) for i in range(n))
+    want = sorted(key(x["value"], tp.CODES[x["type"]], x["position"]) for x in tree["nodes"])
+    bad = [(g, w) for g, w in zip(got, want) if g != w]
+    tp.check(not bad, f"{name}: {len(bad)} nodes differ from the CLI's, first: {bad[:1]}")
+    tp.check(arcs.GetNumberOfLines() == len(tree["arcs"]),
+             f"{name}: {arcs.GetNumberOfLines()} arcs, the CLI has {len(tree['arcs'])}")
+
+
 def main():
     os.makedirs(tp.OUT, exist_ok=True)
     tp.render_tree.load_plugin()
@@ -65,19 +88,27 @@ def main():
     tp.compare_nodes("gathered", tp.fetch(f, 0), tree)
     pv.Delete(f)
 
-    # The mesh over both ranks: one warning that the tree is per piece (Force: a piece need not
-    # be a disk).
+    # The mesh over both ranks: the pieces are gathered and the tree computed over both
+    # processes (distributed/distributed_tree); rank 0's output is the whole mesh's tree, the
+    # CLI's up to the numbering of cells (the gathered pieces number them their own way).
     spread = pv.RedistributeDataSet(Input=reader)
-    f = pv.HigherOrderContourTree(Input=spread, Force=1)
-    warnings = catch(f, vtkCommand.WarningEvent)
-    f.UpdatePipeline()
-    per_piece = [w for w in warnings if "computes the tree of its own piece" in w]
-    tp.check(len(per_piece) == 1, f"two pieces: one per-piece warning, got {warnings}")
-    f.Threads = 1
-    f.UpdatePipeline()
-    per_piece = [w for w in warnings if "computes the tree of its own piece" in w]
-    tp.check(len(per_piece) == 1, f"two pieces: the warning is given once, got {warnings}")
-
+    for threshold in (0.0, 1.0):
+        f = pv.HigherOrderContourTree(Input=spread, PersistenceThreshold=threshold)
+        errors = catch(f, vtkCommand.ErrorEvent)
+        warnings = catch(f, vtkCommand.WarningEvent)
+        f.UpdatePipeline()
+        label = f"two pieces, threshold {threshold}%"
+        tp.check(not errors and not warnings, f"{label}: errors {errors}, warnings {warnings}")
+        compare_whole(label, local_output(f, 0), local_output(f, 1), tree)
+        if threshold > 0:
+            want = tp.cli_tree(path, "--simplify", "1%")
+            simple = local_output(f, 2)
+            tp.check(0 < simple.GetNumberOfVerts() == len(want["nodes"]) < len(tree["nodes"]),
+                     f"{label}: output 2 has {simple.GetNumberOfVerts()} nodes, the CLI's "
+                     f"simplified tree {len(want['nodes'])}")
+        # Gathered from both ranks (rank 1's part is empty): the same tree.
+        compare_whole(label + ", gathered", tp.fetch(f, 0), tp.fetch(f, 1), tree)
+        pv.Delete(f)
     print(f"{tp.passed} passed, {tp.failed} failed", flush=True)
     # Success: the script ends normally (no sys.exit, no os._exit as in test_plugin.py), so
     # that pvbatch's rank 0 releases the other ranks and all exit 0. Failure: exit 1 at once.

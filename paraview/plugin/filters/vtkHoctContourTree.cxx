@@ -1,6 +1,7 @@
 #include "vtkHoctContourTree.h"
 
 #include "hoct_vtk_convert.h"
+#include "hoct_vtk_gather.h"
 #include "io/tree_polydata.hpp"
 #include "mesh/mesh.hpp"
 #include "pipeline/compute_tree.hpp"
@@ -14,11 +15,19 @@
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
 #include <vtkMultiProcessController.h>
+#ifdef HOCT_WITH_MPI
+#include "distributed/distributed_tree.hpp"
+
+#include <vtkMPI.h>
+#include <vtkMPICommunicator.h>
+#include <vtkMPIController.h>
+#endif
 #include <vtkObjectFactory.h>
 #include <vtkPolyData.h>
 #include <vtkStringArray.h>
 #include <vtkUnstructuredGrid.h>
 
+#include <cstdio>
 #include <exception>
 #include <string>
 #include <utility>
@@ -118,6 +127,24 @@ std::string requested_name(vtkInformation *info) {
   return name ? name : "";
 }
 
+// The tree (and its simplification) as the three outputs, with the statistics and the scalar's
+// name as field data.
+void tree_outputs(const hoct::TreeOutcome &out, const std::string &scalar_name, vtkPolyData *points,
+                  vtkPolyData *arcs, vtkPolyData *simplified) {
+  const hoct::TreePolyData layout = hoct::tree_polydata(out.tree);
+  hoct::paraview::critical_points_polydata(layout, points);
+  hoct::paraview::arcs_polydata(layout, /*with_nodes=*/false, arcs);
+  add_stats(out.tree, points);
+  add_string(points, "Scalar", scalar_name);
+  add_string(arcs, "Scalar", scalar_name);
+  if (out.simplified) {
+    hoct::paraview::arcs_polydata(hoct::tree_polydata(*out.simplified), /*with_nodes=*/true,
+                                  simplified);
+    add_stats(*out.simplified, simplified);
+    add_string(simplified, "Scalar", scalar_name);
+  }
+}
+
 } // namespace
 
 int vtkHoctContourTree::RequestData(vtkInformation *, vtkInformationVector **inputVector,
@@ -127,15 +154,20 @@ int vtkHoctContourTree::RequestData(vtkInformation *, vtkInformationVector **inp
   vtkPolyData *arcs = vtkPolyData::GetData(outputVector, 1);
   vtkPolyData *simplified = vtkPolyData::GetData(outputVector, 2);
   const Pieces all = pieces(grid ? grid->GetNumberOfCells() : 0);
+#ifdef HOCT_WITH_MPI
+  if (all.with_cells > 1)
+    return this->RequestDistributed(inputVector, grid, points, arcs, simplified);
+#else
   if (all.with_cells > 1 && !this->WarnedPerPiece && all.rank == 0) {
     this->WarnedPerPiece = true;
     vtkWarningMacro("Higher-Order Contour Tree: the input is split into "
                     << all.with_cells
-                    << " pieces with cells over the processes; each process computes the "
-                       "tree of its own piece, not of the whole domain (distributed trees are "
-                       "not supported yet). For the whole domain's tree, run on one process "
-                       "or gather the cells onto one.");
+                    << " pieces with cells over the processes; this plugin was built without "
+                       "MPI, so each process computes the tree of its own piece, not of the "
+                       "whole domain. For the whole domain's tree, run on one process or "
+                       "gather the cells onto one.");
   }
+#endif
   if (!grid || !points || !arcs || !simplified) {
     vtkErrorMacro("Higher-Order Contour Tree: missing input or output");
     return 0;
@@ -186,18 +218,7 @@ int vtkHoctContourTree::RequestData(vtkInformation *, vtkInformationVector **inp
     for (const auto &why : out.warnings)
       vtkWarningMacro("Higher-Order Contour Tree: Force: " << why);
     this->UpdateProgress(0.8);
-    const hoct::TreePolyData layout = hoct::tree_polydata(out.tree);
-    hoct::paraview::critical_points_polydata(layout, points);
-    hoct::paraview::arcs_polydata(layout, /*with_nodes=*/false, arcs);
-    add_stats(out.tree, points);
-    add_string(points, "Scalar", scalar_name);
-    add_string(arcs, "Scalar", scalar_name);
-    if (out.simplified) {
-      hoct::paraview::arcs_polydata(hoct::tree_polydata(*out.simplified), /*with_nodes=*/true,
-                                    simplified);
-      add_stats(*out.simplified, simplified);
-      add_string(simplified, "Scalar", scalar_name);
-    }
+    tree_outputs(out, scalar_name, points, arcs, simplified);
   } catch (const std::exception &e) {
     points->Initialize();
     arcs->Initialize();
@@ -207,6 +228,93 @@ int vtkHoctContourTree::RequestData(vtkInformation *, vtkInformationVector **inp
   }
   return 1;
 }
+
+#ifdef HOCT_WITH_MPI
+int vtkHoctContourTree::RequestDistributed(vtkInformationVector **inputVector,
+                                           vtkUnstructuredGrid *grid, vtkPolyData *points,
+                                           vtkPolyData *arcs, vtkPolyData *simplified) {
+  // Every process of the global controller is here (ParaView runs the pipeline on all of them):
+  // the collective steps below are reached by each, whatever fails.
+  auto *controller =
+      vtkMPIController::SafeDownCast(vtkMultiProcessController::GetGlobalController());
+  const int rank = controller ? controller->GetLocalProcessId() : 0;
+  const bool simplified_output = this->PersistenceThreshold > 0 && !this->Augmented;
+  empty_outputs(simplified_output, points, arcs, simplified);
+  if (!controller) {
+    vtkErrorMacro("Higher-Order Contour Tree: the input is spread over processes without an MPI "
+                  "controller; run on one process");
+    return 0;
+  }
+  const MPI_Comm comm =
+      *static_cast<vtkMPICommunicator *>(controller->GetCommunicator())->GetMPIComm()->GetHandle();
+  if (this->Method != EXACT) { // every process has the same property: all return here
+    if (rank == 0)
+      vtkErrorMacro("Higher-Order Contour Tree: over MPI only the exact tree is computed: set "
+                    "Method to exact, or run on one process");
+    return rank == 0 ? 0 : 1;
+  }
+  std::string scalar_name;
+  bool collectives_done = false;
+  try {
+    // This process's scalar (a failure travels with its piece, so that every process stops).
+    std::string failure;
+    vtkDataArray *scalar = nullptr;
+    if (grid && grid->GetNumberOfCells() > 0) {
+      try {
+        bool by_default = false;
+        scalar = hoct::paraview::point_scalar(grid, this->GetInputArrayToProcess(0, inputVector),
+                                              requested_name(this->GetInputArrayInformation(0)),
+                                              &by_default);
+      } catch (const std::exception &e) {
+        failure = e.what();
+      }
+    }
+    const int threads = hoct::thread_count(this->Threads);
+    const hoct::MeshInput whole =
+        hoct::paraview::gather_whole(controller, grid, scalar, failure, threads, &scalar_name);
+    this->UpdateProgress(0.2);
+    // The properties as a request, as `mpirun hoct tree` makes it (the exact method only; the
+    // arcs drawn straight: their paths need the whole graph on one process).
+    hoct::TreeRequest rq;
+    rq.augmented = this->Augmented;
+    rq.keep_flat = this->KeepFlat;
+    rq.force = this->Force;
+    rq.threads = this->Threads;
+    rq.arcs = hoct::ArcGeometry::None;
+    if (simplified_output)
+      rq.simplify =
+          hoct::Threshold{this->PersistenceThreshold, this->ThresholdMode == PERCENT_OF_RANGE};
+    hoct::DistributedOutcome d = hoct::distributed_tree(whole, rq, comm);
+    collectives_done = true;
+    if (rank != 0)
+      return 1;
+    for (const auto &why : d.outcome.warnings)
+      vtkWarningMacro("Higher-Order Contour Tree: Force: " << why);
+    tree_outputs(d.outcome, scalar_name, points, arcs, simplified);
+  } catch (const hoct::AgreedError &e) {
+    // Every process has it: reported once, by rank 0.
+    if (rank == 0)
+      vtkErrorMacro("Higher-Order Contour Tree: " << e.what());
+    empty_outputs(simplified_output, points, arcs, simplified);
+    return rank == 0 ? 0 : 1;
+  } catch (const hoct::InputError &e) {
+    // From the gathered pieces, which every process sees alike: every process has it too.
+    if (rank == 0)
+      vtkErrorMacro("Higher-Order Contour Tree: " << e.what());
+    empty_outputs(simplified_output, points, arcs, simplified);
+    return rank == 0 ? 0 : 1;
+  } catch (const std::exception &e) {
+    if (!collectives_done) {
+      // This process's alone, and the others would wait for it at the next collective step.
+      std::fprintf(stderr, "Higher-Order Contour Tree: error (process %d): %s\n", rank, e.what());
+      MPI_Abort(comm, 1);
+    }
+    vtkErrorMacro("Higher-Order Contour Tree: " << e.what());
+    return 0;
+  }
+  return 1;
+}
+#endif
 
 void vtkHoctContourTree::PrintSelf(ostream &os, vtkIndent indent) {
   this->Superclass::PrintSelf(os, indent);

@@ -9,6 +9,9 @@
 #include "HoctParaViewModule.h"
 #include "vtkPolyDataAlgorithm.h"
 
+class vtkPolyData;
+class vtkUnstructuredGrid;
+
 class HOCTPARAVIEW_EXPORT vtkHoctContourTree : public vtkPolyDataAlgorithm {
 public:
   static vtkHoctContourTree *New();
@@ -71,9 +74,14 @@ protected:
   bool KeepFlat = false;
   bool Force = false;
   int Threads = 0;
-  bool WarnedPerPiece = false; // the per-piece warning under MPI is given once
+  bool WarnedPerPiece = false; // the per-piece warning (a build without MPI) is given once
 
 private:
+  // The input spread over the processes (pvbatch, pvserver under MPI): the pieces gathered and
+  // the tree computed over the processes (distributed/distributed_tree), its outputs on rank 0.
+  int RequestDistributed(vtkInformationVector **inputVector, vtkUnstructuredGrid *grid,
+                         vtkPolyData *points, vtkPolyData *arcs, vtkPolyData *simplified);
+
   vtkHoctContourTree(const vtkHoctContourTree &) = delete;
   void operator=(const vtkHoctContourTree &) = delete;
 };
