@@ -3,6 +3,7 @@
 // scaling on random fields up to 4 million cells for degrees 2, 3 and 5 with one and two
 // threads, phase by phase, the CLI's peak memory, the PL tree on large meshes, and whole CLI runs
 // on large noisy trees. Prints Markdown for docs/PERFORMANCE.md; medians of --runs runs.
+#include "bench_pieces.hpp"
 #include "bench_pipeline.hpp"
 #include "bench_support.hpp"
 
@@ -33,8 +34,8 @@ namespace {
 struct Settings {
   int runs = 5;
   bool quick = false;
-  std::vector<std::string> sections = {"datasets", "scaling", "density", "plateau", "quads",
-                                       "reeb",     "memory",  "pl",      "large",   "mpi"};
+  std::vector<std::string> sections = {"datasets", "scaling", "density", "plateau", "quads", "reeb",
+                                       "memory",   "pl",      "large",   "mpi",     "pieces"};
   std::vector<int> degrees = {2, 3, 5};
   std::vector<double> sizes = {1e4, 1e5, 1e6, 4e6};
   std::vector<int> threads = {1, 2};
@@ -705,7 +706,7 @@ int main(int argc, char **argv) {
   app.add_flag("--quick", s.quick, "A smoke run: small sizes, few runs");
   app.add_option("--sections", s.sections,
                  "Sections to run: datasets, scaling, density, plateau, quads, reeb, memory, pl, "
-                 "large, mpi")
+                 "large, mpi, pieces")
       ->delimiter(',');
   app.add_option("--degrees", s.degrees, "Degrees of the scaling, density and memory sections")
       ->delimiter(',');
@@ -743,6 +744,11 @@ int main(int argc, char **argv) {
     large_section(s);
   if (wants(s, "mpi"))
     mpi_section(s);
+  if (wants(s, "pieces")) // the sizes given, else 2e6 cells (1e5 with --quick)
+    hoct::bench::pieces_section(app.count("--sizes") ? s.sizes
+                                : s.quick            ? std::vector<double>{1e5}
+                                                     : std::vector<double>{2e6},
+                                s.runs);
   std::printf("peak resident memory of the benchmark: %.1f MiB\n", peak_rss_kib() / 1024.0);
   return 0;
 }

@@ -25,17 +25,32 @@ MeshPiece extract_piece(const MeshInput &whole, int64_t begin, int64_t end) {
   in.value_precision = whole.value_precision;
   p.first_cell = begin;
   const int64_t n0 = whole.cell_offsets[begin], n1 = whole.cell_offsets[end];
-  // The points the cells use, numbered in ascending order of the whole's indices (a scan over
-  // the whole's points, not a sort of the cells' nodes).
-  std::vector<int64_t> local(whole.num_points(), -1);
-  for (int64_t k = n0; k < n1; ++k)
-    local[whole.cell_nodes[k]] = 0;
+  // The points the cells use, numbered in ascending order of the whole's indices: a scan over
+  // the whole's points for a large piece, a sort of the cells' nodes for a small one (a piece of
+  // many ranks' mesh must not cost as much as the whole).
   std::vector<int64_t> &g = p.global_point;
-  for (std::size_t q = 0; q < local.size(); ++q)
-    if (local[q] == 0) {
-      local[q] = static_cast<int64_t>(g.size());
-      g.push_back(static_cast<int64_t>(q));
-    }
+  const int64_t np = static_cast<int64_t>(whole.num_points());
+  std::vector<int64_t> local;
+  if (4 * (n1 - n0) < np) {
+    g.assign(whole.cell_nodes.begin() + n0, whole.cell_nodes.begin() + n1);
+    std::sort(g.begin(), g.end());
+    g.erase(std::unique(g.begin(), g.end()), g.end());
+  } else {
+    local.assign(static_cast<std::size_t>(np), -1);
+    for (int64_t k = n0; k < n1; ++k)
+      local[whole.cell_nodes[k]] = 0;
+    for (int64_t q = 0; q < np; ++q)
+      if (local[q] == 0) {
+        local[q] = static_cast<int64_t>(g.size());
+        g.push_back(q);
+      }
+  }
+  // Each cell node's index in the piece.
+  const auto local_index = [&](int64_t q) {
+    if (!local.empty())
+      return local[q];
+    return static_cast<int64_t>(std::lower_bound(g.begin(), g.end(), q) - g.begin());
+  };
   in.points.resize(g.size());
   in.values.resize(g.size());
   for (std::size_t i = 0; i < g.size(); ++i) {
@@ -50,7 +65,7 @@ MeshPiece extract_piece(const MeshInput &whole, int64_t begin, int64_t end) {
   for (int64_t c = begin; c <= end; ++c)
     in.cell_offsets[c - begin] = whole.cell_offsets[c] - n0;
   for (int64_t k = n0; k < n1; ++k)
-    in.cell_nodes[k - n0] = local[whole.cell_nodes[k]];
+    in.cell_nodes[k - n0] = local_index(whole.cell_nodes[k]);
   return p;
 }
 

@@ -1,7 +1,7 @@
 // The exact tree computed piece by piece (exact/piece_trees) against the whole mesh's tree:
-// every generated dataset (and plateaus, fallback cells, quadrilaterals), cut into 1, 2, 3, 4 and
-// 7 pieces of contiguous cells, must give the same nodes (type, value, place: bit for bit), arcs,
-// pairs and counts.
+// every generated dataset (and plateaus, fallback cells, quadrilaterals), cut into 1, 2, 3, 4,
+// 7 and 16 pieces of contiguous cells, must give the same nodes (type, value, place: bit for bit),
+// arcs, pairs and counts.
 #include "datasets/datasets.hpp"
 #include "exact/exact_contour_tree.hpp"
 #include "exact/piece_codec.hpp"
@@ -96,7 +96,8 @@ void check_all_piece_counts(const MeshInput &whole, const std::string &name) {
         n.uv = p.uv;
       }
     ASSERT_GT(expected.nodes.size(), 1u) << name;
-    for (int pieces : {1, 2, 3, 4, 7}) {
+    for (int pieces :
+         {1, 2, 3, 4, 7, 16}) { // 16: small pieces, numbered by a sort (mesh_partition)
       const std::string what =
           name + (augmented ? " augmented" : "") + ", " + std::to_string(pieces) + " pieces";
       const TreeResult got = tree_by_pieces(whole, pieces, scales, augmented);

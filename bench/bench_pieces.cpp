@@ -1,0 +1,89 @@
+#include "bench_pieces.hpp"
+
+#include "bench_support.hpp"
+
+#include "datasets/datasets.hpp"
+#include "exact/piece_codec.hpp"
+#include "exact/piece_trees.hpp"
+#include "mesh/duplicate_points.hpp"
+#include "mesh/mesh.hpp"
+#include "mesh/mesh_checks.hpp"
+#include "mesh/mesh_partition.hpp"
+#include "mesh/topology.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <utility>
+
+namespace hoct::bench {
+
+void pieces_section(const std::vector<double> &sizes, int runs) {
+  std::printf("## The distributed tree's phases, piece by piece in one process (random cubic "
+              "fields, 1 thread; per piece: the mean over the pieces; merge: the longest merge "
+              "of each level of the binary reduction, summed over the levels)\n\n");
+  std::printf("| cells | pieces | whole topology (s) | whole duplicates (s) | extract + build per "
+              "piece (s) | kept trees per piece (s) | kept nodes per piece | bytes per piece "
+              "| bytes per node | merge, all levels (s) | levels |\n"
+              "|---|---|---|---|---|---|---|---|---|---|---|\n");
+  for (double size : sizes) {
+    DatasetOptions o;
+    o.cells = static_cast<long long>(size);
+    o.degree = 3;
+    const MeshInput whole = generate_dataset("random", o);
+    const int64_t cells = static_cast<int64_t>(whole.num_cells());
+    // Rank 0's checks of the whole mesh (distributed/distributed_tree).
+    std::vector<double> topo_s, dup_s;
+    for (int i = 0; i < runs; ++i) {
+      ProblemLog problems;
+      const auto t0 = clock_type::now();
+      const Topology topo = Topology::build(whole, problems, 1);
+      topo_s.push_back(seconds_since(t0));
+      const auto t1 = clock_type::now();
+      const auto box = bounding_box(whole.points, 1);
+      check_duplicate_vertices(whole, topo, problems, 1, &box);
+      dup_s.push_back(seconds_since(t1));
+    }
+    for (int pieces : {2, 8, 32, 128}) {
+      const auto spans = point_piece_spans(whole, pieces);
+      std::vector<PieceTrees> groups;
+      double build = 0, trees = 0, kept = 0, bytes = 0;
+      for (int r = 0; r < pieces; ++r) {
+        const auto [begin, end] = piece_cell_range(cells, pieces, r);
+        const auto t0 = clock_type::now();
+        const MeshPiece piece = extract_piece(whole, begin, end);
+        MeshBuildOptions bo;
+        bo.throw_on_error = false;
+        const Mesh mesh = build_mesh(piece.input, bo);
+        build += seconds_since(t0);
+        const auto t1 = clock_type::now();
+        const PiecePlace place{r, piece.global_point, begin, triangles_before(whole, begin), spans};
+        ExactTreeOptions eo;
+        TreeTimings time;
+        PieceTrees t = piece_trees(mesh, place, eo, time);
+        trees += seconds_since(t1);
+        kept += static_cast<double>(t.nodes.size());
+        bytes += static_cast<double>(encode_piece_trees(t).size());
+        groups.push_back(std::move(t));
+      }
+      double merge = 0;
+      int levels = 0;
+      for (int step = 1; step < pieces; step *= 2, ++levels) {
+        double longest = 0;
+        for (int r = 0; r + step < pieces; r += 2 * step) {
+          const auto t0 = clock_type::now();
+          groups[r] = merge_piece_trees(groups[r], groups[r + step], false);
+          longest = std::max(longest, seconds_since(t0));
+        }
+        merge += longest;
+      }
+      std::printf("| %lld | %d | %.3f | %.3f | %.4f | %.4f | %.0f | %.0f | %.0f | %.4f | %d |\n",
+                  static_cast<long long>(cells), pieces, median(topo_s), median(dup_s),
+                  build / pieces, trees / pieces, kept / pieces, bytes / pieces, bytes / kept,
+                  merge, levels);
+      std::fflush(stdout);
+    }
+  }
+  std::printf("\n");
+}
+
+} // namespace hoct::bench
