@@ -141,8 +141,9 @@ PyMesh from_arrays(py::array_t<double, py::array::c_style | py::array::forcecast
 
 // contour_tree(mesh, ...): the keyword arguments as a library request (the same one `hoct tree`
 // makes of its flags). Arcs are drawn on request (Tree.arc_paths), from the kept graph.
-PyTree py_contour_tree(const PyMesh &m, const std::string &method, int refine, int threads,
-                       bool keep_flat, bool force, bool augmented, const std::string &simplify) {
+// contour_tree's arguments as a library request (the arcs' paths left to the caller).
+TreeRequest tree_request(const std::string &method, int refine, int threads, bool keep_flat,
+                         bool force, bool augmented, const std::string &simplify) {
   TreeRequest rq;
   if (method == "exact")
     rq.method = TreeMethod::Exact;
@@ -159,6 +160,12 @@ PyTree py_contour_tree(const PyMesh &m, const std::string &method, int refine, i
   rq.augmented = augmented;
   if (!simplify.empty())
     rq.simplify = parse_threshold(simplify, "contour_tree: simplify");
+  return rq;
+}
+
+PyTree py_contour_tree(const PyMesh &m, const std::string &method, int refine, int threads,
+                       bool keep_flat, bool force, bool augmented, const std::string &simplify) {
+  TreeRequest rq = tree_request(method, refine, threads, keep_flat, force, augmented, simplify);
   rq.arcs = ArcGeometry::Graph;
   TreeOutcome out = compute_tree(*m.mesh, rq, &m.input);
   return {out.simplified ? std::move(*out.simplified) : std::move(out.tree)};
@@ -176,14 +183,7 @@ py::object py_contour_tree_mpi(const PyMesh &m, long long fortran_comm, int thre
     throw Error("contour_tree: comm given but MPI is not running in this process (import "
                 "mpi4py.MPI first)");
   const MPI_Comm comm = MPI_Comm_f2c(static_cast<MPI_Fint>(fortran_comm));
-  TreeRequest rq;
-  rq.method = TreeMethod::Exact;
-  rq.threads = threads;
-  rq.keep_flat = keep_flat;
-  rq.force = force;
-  rq.augmented = augmented;
-  if (!simplify.empty())
-    rq.simplify = parse_threshold(simplify, "contour_tree: simplify");
+  TreeRequest rq = tree_request("exact", 4, threads, keep_flat, force, augmented, simplify);
   rq.arcs = ArcGeometry::None; // the arcs' paths need the whole graph on one rank
   std::optional<DistributedOutcome> d;
   {

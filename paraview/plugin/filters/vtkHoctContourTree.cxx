@@ -183,20 +183,9 @@ int vtkHoctContourTree::RequestData(vtkInformation *, vtkInformationVector **inp
   }
   try {
     // The properties as a library request: the same call as `hoct tree` (pipeline/compute_tree).
-    hoct::TreeRequest rq;
-    rq.method = this->Method == LINEAR   ? hoct::TreeMethod::Linear
-                : this->Method == REFINE ? hoct::TreeMethod::Refine
-                                         : hoct::TreeMethod::Exact;
-    rq.refine = this->RefineLevel;
-    rq.augmented = this->Augmented;
-    rq.keep_flat = this->KeepFlat;
-    rq.force = this->Force;
-    rq.threads = this->Threads;
+    hoct::TreeRequest rq = this->MakeRequest();
     rq.arcs = hoct::ArcGeometry::AllPaths;
-    if (simplified_output)
-      rq.simplify =
-          hoct::Threshold{this->PersistenceThreshold, this->ThresholdMode == PERCENT_OF_RANGE};
-    else if (this->PersistenceThreshold > 0)
+    if (!simplified_output && this->PersistenceThreshold > 0)
       vtkWarningMacro("Higher-Order Contour Tree: simplification works on the reduced tree; "
                       "turn Augmented off to get output 2");
     bool by_default = false;
@@ -227,6 +216,22 @@ int vtkHoctContourTree::RequestData(vtkInformation *, vtkInformationVector **inp
     return 0;
   }
   return 1;
+}
+
+hoct::TreeRequest vtkHoctContourTree::MakeRequest() const {
+  hoct::TreeRequest rq;
+  rq.method = this->Method == LINEAR   ? hoct::TreeMethod::Linear
+              : this->Method == REFINE ? hoct::TreeMethod::Refine
+                                       : hoct::TreeMethod::Exact;
+  rq.refine = this->RefineLevel;
+  rq.augmented = this->Augmented;
+  rq.keep_flat = this->KeepFlat;
+  rq.force = this->Force;
+  rq.threads = this->Threads;
+  if (this->PersistenceThreshold > 0 && !this->Augmented) // output 2, the simplified tree
+    rq.simplify =
+        hoct::Threshold{this->PersistenceThreshold, this->ThresholdMode == PERCENT_OF_RANGE};
+  return rq;
 }
 
 #ifdef HOCT_WITH_MPI
@@ -275,15 +280,8 @@ int vtkHoctContourTree::RequestDistributed(vtkInformationVector **inputVector,
     this->UpdateProgress(0.2);
     // The properties as a request, as `mpirun hoct tree` makes it (the exact method only; the
     // arcs drawn straight: their paths need the whole graph on one process).
-    hoct::TreeRequest rq;
-    rq.augmented = this->Augmented;
-    rq.keep_flat = this->KeepFlat;
-    rq.force = this->Force;
-    rq.threads = this->Threads;
+    hoct::TreeRequest rq = this->MakeRequest();
     rq.arcs = hoct::ArcGeometry::None;
-    if (simplified_output)
-      rq.simplify =
-          hoct::Threshold{this->PersistenceThreshold, this->ThresholdMode == PERCENT_OF_RANGE};
     hoct::DistributedOutcome d = hoct::distributed_tree(whole, rq, comm);
     collectives_done = true;
     if (rank != 0)

@@ -9,6 +9,10 @@
 #include "HoctParaViewModule.h"
 #include "vtkPolyDataAlgorithm.h"
 
+namespace hoct {
+struct TreeRequest;
+}
+
 class vtkPolyData;
 class vtkUnstructuredGrid;
 
@@ -77,6 +81,8 @@ protected:
   bool WarnedPerPiece = false; // the per-piece warning (a build without MPI) is given once
 
 private:
+  // The properties as a library request (the arcs' geometry left to the caller).
+  hoct::TreeRequest MakeRequest() const;
   // The input spread over the processes (pvbatch, pvserver under MPI): the pieces gathered and
   // the tree computed over the processes (distributed/distributed_tree), its outputs on rank 0.
   int RequestDistributed(vtkInformationVector **inputVector, vtkUnstructuredGrid *grid,
