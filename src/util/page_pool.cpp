@@ -52,6 +52,22 @@ void *hand_out(char *base, std::size_t bytes) {
 
 void unmap(const Block &b) { munmap(b.base, b.bytes); }
 
+// Asks for transparent huge pages on a new block of at least one huge page (the kernel aligns
+// such anonymous mappings to them): a first touch then maps 2 MiB at once instead of 4 KiB, and
+// on a virtual machine each fault costs far more than clearing its page. Where transparent huge
+// pages are off ("never"), or the kernel has none free, the block keeps small pages; the
+// contents are the same either way (zeroed on first touch).
+void ask_huge_pages(void *base, std::size_t bytes) {
+#ifdef MADV_HUGEPAGE
+  constexpr std::size_t kHugePage = std::size_t{2} << 20;
+  if (bytes >= kHugePage)
+    madvise(base, bytes, MADV_HUGEPAGE);
+#else
+  (void)base;
+  (void)bytes;
+#endif
+}
+
 // Takes a kept block of `bytes` (under the lock): the smallest that fits (what it has beyond
 // `bytes`, if a pooled size, stays kept), else the largest, grown. A null base when nothing is
 // kept or growing fails.
@@ -103,6 +119,7 @@ void *allocate_pages(std::size_t bytes) {
   void *m = mmap(nullptr, total, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
   if (m == MAP_FAILED)
     throw std::bad_alloc();
+  ask_huge_pages(m, total);
   return hand_out(static_cast<char *>(m), total);
 }
 

@@ -9,6 +9,8 @@
 // is new). When the last scope closes, the kept blocks go back to the system except up to 64 MiB
 // of them (as the C library keeps up to 64 MiB of its heap), which serve the next computation;
 // outside scopes, freed blocks are kept only up to those 64 MiB.
+// New blocks of 2 MiB and more ask for transparent huge pages (where the system allows them on
+// request): one first touch then maps 2 MiB, where it would map 4 KiB.
 // Kept pages are pages the computation used before, so the peak memory does not grow as long as
 // its large arrays come from here.
 #pragma once
