@@ -67,7 +67,7 @@ double Field::value(int64_t c, double u, double v) const {
 Field Field::build(const MeshInput &in, const Topology &topo, ProblemLog &problems, int threads,
                    const MeshScales *whole) {
   Field f;
-  const int64_t nc = topo.num_cells(), ne = topo.num_edges();
+  const int64_t ne = topo.num_edges();
   f.input_degree_.assign(in.cell_degree.begin(), in.cell_degree.end());
   if (whole && !whole->empty()) {
     f.min_value_ = whole->min_value;
@@ -115,14 +115,23 @@ Field Field::build(const MeshInput &in, const Topology &topo, ProblemLog &proble
 
   // Edge polynomials, once per edge, from the owner's edge nodes oriented lo -> hi.
   f.edge_offset_.resize(ne + 1);
-  f.edge_offset_[0] = 0;
-  for (int64_t e = 0; e < ne; ++e)
-    f.edge_offset_[e + 1] = f.edge_offset_[e] + f.edge_degree_[e] + 1;
+  parallel_offsets(ne, threads, f.edge_offset_,
+                   [&](int64_t e) { return int64_t{f.edge_degree_[e]} + 1; });
   f.edge_coef_->resize(f.edge_offset_[ne]);
   // Fixed blocks of edges, each with its own problem log, appended in block order: the same
   // report on any thread count.
   const int64_t blocks = problem_blocks(ne);
   BlockProblems block_problems(blocks);
+  // An edge of linear cells only: its nodes are its two vertices' points in every cell (a
+  // vertex is one point), so the cells agree on it by construction, and a degree-1 edge's
+  // Bernstein coefficients are its end values, which pin_edge_ends sets.
+  auto linear_cells_only = [&](int64_t e) {
+    const int64_t *cells = topo.edge_cells_begin(e);
+    for (int i = 0; i < topo.edge_cell_count(e); ++i)
+      if (in.cell_degree[cells[i]] != 1)
+        return false;
+    return true;
+  };
   parallel_chunks(ne, blocks, edge_threads, [&](int64_t b, int64_t begin, int64_t end, int) {
     ProblemLog &log = block_problems[b];
     // Per edge: no allocation (degrees are at most kMaxDegree).
@@ -132,6 +141,8 @@ Field Field::build(const MeshInput &in, const Topology &topo, ProblemLog &proble
       const int64_t c = owner[e];
       const int k = owner_local[e];
       const int d = f.edge_degree_[e];
+      if (d == 1 && linear_cells_only(e))
+        continue; // its two coefficients are its vertices' values (pin_edge_ends)
       edge_node_values(in, ref, c, k, topo.edge_reversed(c, k), vals, ids);
       double *p = f.edge_coef_->data() + f.edge_offset_[e];
       bernstein_from_equispaced(vals, d, p);
@@ -179,13 +190,13 @@ Field Field::build(const MeshInput &in, const Topology &topo, ProblemLog &proble
 
   // Cell polynomials from the node values (written in place; raised where an edge has a higher
   // degree), then the shared edges.
-  std::vector<int> degrees(nc);
-  for (int64_t c = 0; c < nc; ++c)
-    degrees[c] = in.cell_degree[c];
   f.assemble_cells(
-      topo, degrees,
+      topo, f.input_degree_,
       [&](int64_t c, int degree, double *out) {
         const int din = in.cell_degree[c];
+        if (din == 1 && degree == 1)
+          return; // each of its three coefficients is a corner, copied in from its edges
+
         const int n = lattice_size(din);
         double stack_vals[91]; // lattice_size(12)
         std::vector<double> heap;
@@ -209,26 +220,30 @@ Field Field::build(const MeshInput &in, const Topology &topo, ProblemLog &proble
   return f;
 }
 
-void Field::assemble_cells(const Topology &topo, const std::vector<int> &cell_degree,
+void Field::assemble_cells(const Topology &topo, std::span<const uint8_t> cell_degree,
                            const std::function<void(int64_t, int, double *)> &cell, int threads) {
   const int64_t nc = topo.num_cells();
   degree_.resize(nc);
   offset_.resize(nc + 1);
   const int cell_threads = threads_for(nc, threads, 32768);
-  parallel_for(nc, cell_threads, [&](int64_t begin, int64_t end, int) {
+  // Each fixed block's highest degree, combined in block order.
+  const int64_t blocks = problem_blocks(nc);
+  std::vector<int> block_max(static_cast<std::size_t>(blocks), 0);
+  parallel_chunks(nc, blocks, cell_threads, [&](int64_t b, int64_t begin, int64_t end, int) {
+    int most = 0;
     for (int64_t c = begin; c < end; ++c) {
       int d = cell_degree[c];
       for (int k = 0; k < 3; ++k)
         d = std::max(d, static_cast<int>(edge_degree_[topo.cell_edge(c, k)]));
       degree_[c] = static_cast<uint8_t>(d);
+      most = std::max(most, d);
     }
+    block_max[static_cast<std::size_t>(b)] = most;
   });
   max_degree_ = 0;
-  offset_[0] = 0;
-  for (int64_t c = 0; c < nc; ++c) {
-    max_degree_ = std::max(max_degree_, static_cast<int>(degree_[c]));
-    offset_[c + 1] = offset_[c] + lattice_size(degree_[c]);
-  }
+  for (const int d : block_max)
+    max_degree_ = std::max(max_degree_, d);
+  parallel_offsets(nc, threads, offset_, [&](int64_t c) { return lattice_size(degree_[c]); });
   auto coef = std::make_shared<UninitializedVector<double>>();
   coef->resize(offset_[nc]);
   parallel_for(nc, threads_for(nc, threads, 4096), [&](int64_t begin, int64_t end, int) {
@@ -329,11 +344,8 @@ Field Field::build_from_polynomials(const Topology &topo,
                          std::to_string(std::abs(val - f.vertex_value_[v])));
     }
   f.pin_edge_ends(topo, 1);
-  std::vector<int> degrees(nc);
-  for (int64_t c = 0; c < nc; ++c)
-    degrees[c] = cells[c].degree();
   f.assemble_cells(
-      topo, degrees,
+      topo, f.input_degree_,
       [&](int64_t c, int degree, double *out) {
         const BernsteinTriangle p =
             cells[c].degree() == degree ? cells[c] : cells[c].elevated(degree);

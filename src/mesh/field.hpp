@@ -106,14 +106,14 @@ private:
   // Cell degrees (the largest of the cell's own and its edges'), then every cell's coefficients:
   // cell(c, degree, out) writes cell c's polynomial raised to `degree`; the shared edges are then
   // copied in from the edge polynomials.
-  void assemble_cells(const Topology &topology, const std::vector<int> &cell_degree,
+  void assemble_cells(const Topology &topology, std::span<const uint8_t> cell_degree,
                       const std::function<void(int64_t, int, double *)> &cell, int threads);
   // Sets each edge polynomial's end coefficients to its vertices' values, bit-exactly.
   void pin_edge_ends(const Topology &topology, int threads);
 
-  std::vector<uint8_t> degree_, input_degree_, edge_degree_;
-  std::vector<int64_t> offset_;
-  UninitializedVector<int64_t> edge_offset_;
+  // Sized, then filled completely (most by parallel loops: their pages first touched by those).
+  UninitializedVector<uint8_t> degree_, input_degree_, edge_degree_;
+  UninitializedVector<int64_t> offset_, edge_offset_;
   // Filled completely by parallel loops right after sizing (first touched by their threads). The
   // cells' coefficients, never changed once built, are shared by copies of the field (the field
   // of a surface cut open has the same cells: on_cut_topology).
@@ -123,7 +123,7 @@ private:
   // like the cells': the cut field's copies of an edge point at its original's.
   std::shared_ptr<UninitializedVector<double>> edge_coef_ =
       std::make_shared<UninitializedVector<double>>();
-  std::vector<double> vertex_value_;
+  UninitializedVector<double> vertex_value_;
   double min_value_ = 0, max_value_ = 0, reference_ = 0, precision_ = 0;
   int max_degree_ = 0;
 };

@@ -87,4 +87,31 @@ template <class Body> void parallel_for(int64_t n, int threads, const Body &body
       [&](int64_t, int64_t begin, int64_t end, int worker) { body(begin, end, worker); });
 }
 
+// Offsets of n consecutive runs: offsets[0] = 0, offsets[i + 1] = offsets[i] + size(i), for an
+// `offsets` of n + 1 slots. Fixed blocks of items are summed on `threads` threads, their starts
+// added up in block order, then each block writes its offsets: integer sums, so the same result
+// on any thread count.
+template <class Offsets, class Size>
+void parallel_offsets(int64_t n, int threads, Offsets &offsets, const Size &size) {
+  const int64_t blocks = std::clamp<int64_t>(n / 16384, 1, 256);
+  const int workers = threads_for(n, threads, 65536);
+  std::vector<int64_t> first(static_cast<std::size_t>(blocks) + 1, 0);
+  parallel_chunks(n, blocks, workers, [&](int64_t b, int64_t begin, int64_t end, int) {
+    int64_t sum = 0;
+    for (int64_t i = begin; i < end; ++i)
+      sum += size(i);
+    first[static_cast<std::size_t>(b) + 1] = sum;
+  });
+  for (int64_t b = 0; b < blocks; ++b)
+    first[static_cast<std::size_t>(b) + 1] += first[static_cast<std::size_t>(b)];
+  offsets[0] = 0;
+  parallel_chunks(n, blocks, workers, [&](int64_t b, int64_t begin, int64_t end, int) {
+    int64_t at = first[static_cast<std::size_t>(b)];
+    for (int64_t i = begin; i < end; ++i) {
+      at += size(i);
+      offsets[i + 1] = at;
+    }
+  });
+}
+
 } // namespace hoct
