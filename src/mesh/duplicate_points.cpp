@@ -122,8 +122,19 @@ std::vector<int64_t> coincident_points(std::span<const Vec3> points,
       faces[i] = near;
     }
   });
-  // (key, index) pairs are distinct: the same order on any thread count.
-  parallel_sort(sorted.begin(), sorted.end(), threads);
+  // (key, index) pairs are distinct: the same order on any thread count. The pairs' own order,
+  // compared field by field (std::pair's operator< goes through std::array's lexicographical
+  // comparison, which the compiler does not reduce to these few compares).
+  parallel_sort(sorted.begin(), sorted.end(), threads,
+                [](const std::pair<Key, std::size_t> &a, const std::pair<Key, std::size_t> &b) {
+                  if (a.first[0] != b.first[0])
+                    return a.first[0] < b.first[0];
+                  if (a.first[1] != b.first[1])
+                    return a.first[1] < b.first[1];
+                  if (a.first[2] != b.first[2])
+                    return a.first[2] < b.first[2];
+                  return a.second < b.second;
+                });
 
   // Crowded cells keep their fine-grid order for the lookups from neighbouring cells.
   std::vector<std::vector<std::pair<Key, std::size_t>>> crowded;

@@ -185,9 +185,12 @@ std::string cell_str(int64_t c) { return "cell " + std::to_string(c); }
 
 void check_duplicate_vertices(const MeshInput &in, const Topology &topo, ProblemLog &problems,
                               int threads, const std::array<Vec3, 2> *box) {
-  std::vector<int64_t> corners(topo.num_vertices());
-  for (int64_t v = 0; v < topo.num_vertices(); ++v)
-    corners[v] = topo.vertex_point(v);
+  const int64_t nv = topo.num_vertices();
+  std::vector<int64_t> corners(static_cast<std::size_t>(nv));
+  parallel_for(nv, threads_for(nv, threads, 65536), [&](int64_t begin, int64_t end, int) {
+    for (int64_t v = begin; v < end; ++v)
+      corners[v] = topo.vertex_point(v);
+  });
   const auto [lo, hi] = box ? *box : bounding_box(in.points, threads);
   const double tol = 1e-10 * std::hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]);
   const std::vector<int64_t> rep = coincident_points(in.points, corners, tol, threads);

@@ -50,7 +50,7 @@ Topology Topology::build(const MeshInput &in, ProblemLog &problems, int threads)
   // Vertices: the distinct corner points, numbered in order of first appearance by point index.
   UninitializedVector<int64_t> point_vertex(static_cast<std::size_t>(np));
   {
-    std::vector<uint8_t> corner(static_cast<std::size_t>(np), 0);
+    PooledVector<uint8_t> corner(static_cast<std::size_t>(np), 0);
     parallel_for(nc, cell_threads, [&](int64_t begin, int64_t end, int) {
       for (int64_t c = begin; c < end; ++c)
         for (int k = 0; k < 3; ++k)
@@ -103,7 +103,10 @@ Topology Topology::build(const MeshInput &in, ProblemLog &problems, int threads)
 
   // Each vertex's lowest-id cell (and, as a cell meets it once unless degenerate, its last
   // corner there).
-  t.vertex_cell_.assign(static_cast<std::size_t>(nv), nc);
+  t.vertex_cell_.resize(static_cast<std::size_t>(nv));
+  parallel_for(nv, threads_for(nv, threads, 65536), [&](int64_t begin, int64_t end, int) {
+    std::fill(t.vertex_cell_.begin() + begin, t.vertex_cell_.begin() + end, nc);
+  });
   parallel_for(nc, cell_threads, [&](int64_t begin, int64_t end, int) {
     for (int64_t c = begin; c < end; ++c)
       for (int k = 0; k < 3; ++k) {
@@ -129,7 +132,7 @@ Topology Topology::build(const MeshInput &in, ProblemLog &problems, int threads)
   // Edges: (lo, hi, cell, local) records in that order, bucketed by lo (a counting sort; the
   // order within a bucket does not matter, as it is sorted next) and each bucket (a vertex's few
   // edges) sorted.
-  std::vector<int64_t> bucket(static_cast<std::size_t>(nv) + 1, 0);
+  PooledVector<int64_t> bucket(static_cast<std::size_t>(nv) + 1, 0);
   parallel_for(nc, cell_threads, [&](int64_t begin, int64_t end, int) {
     for (int64_t c = begin; c < end; ++c)
       for (int k = 0; k < 3; ++k)
@@ -139,7 +142,10 @@ Topology Topology::build(const MeshInput &in, ProblemLog &problems, int threads)
     bucket[v + 1] += bucket[v];
   UninitializedVector<EdgeRecord> rec(static_cast<std::size_t>(3 * nc));
   {
-    std::vector<int64_t> fill(bucket.begin(), bucket.end() - 1);
+    UninitializedVector<int64_t> fill(static_cast<std::size_t>(nv));
+    parallel_for(nv, threads_for(nv, threads, 65536), [&](int64_t begin, int64_t end, int) {
+      std::copy(bucket.begin() + begin, bucket.begin() + end, fill.begin() + begin);
+    });
     parallel_for(nc, cell_threads, [&](int64_t begin, int64_t end, int) {
       for (int64_t c = begin; c < end; ++c)
         for (int k = 0; k < 3; ++k) {
@@ -174,7 +180,7 @@ Topology Topology::build(const MeshInput &in, ProblemLog &problems, int threads)
   t.edge_cell_offset_[ne] = static_cast<int64_t>(rec.size());
   // The local edge of each (edge, cell) incidence, in edge_cells_ order: the orientation walk
   // below finds a neighbour's side of the shared edge there, not by searching the neighbour.
-  std::vector<int8_t> incidence_local(rec.size());
+  UninitializedVector<int8_t> incidence_local(rec.size()); // every slot written below
   {
     BlockProblems found(vblocks);
     std::vector<int64_t> boundary(static_cast<std::size_t>(vblocks), 0);
@@ -307,7 +313,7 @@ Topology Topology::build(const MeshInput &in, ProblemLog &problems, int threads)
   // Boundary loops: components of the boundary-edge graph; every boundary vertex of a manifold
   // has exactly two boundary edges.
   const int vertex_loop_threads = threads_for(nv, threads, 32768);
-  std::vector<int64_t> boundary_degree(static_cast<std::size_t>(nv), 0);
+  PooledVector<int64_t> boundary_degree(static_cast<std::size_t>(nv), 0);
   {
     ConcurrentSets loops(nv, threads);
     parallel_for(ne, edge_threads, [&](int64_t begin, int64_t end, int) {
