@@ -100,7 +100,7 @@ std::vector<int64_t> coincident_points(std::span<const Vec3> points,
   // Each point's coarse cell, and the faces of it the point lies within the tolerance of (bit
   // 2 ax: the lower face along axis ax, bit 2 ax + 1: the upper one), both found in one pass over
   // the points in candidate order.
-  std::vector<std::pair<Key, std::size_t>> sorted(n);
+  PooledVector<std::pair<Key, std::size_t>> sorted(n);
   UninitializedVector<uint8_t> faces(n);
   const int64_t count = static_cast<int64_t>(n);
   parallel_for(count, threads_for(count, threads, 65536), [&](int64_t begin, int64_t end, int) {

@@ -224,22 +224,26 @@ Geometry Geometry::build(const MeshInput &in, int threads, const std::array<Vec3
   // Each cell's map degree (1: straight, three control points), then the control points into
   // their slots: two passes over the cells in parallel, a curved cell converted in each.
   auto maps = std::make_shared<Maps>();
-  std::vector<uint8_t> &degree = maps->degree;
-  std::vector<int64_t> &offset = maps->offset;
+  UninitializedVector<uint8_t> &degree = maps->degree;
+  UninitializedVector<int64_t> &offset = maps->offset;
   UninitializedVector<Vec3> &coef = maps->coef;
   degree.resize(nc);
   const int workers = threads_for(nc, std::max(1, threads), 4096);
-  parallel_for(nc, workers, [&](int64_t begin, int64_t end, int) {
+  // Curved cells counted per worker and summed (a count: the same for any split of the cells).
+  std::vector<int64_t> curved(static_cast<std::size_t>(workers), 0);
+  parallel_for(nc, workers, [&](int64_t begin, int64_t end, int worker) {
     CellMapper mapper(in, tol);
-    for (int64_t c = begin; c < end; ++c)
+    int64_t here = 0;
+    for (int64_t c = begin; c < end; ++c) {
       degree[c] = static_cast<uint8_t>(mapper.degree(c));
+      here += degree[c] != 1;
+    }
+    curved[static_cast<std::size_t>(worker)] += here;
   });
+  for (const int64_t n : curved)
+    g.curved_cells_ += n;
   offset.resize(nc + 1);
-  offset[0] = 0;
-  for (int64_t c = 0; c < nc; ++c) {
-    offset[c + 1] = offset[c] + lattice_size(degree[c]);
-    g.curved_cells_ += degree[c] != 1;
-  }
+  parallel_offsets(nc, threads, offset, [&](int64_t c) { return lattice_size(degree[c]); });
   coef.resize(static_cast<std::size_t>(offset[nc]));
   parallel_for(nc, workers, [&](int64_t begin, int64_t end, int) {
     CellMapper mapper(in, tol);

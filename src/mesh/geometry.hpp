@@ -1,7 +1,8 @@
 // Each cell's geometry map phi: reference triangle -> R^3, a Bernstein polynomial map through its
 // Lagrange nodes, of the cell's own (input) degree or lower where the nodes lie on a map of lower
-// degree (linear: the flat triangle; 2 or 3 where that degree divides the input's). Used to report positions and to build refinements; the
-// algorithms themselves work in the reference triangle (docs/ALGORITHM.md §1).
+// degree (linear: the flat triangle; 2 or 3 where that degree divides the input's). Used to report
+// positions and to build refinements; the algorithms themselves work in the reference triangle
+// (docs/ALGORITHM.md §1).
 #pragma once
 
 #include "mesh/mesh_input.hpp"
@@ -54,9 +55,9 @@ private:
   // The maps, shared by the copies of a Geometry (they do not change after build): a copy costs
   // nothing, and what holds one (a tree's geometric graph, to draw its arcs) outlives the mesh.
   struct Maps {
-    std::vector<uint8_t> degree;
-    std::vector<int64_t> offset;    // into coef, in units of control points
-    UninitializedVector<Vec3> coef; // control points, canonical lattice order
+    UninitializedVector<uint8_t> degree; // these three filled completely by parallel loops
+    UninitializedVector<int64_t> offset; // into coef, in units of control points
+    UninitializedVector<Vec3> coef;      // control points, canonical lattice order
   };
   std::shared_ptr<const Maps> maps_;
   bool planar_ = true;
