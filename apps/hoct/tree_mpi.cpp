@@ -103,6 +103,11 @@ void run_ranks(const DistributedTreeRun &run, TreeRequest rq, bool root, bool &c
                 run.file.c_str(), input.field_name.c_str(),
                 static_cast<long long>(input.num_cells()), d.ranks);
     print_tree_body(tree, total.seconds());
+    if (d.whole_check.empty())
+      std::printf("  checks: by the pieces together (seams, shape, duplicate vertices)\n");
+    else
+      std::printf("  checks: the whole mesh on rank 0 (the pieces found: %s)\n",
+                  d.whole_check.c_str());
     std::printf("  ranks (cells, kept nodes, bytes sent / received, peak memory, piece time):\n");
     for (std::size_t k = 0; k < d.reports.size(); ++k) {
       const RankReport &q = d.reports[k];

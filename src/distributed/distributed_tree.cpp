@@ -1,11 +1,14 @@
 #include "distributed/distributed_tree.hpp"
 
+#include "distributed/distributed_checks.hpp"
+
 #include "exact/piece_codec.hpp"
 #include "exact/piece_trees.hpp"
 #include "mesh/duplicate_points.hpp"
 #include "mesh/mesh.hpp"
 #include "mesh/mesh_checks.hpp"
 #include "mesh/mesh_partition.hpp"
+#include "mesh/piece_surface.hpp"
 #include "pipeline/compute_tree.hpp"
 #include "pipeline/domain_check.hpp"
 #include "util/error.hpp"
@@ -16,6 +19,7 @@
 #include <sys/resource.h>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <regex>
 #include <string>
@@ -235,27 +239,71 @@ DistributedOutcome distributed_tree_on(const MeshInput &whole, const TreeRequest
   RankReport me;
   me.cells = end - begin;
   const MeshPiece piece = extract_piece(whole, begin, end);
+  // The piece's points other pieces use too: its fans there are checked with theirs.
+  const auto spans = point_piece_spans(whole, ranks);
+  std::vector<uint8_t> open(piece.global_point.size());
+  for (std::size_t i = 0; i < open.size(); ++i) {
+    const auto &s = spans[static_cast<std::size_t>(piece.global_point[i])];
+    open[i] = s[0] != s[1];
+  }
+  MeshScales scales;
   MeshBuildOptions bo;
   bo.throw_on_error = false;
   bo.threads = threads;
-  bo.whole_scales = [comm](const MeshScales &own) { return reduce_scales(comm, own); };
+  bo.whole_scales = [comm, &scales](const MeshScales &own) {
+    return scales = reduce_scales(comm, own);
+  };
+  bo.open_points = open;
   // More ranks than cells: a rank without cells takes part in the collective steps only.
   const bool empty_piece = me.cells == 0;
   Mesh mesh;
   if (empty_piece) {
-    reduce_scales(comm, MeshScales{});
+    scales = reduce_scales(comm, MeshScales{});
     mesh.complete = true;
   } else {
     mesh = build_mesh(piece.input, bo);
   }
   const double build_seconds = clock.lap();
 
-  // 2. The checks: each piece's own, and on rank 0 the whole mesh's topology, duplicate
-  // vertices and shape (only once every piece found its cells well formed).
-  int complete = mesh.complete ? 1 : 0;
-  MPI_Allreduce(MPI_IN_PLACE, &complete, 1, MPI_INT, MPI_MIN, comm);
+  // 2. The checks: each piece's own, then (once every piece found its cells well formed) the
+  // whole's seams, shape and duplicate vertices by all pieces together. Where they find
+  // anything (or a piece found a problem of the whole's kinds), rank 0 checks the whole mesh
+  // alone, for the report a run without MPI gives.
+  int flags[2] = {mesh.complete ? 1 : 0, 0};
+  for (const auto &[kind, r] : mesh.problems.kinds())
+    if (whole_mesh_problem(kind))
+      flags[1] = -1;
+  MPI_Allreduce(MPI_IN_PLACE, flags, 2, MPI_INT, MPI_MIN, comm);
+  const int complete = flags[0];
+  if (flags[1] != 0)
+    d.whole_check = "a piece found a problem of the whole mesh's kinds";
   const std::vector<std::string> logs =
       gather_strings(comm, encode_problems(mesh.problems, begin), rank, ranks);
+  SurfaceShape surface;
+  if (complete) {
+    const Topology &topo = mesh.topology;
+    PieceSurface own;
+    std::vector<Vec3> positions;
+    std::vector<int64_t> ids;
+    if (!empty_piece) {
+      own = summarize_piece(topo, piece.global_point, open, rank, threads);
+      positions.resize(static_cast<std::size_t>(topo.num_vertices()));
+      ids.resize(positions.size());
+      for (int64_t v = 0; v < topo.num_vertices(); ++v) {
+        const int64_t p = topo.vertex_point(v); // a corner: one of the piece's input points
+        positions[v] = piece.input.points[p];
+        ids[v] = piece.global_point[p];
+      }
+    }
+    surface = gather_surface(comm, empty_piece ? nullptr : &own);
+    const auto &[lo, hi] = scales.box;
+    const double tolerance = 1e-10 * std::hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]);
+    if (duplicate_vertices_across(comm, positions, ids, tolerance, lo, threads) &&
+        d.whole_check.empty())
+      d.whole_check = "vertices of different ids at the same position";
+    if (!surface.seam_problem.empty() && d.whole_check.empty())
+      d.whole_check = surface.seam_problem;
+  }
   std::string failure;
   std::vector<std::string> warnings;
   if (rank == 0) {
@@ -270,7 +318,9 @@ DistributedOutcome distributed_tree_on(const MeshInput &whole, const TreeRequest
       for (const std::string &log : logs)
         decode_problems(log, checked.problems);
       std::string shape;
-      if (checked.complete) {
+      if (checked.complete && d.whole_check.empty()) {
+        shape = domain_shape(surface);
+      } else if (checked.complete) {
         ProblemLog topology_problems;
         SplitCells split;
         const MeshInput *triangles = &whole;
@@ -307,7 +357,6 @@ DistributedOutcome distributed_tree_on(const MeshInput &whole, const TreeRequest
   PieceTrees trees;
   TreeTimings time;
   try {
-    const auto spans = point_piece_spans(whole, ranks);
     const PiecePlace place{rank, piece.global_point, begin, triangles_before(whole, begin), spans};
     ExactTreeOptions eo;
     eo.augmented = rq.augmented;
@@ -349,8 +398,16 @@ DistributedOutcome distributed_tree_on(const MeshInput &whole, const TreeRequest
     d.reports.resize(static_cast<std::size_t>(ranks));
   MPI_Gather(&me, sizeof(RankReport), MPI_BYTE, d.reports.data(), sizeof(RankReport), MPI_BYTE, 0,
              comm);
-  if (rank != 0)
+  // The input's fingerprint (a pass over the whole input) by the last rank, idle by now, while
+  // rank 0 finishes the tree.
+  constexpr int kFingerprintTag = 1 << 20;
+  if (rank != 0) {
+    if (rank == ranks - 1) {
+      const uint64_t hash = mesh_fingerprint(whole).hash;
+      MPI_Send(&hash, 1, MPI_UINT64_T, 0, kFingerprintTag, comm);
+    }
     return d;
+  }
 
   // 5. Rank 0: the whole tree, finished as compute_tree finishes it.
   TreeResult tree = tree_of_pieces(trees, rq.augmented, field_scale[0]);
@@ -358,7 +415,8 @@ DistributedOutcome distributed_tree_on(const MeshInput &whole, const TreeRequest
   tree.stats.time = time;
   TreeContext context;
   context.warnings = warnings;
-  context.fingerprint = mesh_fingerprint(whole);
+  if (ranks == 1)
+    context.fingerprint = mesh_fingerprint(whole);
   context.input_cells = cells;
   context.build_times = mesh.build_times;
   context.cells_split = !whole.lagrange_triangles_only();
@@ -367,6 +425,16 @@ DistributedOutcome distributed_tree_on(const MeshInput &whole, const TreeRequest
   if (!finish.build_seconds)
     finish.build_seconds = build_seconds;
   d.outcome = finish_tree(std::move(tree), finish, context);
+  if (ranks > 1) {
+    InputFingerprint f;
+    f.points = static_cast<int64_t>(whole.points.size());
+    f.cells = cells;
+    f.field = whole.field_name;
+    MPI_Recv(&f.hash, 1, MPI_UINT64_T, ranks - 1, kFingerprintTag, comm, MPI_STATUS_IGNORE);
+    d.outcome.tree.input = f;
+    if (d.outcome.simplified)
+      d.outcome.simplified->input = f;
+  }
   return d;
 }
 

@@ -1,10 +1,13 @@
 // The exact tree over MPI: every rank of MPI_COMM_WORLD (or of a given communicator) holds the
-// whole input (each reads the file), builds the mesh of its own piece of contiguous cells
-// (mesh/mesh_partition) with the whole mesh's scales, computes its piece's kept join and split
-// trees (exact/piece_trees) and the ranks merge them in a binary reduction tree; rank 0 checks the
-// whole mesh's topology and shape meanwhile, and finishes the tree (flat regions, branches,
-// simplification) as compute_tree does. The tree is the one `hoct tree` computes without MPI, for
-// any number of ranks. Every rank must call it; errors on any rank are thrown on all.
+// whole input (each reads the file), builds and checks the mesh of its own piece of contiguous
+// cells (mesh/mesh_partition) with the whole mesh's scales; the pieces check the whole mesh
+// together (mesh/piece_surface: seams and shape; distributed/distributed_checks: duplicate
+// vertices), computes its piece's kept join and split trees (exact/piece_trees) and the ranks
+// merge them in a binary reduction tree; rank 0 finishes the tree (flat regions, branches,
+// simplification) as compute_tree does. Where the pieces find a problem, rank 0 checks the whole
+// mesh alone, so that the report is the one a run without MPI gives. The tree is the one `hoct
+// tree` computes without MPI, for any number of ranks. Every rank must call it; errors on any rank
+// are thrown on all.
 #pragma once
 
 #include "mesh/mesh_input.hpp"
@@ -31,6 +34,10 @@ struct DistributedOutcome {
   TreeOutcome outcome; // on rank 0; elsewhere an empty tree
   int rank = 0, ranks = 1;
   std::vector<RankReport> reports; // on rank 0: every rank's, by rank
+  // On rank 0: empty when the pieces checked the whole mesh together (their seams, shape and
+  // duplicate vertices); else why rank 0 checked the whole mesh alone (for the report a run
+  // without MPI gives).
+  std::string whole_check;
 };
 
 DistributedOutcome distributed_tree(const MeshInput &whole, const TreeRequest &request);

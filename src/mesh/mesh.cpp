@@ -119,7 +119,7 @@ Mesh build(const MeshInput &original, MeshInput *consumed, const MeshBuildOption
   ProblemLog split_problems;
   ProblemLog &problems = m.origins.identity() ? m.problems : split_problems;
   if (structural_ok) {
-    m.topology = Topology::build(input, problems, options.threads);
+    m.topology = Topology::build(input, problems, options.threads, options.open_points);
     step_done(times.topology);
     // The points' bounding box, once for both (a pass over every point).
     const std::array<Vec3, 2> box =

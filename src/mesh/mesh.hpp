@@ -17,6 +17,7 @@
 #include "mesh/topology.hpp"
 
 #include <optional>
+#include <span>
 #include <string>
 
 namespace hoct {
@@ -89,6 +90,9 @@ struct MeshBuildOptions {
   // own scales (empty if its input is broken), it returns the whole mesh's, which the field and
   // the geometry then use (a collective step of a distributed build).
   std::function<MeshScales(const MeshScales &)> whole_scales = {};
+  // A piece of a larger mesh: a flag per input point shared with other pieces, where the
+  // topology does not check the fans (Topology::build's open points).
+  std::span<const uint8_t> open_points = {};
 };
 
 Mesh build_mesh(const MeshInput &input, const MeshBuildOptions &options = {});

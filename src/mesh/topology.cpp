@@ -31,7 +31,8 @@ int64_t Topology::neighbor(int64_t c, int k) const {
   return cells[0] == c ? cells[1] : cells[0];
 }
 
-Topology Topology::build(const MeshInput &in, ProblemLog &problems, int threads) {
+Topology Topology::build(const MeshInput &in, ProblemLog &problems, int threads,
+                         std::span<const uint8_t> open_points) {
   Topology t;
   const int64_t nc = static_cast<int64_t>(in.num_cells());
   const int64_t np = static_cast<int64_t>(in.num_points());
@@ -310,6 +311,12 @@ Topology Topology::build(const MeshInput &in, ProblemLog &problems, int threads)
                                              " conflicting edges)");
   }
 
+  // Fans at open points are not checked (the input holds only part of them).
+  auto is_open = [&](int64_t v) {
+    const int64_t p = t.vertex_point_[v];
+    return p < static_cast<int64_t>(open_points.size()) && open_points[p] != 0;
+  };
+
   // Boundary loops: components of the boundary-edge graph; every boundary vertex of a manifold
   // has exactly two boundary edges.
   const int vertex_loop_threads = threads_for(nv, threads, 32768);
@@ -333,7 +340,7 @@ Topology Topology::build(const MeshInput &in, ProblemLog &problems, int threads)
                         if (boundary_degree[v] == 0)
                           continue;
                         roots_here += loops.find(v) == v;
-                        if (boundary_degree[v] != 2)
+                        if (boundary_degree[v] != 2 && !is_open(v))
                           pinched[b].add(Problem::NonManifoldVertex,
                                          "point " + std::to_string(t.vertex_point_[v]) +
                                              " touches " + std::to_string(boundary_degree[v]) +
@@ -387,6 +394,18 @@ Topology Topology::build(const MeshInput &in, ProblemLog &problems, int threads)
       walk(c0, (k0 + 2) % 3);
     return size;
   };
+  // An open vertex counts its corners as if they formed one fan.
+  std::vector<int64_t> open_corner_count;
+  if (walkable && !open_points.empty()) {
+    open_corner_count.assign(static_cast<std::size_t>(nv), 0);
+    parallel_for(nc, cell_threads, [&](int64_t begin, int64_t end, int) {
+      for (int64_t c = begin; c < end; ++c)
+        for (int k = 0; k < 3; ++k)
+          if (is_open(t.cell_vertices_[c][k]))
+            add_one(open_corner_count[t.cell_vertices_[c][k]]);
+    });
+  }
+  auto open_corners = [&](int64_t v) { return open_corner_count[v]; };
   int64_t fan_cells = 0;
   if (walkable) {
     std::vector<int64_t> block_cells(static_cast<std::size_t>(vblocks), 0);
@@ -394,7 +413,8 @@ Topology Topology::build(const MeshInput &in, ProblemLog &problems, int threads)
                     [&](int64_t b, int64_t begin, int64_t end, int) {
                       int64_t cells = 0;
                       for (int64_t v = begin; v < end; ++v)
-                        cells += fan_size(v, t.vertex_cell_[v], t.vertex_corner_[v]);
+                        cells += is_open(v) ? open_corners(v)
+                                            : fan_size(v, t.vertex_cell_[v], t.vertex_corner_[v]);
                       block_cells[b] = cells;
                     });
     for (int64_t n : block_cells)
@@ -409,7 +429,7 @@ Topology Topology::build(const MeshInput &in, ProblemLog &problems, int threads)
     for (int64_t v = 0; v < nv; ++v) {
       const int64_t fan = fan_size(v, t.vertex_cell_[v], t.vertex_corner_[v]);
       // More than two boundary edges: reported above as a pinch of boundary loops.
-      if (fan != corners[v] && boundary_degree[v] <= 2)
+      if (fan != corners[v] && boundary_degree[v] <= 2 && !is_open(v))
         problems.add(Problem::NonManifoldVertex,
                      "point " + std::to_string(t.vertex_point_[v]) + ": its " +
                          std::to_string(corners[v]) + " cells form more than one fan (" +

@@ -23,7 +23,11 @@ public:
   // Builds the skeleton; records non-manifold edges and vertices, repeated corners and
   // inconsistent orientation in `problems`. Cells must reference valid point indices.
   // `threads`: most passes run in parallel; the result and the report do not depend on it.
-  static Topology build(const MeshInput &input, ProblemLog &problems, int threads = 1);
+  // `open_points` (empty, or a flag per point): points where the surface may go on beyond this
+  // input (a piece's points shared with other pieces, mesh/piece_surface.hpp); their fans are
+  // not checked (no pinch, no second fan reported there), as the input holds only part of them.
+  static Topology build(const MeshInput &input, ProblemLog &problems, int threads = 1,
+                        std::span<const uint8_t> open_points = {});
 
   // This topology cut open along the interior edges e with is_cut[e] (mesh/cut_surface.hpp):
   // vertex v becomes vertices first[v] .. first[v + 1] - 1 (the copies numbered in the order of

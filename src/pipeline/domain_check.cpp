@@ -10,22 +10,31 @@ std::string name_of(const Mesh &m) { return m.source.empty() ? "the mesh" : m.so
 } // namespace
 
 std::string domain_shape(const Topology &t) {
-  const bool disk = t.euler_characteristic() == 1 && t.boundary_loops() == 1;
-  const bool sphere = t.euler_characteristic() == 2 && t.boundary_loops() == 0;
-  if (t.components() == 1 && (disk || sphere))
+  SurfaceShape s;
+  s.components = t.components();
+  s.euler_characteristic = t.euler_characteristic();
+  s.boundary_loops = t.boundary_loops();
+  s.orientable = t.orientable();
+  return domain_shape(s);
+}
+
+std::string domain_shape(const SurfaceShape &s) {
+  const bool disk = s.euler_characteristic == 1 && s.boundary_loops == 1;
+  const bool sphere = s.euler_characteristic == 2 && s.boundary_loops == 0;
+  if (s.components == 1 && (disk || sphere))
     return "";
   std::string why;
-  if (t.components() > 1)
-    why = std::to_string(t.components()) + " separate components";
-  else if (!t.orientable())
+  if (s.components > 1)
+    why = std::to_string(s.components) + " separate components";
+  else if (!s.orientable)
     why = "a non-orientable surface (like a Moebius strip)";
-  else if (t.boundary_loops() > 1)
-    why = "a surface with " + std::to_string(t.boundary_loops() - 1) + " hole(s) (" +
-          std::to_string(t.boundary_loops()) + " boundary loops, like an annulus)";
+  else if (s.boundary_loops > 1)
+    why = "a surface with " + std::to_string(s.boundary_loops - 1) + " hole(s) (" +
+          std::to_string(s.boundary_loops) + " boundary loops, like an annulus)";
   else
     why = "a surface with handles (genus > 0)";
-  return why + ": " + std::to_string(t.components()) + " component(s), Euler characteristic " +
-         std::to_string(t.euler_characteristic()) + ", " + std::to_string(t.boundary_loops()) +
+  return why + ": " + std::to_string(s.components) + " component(s), Euler characteristic " +
+         std::to_string(s.euler_characteristic) + ", " + std::to_string(s.boundary_loops) +
          " boundary loop(s)";
 }
 

@@ -7,6 +7,7 @@
 #pragma once
 
 #include "mesh/mesh.hpp"
+#include "mesh/piece_surface.hpp"
 
 #include <string>
 #include <vector>
@@ -17,6 +18,8 @@ namespace hoct {
 // components: ...", "a non-orientable surface (like a Moebius strip): ...", "a surface with 1
 // hole(s) ...", "a surface with handles ...") with its counts.
 std::string domain_shape(const Topology &t);
+// The same from a surface's counts (a distributed mesh's, mesh/piece_surface).
+std::string domain_shape(const SurfaceShape &s);
 
 // Throws hoct::Error listing the mesh's problems if any is one force cannot go past (or the mesh
 // is incomplete); with allow_forceable false, for any error-level problem.

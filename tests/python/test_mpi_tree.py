@@ -9,11 +9,15 @@ and 7 ranks (--oversubscribe: this machine has 2 cores). Also checked: what is n
 (--linear, --vtp, a domain with holes) is refused on every rank with one clear message and a
 non-zero exit, a broken file is reported as without MPI, and rank 0 alone writes the outputs.
 Bad meshes: inverted cells that a piece finds are named by the whole's cell numbers, as without
-MPI, and --force past them gives the same JSON; a crack between pieces (duplicate points) is
-found by rank 0's check of the whole mesh.
+MPI, and --force past them gives the same JSON; a crack between pieces and a slit from the border
+(duplicate points; the slit leaves a disk) are found by the pieces' duplicate check across ranks,
+and reported by rank 0's check of the whole mesh as without MPI. The pieces check a valid mesh
+together (rank 0 does not check it again), and the shape they find (a plate with 100 holes) has
+the whole mesh's counts.
 
 Skipped (exit 77) without mpirun or an MPI build of hoct."""
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -97,6 +101,23 @@ with tempdir() as d:
         r.check(p.returncode != 0 and words in p.stderr, f"{args}: refused ({p.returncode}):\n{p.stderr[-1500:]}")
     r.check(not os.path.exists(os.path.join(d, "plate.json")), "no JSON for a refused run")
 
+    # The pieces check the whole mesh together (mesh/piece_surface, distributed_checks): a valid
+    # mesh is not checked again by rank 0, and the shape they find is the whole mesh's (hoct
+    # info's counts, from one process) for any number of ranks.
+    for n in (2, 3):
+        p = mpi(n, "tree", path)
+        r.check("checks: by the pieces together" in p.stdout, f"{n} ranks: checks:\n{p.stdout}")
+    def shape(text):
+        return tuple(int(re.search(pattern, text).group(1)) for pattern in
+                     (r"Euler characteristic (-?\d+)", r"(\d+) boundary loop", r"(\d+) component"))
+
+    want_shape = shape(run("info", plate).stdout)
+    for n in (2, 3, 7):
+        p = mpi(n, "tree", plate)
+        r.check(p.returncode != 0 and "Reeb graph is not computed over MPI" in p.stderr
+                and shape(p.stderr) == want_shape,
+                f"plate, {n} ranks: the whole's shape {want_shape}:\n{p.stderr[-1500:]}")
+
     # A broken file: the same error as without MPI, from every rank's read.
     broken = os.path.join(d, "broken.vtu")
     with open(broken, "wb") as f:
@@ -130,7 +151,9 @@ with tempdir() as d:
             for k in range(len(tri) // 2, len(tri)):
                 t = list(tri[k])
                 for m, v in enumerate(t):
-                    if v // (n + 1) == mid:
+                    # crack="slit": the left half of the row only, a slit from the border
+                    # (still a disk: only the duplicate vertices tell it)
+                    if v // (n + 1) == mid and (crack is True or v % (n + 1) < n // 2):
                         if v not in copy or copy[v] is None:
                             copy[v] = len(pts)
                             pts.append(pts[v])
@@ -142,12 +165,13 @@ with tempdir() as d:
         vals = np.sin(3 * pts[:, 0]) * np.cos(2 * pts[:, 1]) + 0.1 * pts[:, 0]
         meshio.write(path, meshio.Mesh(pts, [("triangle", np.array(tri))], point_data={"f": vals}))
 
-    for name, kw in [("inverted", {"move": (9 * 13 + 6, 2.5 / 12)}), ("crack", {"crack": True})]:
+    for name, kw in [("inverted", {"move": (9 * 13 + 6, 2.5 / 12)}), ("crack", {"crack": True}),
+                     ("slit", {"crack": "slit"})]:
         path = os.path.join(d, f"{name}.vtu")
         grid_mesh(path, **kw)
         plain = run("tree", path, check=False)
         first = plain.stderr.strip().splitlines()[0] if plain.stderr.strip() else ""
-        for n in (2, 3):
+        for n in (2, 3, 7):
             p = mpi(n, "tree", path)
             r.check(plain.returncode != 0 and p.returncode != 0 and first and first in p.stderr
                     and p.stderr.count("hoct: error:") == 1,

@@ -1,0 +1,195 @@
+// The whole surface's shape glued from its pieces' summaries (mesh/piece_surface) against the
+// whole mesh's own topology: annulus, torus, Moebius strip, a plate with holes, a sphere and a
+// disk, cut into 1 to 16 pieces of contiguous cells, in the file's order and with the cells
+// shuffled (ragged pieces, whose fans at shared points come in several wedges); and surfaces
+// that are not manifold only where pieces meet.
+#include "datasets/datasets.hpp"
+#include "mesh/mesh_partition.hpp"
+#include "mesh/piece_surface.hpp"
+#include "mesh/topology.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numeric>
+#include <random>
+
+namespace hoct {
+namespace {
+
+struct Glued {
+  SurfaceShape shape;
+  ProblemLog piece_problems; // what the pieces' own topologies found
+};
+
+Glued glue(const MeshInput &whole, int pieces) {
+  const auto spans = point_piece_spans(whole, pieces);
+  std::vector<PieceSurface> summaries;
+  Glued out;
+  for (int r = 0; r < pieces; ++r) {
+    const auto [begin, end] = piece_cell_range(static_cast<int64_t>(whole.num_cells()), pieces, r);
+    if (begin == end)
+      continue;
+    const MeshPiece piece = extract_piece(whole, begin, end);
+    std::vector<uint8_t> open(piece.global_point.size());
+    for (std::size_t i = 0; i < open.size(); ++i) {
+      const auto &s = spans[static_cast<std::size_t>(piece.global_point[i])];
+      open[i] = s[0] != s[1];
+    }
+    const Topology t = Topology::build(piece.input, out.piece_problems, 1, open);
+    const PieceSurface s = summarize_piece(t, piece.global_point, open, r, 2);
+    // Through bytes, as the ranks send them.
+    summaries.push_back(decode_piece_surface(encode_piece_surface(s)));
+  }
+  std::reverse(summaries.begin(), summaries.end()); // any order
+  out.shape = glue_pieces(summaries);
+  return out;
+}
+
+// The same cells in a shuffled order.
+MeshInput shuffled(const MeshInput &in, uint64_t seed) {
+  std::vector<std::size_t> order(in.num_cells());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::mt19937_64 rng(seed);
+  std::shuffle(order.begin(), order.end(), rng);
+  MeshInput out;
+  out.points = in.points;
+  out.values = in.values;
+  for (const std::size_t c : order)
+    out.add_cell(in.cell_degree[c], &in.cell_nodes[in.cell_offsets[c]]);
+  return out;
+}
+
+MeshInput grid(int nu, int nv, bool wrap_u, bool wrap_v, bool twist) {
+  MeshInput in;
+  const int rows = wrap_v ? nv : nv + 1, cols = wrap_u ? nu : nu + 1;
+  for (int j = 0; j < rows; ++j)
+    for (int i = 0; i < cols; ++i) {
+      const double u = 2 * M_PI * i / nu, w = 2 * M_PI * j / nv;
+      if (wrap_u && wrap_v)
+        in.points.push_back({(2 + 0.7 * std::cos(w)) * std::cos(u),
+                             (2 + 0.7 * std::cos(w)) * std::sin(u), 0.7 * std::sin(w)});
+      else if (wrap_u) {
+        const double s = (j - nv / 2.0) / nv;
+        in.points.push_back({(2 + s * std::cos(u / 2)) * std::cos(u),
+                             (2 + s * std::cos(u / 2)) * std::sin(u), s * std::sin(u / 2)});
+      } else {
+        in.points.push_back({static_cast<double>(i), static_cast<double>(j), 0});
+      }
+      in.values.push_back(in.points.back()[0]);
+    }
+  auto id = [&](int i, int j) {
+    if (wrap_u && i == nu && twist)
+      return static_cast<int64_t>((nv - j) * cols);
+    return static_cast<int64_t>((j % rows) * cols + i % cols);
+  };
+  for (int j = 0; j < nv; ++j)
+    for (int i = 0; i < nu; ++i) {
+      const int64_t a = id(i, j), b = id(i + 1, j), c = id(i + 1, j + 1), d = id(i, j + 1);
+      const int64_t t1[3] = {a, b, c}, t2[3] = {a, c, d};
+      in.add_cell(1, t1);
+      in.add_cell(1, t2);
+    }
+  return in;
+}
+
+// The square grid without the squares in [lo, hi)^2: an annulus.
+MeshInput holed_grid(int n, int lo, int hi) {
+  MeshInput g = grid(n, n, false, false, false), out;
+  out.points = g.points;
+  out.values = g.values;
+  for (std::size_t c = 0; c < g.num_cells(); ++c) {
+    const int square = static_cast<int>(c / 2), i = square % n, j = square / n;
+    if (i >= lo && i < hi && j >= lo && j < hi)
+      continue;
+    out.add_cell(1, &g.cell_nodes[g.cell_offsets[c]]);
+  }
+  return out;
+}
+
+TEST(PieceSurface, GluedShapeIsTheWholeMeshs) {
+  DatasetOptions plate;
+  plate.cells = 3000;
+  plate.degree = 2;
+  DatasetOptions small;
+  small.cells = 2000;
+  const std::vector<std::pair<std::string, MeshInput>> meshes = {
+      {"disk", grid(10, 7, false, false, false)},    {"annulus", holed_grid(9, 3, 6)},
+      {"torus", grid(12, 8, true, true, false)},     {"moebius", grid(16, 3, true, false, true)},
+      {"cylinder", grid(16, 3, true, false, false)}, {"plate", generate_dataset("plate", plate)},
+      {"sphere", generate_dataset("sphere", small)}, {"random", generate_dataset("random", small)}};
+  for (const auto &[name, in] : meshes)
+    for (const bool shuffle : {false, true}) {
+      const MeshInput whole = shuffle ? shuffled(in, 7) : in;
+      ProblemLog problems;
+      const Topology t = Topology::build(whole, problems);
+      ASSERT_FALSE(problems.has_errors()) << name;
+      for (const int pieces : {1, 2, 3, 4, 7, 16}) {
+        const std::string what =
+            name + (shuffle ? " shuffled" : "") + ", " + std::to_string(pieces) + " pieces";
+        const Glued g = glue(whole, pieces);
+        EXPECT_FALSE(g.piece_problems.has_errors()) << what << "\n" << g.piece_problems.summary();
+        EXPECT_EQ(g.shape.seam_problem, "") << what;
+        EXPECT_EQ(g.shape.components, t.components()) << what;
+        EXPECT_EQ(g.shape.euler_characteristic, t.euler_characteristic()) << what;
+        EXPECT_EQ(g.shape.boundary_loops, t.boundary_loops()) << what;
+        EXPECT_EQ(g.shape.orientable, t.orientable()) << what;
+      }
+    }
+}
+
+// Two separate disks and a disk made of two parts touching at one vertex only: the glue counts
+// the components, and names the vertex where the pieces' fans do not close into one.
+TEST(PieceSurface, PartsTouchingWhereThePiecesMeet) {
+  MeshInput bowtie;
+  bowtie.points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {-1, 0, 0}, {0, -1, 0}, {2, 2, 0}};
+  bowtie.values.assign(bowtie.points.size(), 0);
+  const int64_t a[3] = {0, 1, 2}, b[3] = {0, 3, 4}, c[3] = {1, 5, 2};
+  bowtie.add_cell(1, a);
+  bowtie.add_cell(1, c);
+  bowtie.add_cell(1, b); // the second part, at point 0 only
+  ProblemLog whole_problems;
+  Topology::build(bowtie, whole_problems);
+  ASSERT_GT(whole_problems.count(Problem::NonManifoldVertex), 0);
+  for (const int pieces : {2, 3}) {
+    const Glued g = glue(bowtie, pieces);
+    EXPECT_FALSE(g.piece_problems.has_errors()) << pieces; // each piece alone is fine
+    EXPECT_NE(g.shape.seam_problem.find("at point 0 form 2 fans"), std::string::npos)
+        << pieces << ": " << g.shape.seam_problem;
+  }
+  // Three triangles on one edge, one per piece.
+  MeshInput book;
+  book.points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}};
+  book.values.assign(book.points.size(), 0);
+  const int64_t p1[3] = {0, 1, 2}, p2[3] = {1, 0, 3}, p3[3] = {0, 1, 4};
+  book.add_cell(1, p1);
+  book.add_cell(1, p2);
+  book.add_cell(1, p3);
+  const Glued g = glue(book, 3);
+  EXPECT_FALSE(g.piece_problems.has_errors());
+  EXPECT_NE(g.shape.seam_problem.find("shared by 3 cells"), std::string::npos)
+      << g.shape.seam_problem;
+  // Two disks apart: two components, two loops.
+  MeshInput two = grid(4, 4, false, false, false);
+  const MeshInput other = two;
+  const int64_t base = static_cast<int64_t>(two.points.size());
+  for (const Vec3 &p : other.points)
+    two.points.push_back({p[0] + 10, p[1], p[2]});
+  two.values.insert(two.values.end(), other.values.begin(), other.values.end());
+  for (std::size_t cell = 0; cell < other.num_cells(); ++cell) {
+    int64_t n[3];
+    for (int k = 0; k < 3; ++k)
+      n[k] = other.cell_nodes[other.cell_offsets[cell] + k] + base;
+    two.add_cell(1, n);
+  }
+  for (const int pieces : {1, 2, 3, 5}) {
+    const Glued h = glue(shuffled(two, 3), pieces);
+    EXPECT_EQ(h.shape.components, 2) << pieces;
+    EXPECT_EQ(h.shape.boundary_loops, 2) << pieces;
+    EXPECT_EQ(h.shape.euler_characteristic, 2) << pieces;
+    EXPECT_EQ(h.shape.seam_problem, "") << pieces;
+  }
+}
+
+} // namespace
+} // namespace hoct
