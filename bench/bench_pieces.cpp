@@ -56,7 +56,9 @@ void pieces_section(const std::vector<double> &sizes, int runs) {
         const Mesh mesh = build_mesh(piece.input, bo);
         build += seconds_since(t0);
         const auto t1 = clock_type::now();
-        const PiecePlace place{r, piece.global_point, begin, triangles_before(whole, begin), spans};
+        const auto piece_spans = piece_point_spans(piece.global_point, spans);
+        const PiecePlace place{r, piece.global_point, begin, triangles_before(whole, begin),
+                               piece_spans};
         ExactTreeOptions eo;
         TreeTimings time;
         PieceTrees t = piece_trees(mesh, place, eo, time);

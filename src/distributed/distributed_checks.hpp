@@ -16,13 +16,14 @@ namespace hoct {
 // which gets the whole surface's shape (the other ranks an empty one).
 SurfaceShape gather_surface(MPI_Comm comm, const PieceSurface *own);
 
-// Collective: whether any two vertices of different ids, on any ranks, lie within `tolerance`
-// (Euclidean) of each other (the whole mesh's duplicate vertices: mesh_checks), the same answer
-// on every rank. Each rank sends its vertices to the ranks owning the grid cells (of 64
+// Collective: whether any two vertices of different ids on different ranks lie within
+// `tolerance` (Euclidean) of each other, the same answer on every rank (each rank checks its own
+// vertices among themselves: mesh_checks). A coarse grid over `box` (the whole's bounding box)
+// first tells which regions hold vertices of several ranks (one sum of occupancy counts over
+// the ranks); only the vertices there are sent, to the ranks owning the fine grid cells (of 64
 // tolerances) their tolerance box meets, which compare what they receive.
-// `origin`: a corner of the whole's bounding box (the grid's origin).
 bool duplicate_vertices_across(MPI_Comm comm, std::span<const Vec3> positions,
-                               std::span<const int64_t> ids, double tolerance, const Vec3 &origin,
-                               int threads = 1);
+                               std::span<const int64_t> ids, double tolerance,
+                               const std::array<Vec3, 2> &box, int threads = 1);
 
 } // namespace hoct

@@ -14,6 +14,7 @@
 #include "util/error.hpp"
 #include "util/parallel_for.hpp"
 #include "util/stopwatch.hpp"
+#include "util/uninitialized_vector.hpp"
 
 #include <mpi.h>
 #include <sys/resource.h>
@@ -238,14 +239,12 @@ DistributedOutcome distributed_tree_on(const MeshInput &whole, const TreeRequest
   const auto [begin, end] = piece_cell_range(cells, ranks, rank);
   RankReport me;
   me.cells = end - begin;
-  const MeshPiece piece = extract_piece(whole, begin, end);
+  MeshPiece piece = partition_piece(whole, ranks, rank);
   // The piece's points other pieces use too: its fans there are checked with theirs.
-  const auto spans = point_piece_spans(whole, ranks);
-  std::vector<uint8_t> open(piece.global_point.size());
-  for (std::size_t i = 0; i < open.size(); ++i) {
-    const auto &s = spans[static_cast<std::size_t>(piece.global_point[i])];
-    open[i] = s[0] != s[1];
-  }
+  const std::vector<std::array<int32_t, 2>> spans = std::move(piece.point_span);
+  std::vector<uint8_t> open(spans.size());
+  for (std::size_t i = 0; i < open.size(); ++i)
+    open[i] = spans[i][0] != spans[i][1];
   MeshScales scales;
   MeshBuildOptions bo;
   bo.throw_on_error = false;
@@ -283,10 +282,11 @@ DistributedOutcome distributed_tree_on(const MeshInput &whole, const TreeRequest
   if (complete) {
     const Topology &topo = mesh.topology;
     PieceSurface own;
-    std::vector<Vec3> positions;
-    std::vector<int64_t> ids;
-    if (!empty_piece) {
+    UninitializedVector<Vec3> positions;
+    UninitializedVector<int64_t> ids;
+    if (!empty_piece)
       own = summarize_piece(topo, piece.global_point, open, rank, threads);
+    if (!empty_piece && ranks > 1) { // one rank: its own duplicate check was the whole's
       positions.resize(static_cast<std::size_t>(topo.num_vertices()));
       ids.resize(positions.size());
       for (int64_t v = 0; v < topo.num_vertices(); ++v) {
@@ -298,7 +298,7 @@ DistributedOutcome distributed_tree_on(const MeshInput &whole, const TreeRequest
     surface = gather_surface(comm, empty_piece ? nullptr : &own);
     const auto &[lo, hi] = scales.box;
     const double tolerance = 1e-10 * std::hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]);
-    if (duplicate_vertices_across(comm, positions, ids, tolerance, lo, threads) &&
+    if (duplicate_vertices_across(comm, positions, ids, tolerance, scales.box, threads) &&
         d.whole_check.empty())
       d.whole_check = "vertices of different ids at the same position";
     if (!surface.seam_problem.empty() && d.whole_check.empty())

@@ -72,19 +72,29 @@ public:
             tail_index_[t]};
   }
 
-  std::array<int32_t, 2> span(const NodeKey &k) const {
-    switch (k.kind) {
-    case NodeKey::Vertex:
-      return place_.point_span[k.a];
-    case NodeKey::EdgeNode:
-    case NodeKey::EdgeLattice: {
-      // The pieces of the edge's cells hold both its ends: within both ends' spans.
-      const auto &sa = place_.point_span[k.a], &sb = place_.point_span[k.b];
-      return {std::max(sa[0], sb[0]), std::min(sa[1], sb[1])};
+  // The pieces that may hold node `id`: its vertex's, its edge's (vertex and edge nodes, lattice
+  // nodes on edges), or this piece alone.
+  std::array<int32_t, 2> span(int64_t id) const {
+    const ExactGraph &g = b_.graph;
+    if (id < g.edge_base)
+      return place_.point_span[mesh_.topology.vertex_point(id)];
+    if (id < g.tail_base) {
+      const auto &off = b_.edge_nodes.offset;
+      return edge_span(std::upper_bound(off.begin(), off.end(), id - g.edge_base) - off.begin() -
+                       1);
     }
-    default:
-      return {place_.piece, place_.piece};
-    }
+    if (auto it = lattice_.find(id); it != lattice_.end())
+      return edge_span(it->second.first);
+    return {place_.piece, place_.piece};
+  }
+
+  // The pieces of an edge's cells hold both its ends: within both ends' spans.
+  std::array<int32_t, 2> edge_span(int64_t e) const {
+    const Topology &topo = mesh_.topology;
+    const auto &ev = topo.edge_vertices(e);
+    const auto &sa = place_.point_span[topo.vertex_point(ev[0])],
+               &sb = place_.point_span[topo.vertex_point(ev[1])];
+    return {std::max(sa[0], sb[0]), std::min(sa[1], sb[1])};
   }
 
 private:
@@ -128,19 +138,14 @@ PieceTrees piece_trees(const Mesh &mesh, const PiecePlace &place, const ExactTre
   std::vector<uint8_t> keep(static_cast<std::size_t>(n), eo.augmented ? 1 : 0);
   if (!eo.augmented)
     for (int64_t id = 0; id < g.tail_base; ++id)
-      keep[id] = !within(keys.span(keys.key(id)), place.piece, place.piece);
+      keep[id] = !within(keys.span(id), place.piece, place.piece);
   for (const auto &[e, t, id] : b.degenerate.lattice_on_edge)
-    keep[id] = eo.augmented || !within(keys.span(keys.key(id)), place.piece, place.piece);
+    keep[id] = eo.augmented || !within(keys.span(id), place.piece, place.piece);
   // The chains of edges other pieces may hold wait for the group that has all their cells
   // (SharedChain): left out of this sweep, listed ones (with lattice nodes) too.
   const Topology &topo = mesh.topology;
   const EdgeNodes &en = b.edge_nodes;
-  auto edge_span = [&](int64_t e) {
-    const auto &ev = topo.edge_vertices(e);
-    const NodeKey k{NodeKey::EdgeNode, place.global_point[topo.vertex_point(ev[0])],
-                    place.global_point[topo.vertex_point(ev[1])], 0};
-    return keys.span(k);
-  };
+  auto edge_span = [&](int64_t e) { return keys.edge_span(e); };
   std::vector<uint8_t> shared_edge(static_cast<std::size_t>(topo.num_edges()), 0);
   for (int64_t e = 0; e < topo.num_edges(); ++e)
     shared_edge[e] = !within(edge_span(e), place.piece, place.piece);
@@ -198,7 +203,7 @@ PieceTrees piece_trees(const Mesh &mesh, const PiecePlace &place, const ExactTre
     PieceNode &p = out.nodes[i];
     p.key = keys.key(id);
     p.value = g.values[id];
-    p.span = keys.span(p.key);
+    p.span = keys.span(id);
     const NodeSource s = g.source(mesh.topology, b.edge_nodes, id);
     p.order_cell = place.first_triangle + s.cell;
     p.position = mesh.geometry.position(s.cell, s.uv[0], s.uv[1]);

@@ -76,12 +76,13 @@ struct PieceTrees {
 };
 
 // Where a piece sits in the whole: the whole's index of each of its points, of its first
-// input cell and of its first triangle, and each whole point's piece span.
+// input cell and of its first triangle, and each of its points' piece span (the lowest and
+// highest piece whose cells use it).
 struct PiecePlace {
   int32_t piece = 0;
   std::span<const int64_t> global_point;
   int64_t first_cell = 0, first_triangle = 0;
-  std::span<const std::array<int32_t, 2>> point_span; // per point of the whole
+  std::span<const std::array<int32_t, 2>> point_span; // per point of the piece
 };
 
 // One piece's kept trees (its mesh built with the whole's scales: MeshBuildOptions::whole_scales;

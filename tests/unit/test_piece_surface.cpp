@@ -191,5 +191,27 @@ TEST(PieceSurface, PartsTouchingWhereThePiecesMeet) {
   }
 }
 
+// partition_piece(whole, pieces, piece) gives each of its points the span point_piece_spans gives
+// it, for large pieces (a scan of the whole's points) and small ones (a sort of the piece's).
+TEST(PieceSurface, PartitionedPiecesSpansAreTheWholeMeshs) {
+  DatasetOptions o;
+  o.cells = 3000;
+  o.degree = 2;
+  const MeshInput whole = shuffled(generate_dataset("random", o), 5);
+  for (const int pieces : {1, 2, 3, 7, 16, 64}) {
+    const auto spans = point_piece_spans(whole, pieces);
+    for (int r = 0; r < pieces; ++r) {
+      const MeshPiece piece = partition_piece(whole, pieces, r);
+      const auto [begin, end] =
+          piece_cell_range(static_cast<int64_t>(whole.num_cells()), pieces, r);
+      const MeshPiece plain = extract_piece(whole, begin, end);
+      ASSERT_EQ(piece.global_point, plain.global_point) << pieces << " " << r;
+      EXPECT_EQ(piece.input.cell_nodes, plain.input.cell_nodes) << pieces << " " << r;
+      EXPECT_EQ(piece.point_span, piece_point_spans(piece.global_point, spans))
+          << pieces << " pieces, piece " << r;
+    }
+  }
+}
+
 } // namespace
 } // namespace hoct

@@ -34,7 +34,8 @@ TreeResult tree_by_pieces(const MeshInput &whole, int pieces, const MeshScales &
     bo.whole_scales = [&](const MeshScales &) { return scales; };
     const Mesh mesh = build_mesh(piece.input, bo);
     reference = mesh.field.reference();
-    PiecePlace place{r, piece.global_point, begin, triangles_before(whole, begin), spans};
+    const auto piece_spans = piece_point_spans(piece.global_point, spans);
+    PiecePlace place{r, piece.global_point, begin, triangles_before(whole, begin), piece_spans};
     ExactTreeOptions eo;
     eo.augmented = augmented;
     eo.threads = 1;
@@ -156,7 +157,8 @@ TEST(PieceTrees, BytesThatAreNotPieceTreesAreRefused) {
   const Mesh mesh = build_mesh(piece.input, {.throw_on_error = false});
   TreeTimings time;
   const auto bytes = encode_piece_trees(
-      piece_trees(mesh, {0, piece.global_point, 0, 0, spans}, ExactTreeOptions{}, time));
+      piece_trees(mesh, {0, piece.global_point, 0, 0, piece_point_spans(piece.global_point, spans)},
+                  ExactTreeOptions{}, time));
   EXPECT_NO_THROW(decode_piece_trees(bytes));
   EXPECT_THROW(decode_piece_trees(std::span(bytes).first(bytes.size() - 1)), std::runtime_error);
   auto bad = bytes;
