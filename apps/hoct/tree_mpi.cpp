@@ -13,6 +13,7 @@
 #include "util/stopwatch.hpp"
 
 #ifdef HOCT_WITH_MPI
+#include "distributed/distributed_read.hpp"
 #include "distributed/distributed_tree.hpp"
 #include "distributed/mpi_session.hpp"
 
@@ -32,6 +33,8 @@ bool under_mpi() { return launched_by_mpi(); }
 namespace {
 // `collectives_done` is set once this rank takes part in no more collective step.
 void run_ranks(const DistributedTreeRun &run, TreeRequest rq, bool root, bool &collectives_done);
+void report(const DistributedTreeRun &run, const DistributedOutcome &d,
+            const std::string &field_name, int64_t cells, const Stopwatch &total, int threads);
 } // namespace
 
 void run_tree_mpi(const DistributedTreeRun &run, TreeRequest rq) {
@@ -63,12 +66,47 @@ void run_ranks(const DistributedTreeRun &run, TreeRequest rq, bool root, bool &c
     rq.threads = 1;
   ReadLimits limits = read_limits();
   limits.threads = thread_count(rq.threads);
+  if (run.vtp_asked)
+    agree_on_failure("--vtp: over MPI the arcs' paths are not drawn yet (they need the whole "
+                     "graph); use --json or --svg, or run hoct without mpirun");
+  // A partitioned file: each rank reads its own pieces, where the ranks can join them alone.
+  const bool partitioned =
+      std::filesystem::path(run.file).extension() == ".pvtu" && run.merge_tolerance < 0;
+  if (partitioned) {
+    RankRead read;
+    try {
+      read = read_pvtu_by_ranks(run.file, run.field, limits, MPI_COMM_WORLD);
+    } catch (const std::exception &e) { // MPI's own limits (2 GiB a step): this rank's alone
+      throw Error(run.file + ": " + e.what());
+    }
+    if (read.input) {
+      std::string failure;
+      try {
+        if (resample_gll_cells(read.input->piece.input).cells > 0)
+          failure = run.file + ": cells with nodes at Gauss-Lobatto-Legendre points (DOLFINx, "
+                               "degree >= 3) are not read over MPI yet (run hoct without mpirun)";
+      } catch (const std::exception &e) {
+        failure = e.what();
+      }
+      agree_on_failure(failure);
+      const std::string field_name = read.input->field_name;
+      const int64_t cells = read.input->whole_cells;
+      rq.read_seconds = total.seconds();
+      const DistributedOutcome d = distributed_tree(std::move(*read.input), rq, MPI_COMM_WORLD);
+      collectives_done = true;
+      if (root)
+        report(run, d, field_name, cells, total, thread_count(rq.threads));
+      return;
+    }
+    if (root && !run.quiet)
+      std::fprintf(stderr,
+                   "hoct: note: every rank reads the whole of %s (%s: the ranks could not join "
+                   "its pieces alone)\n",
+                   run.file.c_str(), read.fallback.c_str());
+  }
   MeshInput input;
   std::string failure; // every rank checks and reads alike: its errors are everyone's
   try {
-    if (run.vtp_asked)
-      throw Error("--vtp: over MPI the arcs' paths are not drawn yet (they need the whole graph); "
-                  "use --json or --svg, or run hoct without mpirun");
     input = read_mesh(run.file, run.field, limits);
     if (run.merge_tolerance >= 0)
       merge_duplicate_points(input, run.merge_tolerance, limits.threads);
@@ -85,23 +123,28 @@ void run_ranks(const DistributedTreeRun &run, TreeRequest rq, bool root, bool &c
   rq.read_seconds = total.seconds();
   const DistributedOutcome d = distributed_tree(input, rq);
   collectives_done = true; // from here on, errors are rank 0's, reported as without MPI
-  if (!root)
-    return;
+  if (root)
+    report(run, d, input.field_name, static_cast<int64_t>(input.num_cells()), total,
+           thread_count(rq.threads));
+}
+
+// Rank 0: the outputs and the summary.
+void report(const DistributedTreeRun &run, const DistributedOutcome &d,
+            const std::string &field_name, int64_t cells, const Stopwatch &total, int threads) {
   const TreeResult &tree = d.outcome.reported();
   for (const auto &why : d.outcome.warnings)
     std::fprintf(stderr, "hoct: warning: --force: %s\n", why.c_str());
   if (!run.svg.empty() && tree.branches.empty())
     throw Error("--svg draws the reduced tree (drop --augmented)");
   if (!run.json.empty())
-    write_tree_json(run.json, tree, /*timings=*/!run.no_timings, thread_count(rq.threads));
+    write_tree_json(run.json, tree, /*timings=*/!run.no_timings, threads);
   if (!run.svg.empty())
     write_tree_svg(run.svg, tree,
                    std::filesystem::path(run.file).filename().string() + ": " + tree.method +
                        " contour tree, " + std::to_string(tree.nodes.size()) + " nodes");
   if (!run.quiet) {
     std::printf("%s: field '%s', %lld cells, exact contour tree over %d MPI ranks\n",
-                run.file.c_str(), input.field_name.c_str(),
-                static_cast<long long>(input.num_cells()), d.ranks);
+                run.file.c_str(), field_name.c_str(), static_cast<long long>(cells), d.ranks);
     print_tree_body(tree, total.seconds());
     if (d.whole_check.empty())
       std::printf("  checks: by the pieces together (seams, shape, duplicate vertices)\n");

@@ -205,19 +205,35 @@ private:
   MPI_Comm comm_ = MPI_COMM_NULL;
 };
 
-DistributedOutcome distributed_tree_on(const MeshInput &whole, const TreeRequest &rq,
+DistributedOutcome distributed_tree_on(RankInput in, const MeshInput *whole, const TreeRequest &rq,
                                        MPI_Comm comm);
 
 } // namespace
 
 DistributedOutcome distributed_tree(const MeshInput &whole, const TreeRequest &rq, MPI_Comm comm) {
   const OwnComm own(comm);
-  return distributed_tree_on(whole, rq, own.get());
+  int rank = 0, ranks = 1;
+  MPI_Comm_rank(own.get(), &rank);
+  MPI_Comm_size(own.get(), &ranks);
+  RankInput in;
+  in.piece = partition_piece(whole, ranks, rank);
+  in.first_triangle = triangles_before(whole, in.piece.first_cell);
+  in.whole_cells = static_cast<int64_t>(whole.num_cells());
+  in.whole_points = static_cast<int64_t>(whole.num_points());
+  in.cells_split = !whole.lagrange_triangles_only();
+  in.source = whole.source;
+  in.field_name = whole.field_name;
+  return distributed_tree_on(std::move(in), &whole, rq, own.get());
+}
+
+DistributedOutcome distributed_tree(RankInput in, const TreeRequest &rq, MPI_Comm comm) {
+  const OwnComm own(comm);
+  return distributed_tree_on(std::move(in), nullptr, rq, own.get());
 }
 
 namespace {
 
-DistributedOutcome distributed_tree_on(const MeshInput &whole, const TreeRequest &rq,
+DistributedOutcome distributed_tree_on(RankInput in, const MeshInput *whole, const TreeRequest &rq,
                                        MPI_Comm comm) {
   DistributedOutcome d;
   MPI_Comm_rank(comm, &d.rank);
@@ -235,11 +251,11 @@ DistributedOutcome distributed_tree_on(const MeshInput &whole, const TreeRequest
   Stopwatch clock;
 
   // 1. This rank's piece, built with the whole mesh's scales.
-  const int64_t cells = static_cast<int64_t>(whole.num_cells());
-  const auto [begin, end] = piece_cell_range(cells, ranks, rank);
+  const int64_t cells = in.whole_cells;
+  MeshPiece &piece = in.piece;
+  const int64_t begin = piece.first_cell;
   RankReport me;
-  me.cells = end - begin;
-  MeshPiece piece = partition_piece(whole, ranks, rank);
+  me.cells = static_cast<int64_t>(piece.input.num_cells());
   // The piece's points other pieces use too: its fans there are checked with theirs.
   const std::vector<std::array<int32_t, 2>> spans = std::move(piece.point_span);
   std::vector<uint8_t> open(spans.size());
@@ -309,7 +325,7 @@ DistributedOutcome distributed_tree_on(const MeshInput &whole, const TreeRequest
   if (rank == 0) {
     try {
       Mesh checked;
-      checked.source = whole.source;
+      checked.source = in.source;
       checked.complete = complete != 0;
       if (cells == 0) {
         checked.problems.add(Problem::EmptyMesh, "the mesh has no cells");
@@ -321,12 +337,16 @@ DistributedOutcome distributed_tree_on(const MeshInput &whole, const TreeRequest
       if (checked.complete && d.whole_check.empty()) {
         shape = domain_shape(surface);
       } else if (checked.complete) {
+        MeshInput loaded;
+        if (!whole)
+          loaded = in.read_whole();
+        const MeshInput &all = whole ? *whole : loaded;
         ProblemLog topology_problems;
         SplitCells split;
-        const MeshInput *triangles = &whole;
-        if (!whole.lagrange_triangles_only()) {
+        const MeshInput *triangles = &all;
+        if (!all.lagrange_triangles_only()) {
           ProblemLog ignored; // the pieces report the split's own problems
-          split = split_cells(whole, ignored, threads);
+          split = split_cells(all, ignored, threads);
           triangles = &split.mesh;
         }
         const Topology topo = Topology::build(*triangles, topology_problems, threads);
@@ -337,8 +357,7 @@ DistributedOutcome distributed_tree_on(const MeshInput &whole, const TreeRequest
       }
       warnings = check_domain(checked, rq.force);
       if (!shape.empty())
-        throw Error((whole.source.empty() ? std::string("the mesh") : whole.source) + " is " +
-                    shape +
+        throw Error((in.source.empty() ? std::string("the mesh") : in.source) + " is " + shape +
                     ": its Reeb graph is not computed over MPI yet (run hoct without "
                     "mpirun)");
     } catch (const std::exception &e) {
@@ -357,7 +376,7 @@ DistributedOutcome distributed_tree_on(const MeshInput &whole, const TreeRequest
   PieceTrees trees;
   TreeTimings time;
   try {
-    const PiecePlace place{rank, piece.global_point, begin, triangles_before(whole, begin), spans};
+    const PiecePlace place{rank, piece.global_point, begin, in.first_triangle, spans};
     ExactTreeOptions eo;
     eo.augmented = rq.augmented;
     eo.threads = threads;
@@ -402,8 +421,8 @@ DistributedOutcome distributed_tree_on(const MeshInput &whole, const TreeRequest
   // rank 0 finishes the tree.
   constexpr int kFingerprintTag = 1 << 20;
   if (rank != 0) {
-    if (rank == ranks - 1) {
-      const uint64_t hash = mesh_fingerprint(whole).hash;
+    if (rank == ranks - 1 && whole) {
+      const uint64_t hash = mesh_fingerprint(*whole).hash;
       MPI_Send(&hash, 1, MPI_UINT64_T, 0, kFingerprintTag, comm);
     }
     return d;
@@ -415,21 +434,23 @@ DistributedOutcome distributed_tree_on(const MeshInput &whole, const TreeRequest
   tree.stats.time = time;
   TreeContext context;
   context.warnings = warnings;
-  if (ranks == 1)
-    context.fingerprint = mesh_fingerprint(whole);
+  if (!whole)
+    context.fingerprint = in.fingerprint;
+  else if (ranks == 1)
+    context.fingerprint = mesh_fingerprint(*whole);
   context.input_cells = cells;
   context.build_times = mesh.build_times;
-  context.cells_split = !whole.lagrange_triangles_only();
+  context.cells_split = in.cells_split;
   context.precision = field_scale[1];
   TreeRequest finish = rq;
   if (!finish.build_seconds)
     finish.build_seconds = build_seconds;
   d.outcome = finish_tree(std::move(tree), finish, context);
-  if (ranks > 1) {
+  if (ranks > 1 && whole) {
     InputFingerprint f;
-    f.points = static_cast<int64_t>(whole.points.size());
+    f.points = in.whole_points;
     f.cells = cells;
-    f.field = whole.field_name;
+    f.field = in.field_name;
     MPI_Recv(&f.hash, 1, MPI_UINT64_T, ranks - 1, kFingerprintTag, comm, MPI_STATUS_IGNORE);
     d.outcome.tree.input = f;
     if (d.outcome.simplified)

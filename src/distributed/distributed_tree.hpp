@@ -11,12 +11,16 @@
 #pragma once
 
 #include "mesh/mesh_input.hpp"
+#include "mesh/mesh_partition.hpp"
 #include "pipeline/tree_request.hpp"
 #include "util/error.hpp"
 
 #include <mpi.h>
 
 #include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
 #include <vector>
 
 namespace hoct {
@@ -40,11 +44,27 @@ struct DistributedOutcome {
   std::string whole_check;
 };
 
+// One rank's share of a mesh no rank holds whole (a partitioned file each rank reads its pieces
+// of: distributed/distributed_read): its input cells, a contiguous range of the whole's, and the
+// points they use, numbered as the whole numbers them.
+struct RankInput {
+  MeshPiece piece;            // with its points' spans over the ranks (MeshPiece::point_span)
+  int64_t first_triangle = 0; // the whole's triangles before its first cell (mesh_partition)
+  int64_t whole_cells = 0, whole_points = 0;
+  bool cells_split = false; // the whole has cells other than Lagrange triangles
+  std::string source, field_name;
+  std::optional<InputFingerprint> fingerprint; // the whole's, on rank 0
+  // Rank 0's way to the whole mesh, for the report of a mesh the pieces found a problem in.
+  std::function<MeshInput()> read_whole;
+};
+
 DistributedOutcome distributed_tree(const MeshInput &whole, const TreeRequest &request);
 // The same over the ranks of `comm` (every one of them must call it; rank 0 of `comm` gets the
 // tree). The library works on its own duplicate of `comm`: no message of the caller's is seen.
 DistributedOutcome distributed_tree(const MeshInput &whole, const TreeRequest &request,
                                     MPI_Comm comm);
+// The same from each rank's share alone.
+DistributedOutcome distributed_tree(RankInput input, const TreeRequest &request, MPI_Comm comm);
 
 // An error every rank throws together (at one collective step), with the message of the lowest
 // rank that failed: each rank may then end normally (rank 0 reports it). Any other exception is

@@ -25,15 +25,17 @@ std::string position(const Vec3 &p) {
 
 } // namespace
 
-MeshInput join_pieces(std::vector<FilePiece> pieces, const std::string &where, bool by_ids,
-                      int threads) {
+PieceParts concatenate_pieces(std::vector<FilePiece> &pieces, const std::string &where,
+                              bool by_ids) {
   auto fail = [&](const std::string &what) { throw InputError(where + ": " + what); };
-  MeshInput out;
+  PieceParts parts;
+  MeshInput &out = parts.mesh;
   out.source = where;
   out.cell_offsets.assign(1, 0);
   std::string field_file;
-  bool ids = by_ids;
-  std::size_t filled = 0; // pieces that are not empty
+  bool &ids = parts.ids;
+  ids = by_ids;
+  std::size_t &filled = parts.filled; // pieces that are not empty
   for (const FilePiece &p : pieces) {
     if (p.input.num_cells() == 0 && p.input.points.empty())
       continue;
@@ -47,11 +49,9 @@ MeshInput join_pieces(std::vector<FilePiece> pieces, const std::string &where, b
            out.field_name + "' (name the field with --scalar)");
     }
   }
-  if (filled == 0)
-    fail("every piece is empty (no points, no cells)");
   // The kept cells and points, piece after piece.
-  std::vector<uint32_t> piece_of; // each point's piece
-  std::vector<int64_t> global;    // each point's global id (when merging by ids)
+  std::vector<uint32_t> &piece_of = parts.piece_of; // each point's piece
+  std::vector<int64_t> &global = parts.global;      // each point's global id (when merging by ids)
   for (std::size_t k = 0; k < pieces.size(); ++k) {
     MeshInput &in = pieces[k].input;
     const VtuPieceArrays &a = pieces[k].arrays;
@@ -96,6 +96,20 @@ MeshInput join_pieces(std::vector<FilePiece> pieces, const std::string &where, b
     }
     in = MeshInput(); // released before the next piece is appended
   }
+  return parts;
+}
+
+MeshInput join_pieces(std::vector<FilePiece> pieces, const std::string &where, bool by_ids,
+                      int threads) {
+  auto fail = [&](const std::string &what) { throw InputError(where + ": " + what); };
+  PieceParts parts = concatenate_pieces(pieces, where, by_ids);
+  if (parts.filled == 0)
+    fail("every piece is empty (no points, no cells)");
+  MeshInput &out = parts.mesh;
+  const bool ids = parts.ids;
+  const std::size_t filled = parts.filled;
+  const std::vector<uint32_t> &piece_of = parts.piece_of;
+  const std::vector<int64_t> &global = parts.global;
   if (out.num_cells() == 0)
     fail("no cells but ghost cells in any piece");
   // Each point's representative: itself, or the first point of another piece it is merged with.
@@ -170,7 +184,7 @@ MeshInput join_pieces(std::vector<FilePiece> pieces, const std::string &where, b
   out.values.resize(kept);
   for (int64_t &id : out.cell_nodes)
     id = index[static_cast<std::size_t>(id)];
-  return out;
+  return std::move(out);
 }
 
 } // namespace hoct

@@ -28,4 +28,17 @@ struct FilePiece {
 MeshInput join_pieces(std::vector<FilePiece> pieces, const std::string &where, bool by_ids,
                       int threads = 1);
 
+// The first half of join_pieces: each piece's kept cells and points (ghosts dropped), piece
+// after piece, not merged (each piece consumed). For a distributed join of some of the pieces
+// (distributed/distributed_read).
+struct PieceParts {
+  MeshInput mesh;                 // the kept points in piece order, the cells referring to them
+  std::vector<uint32_t> piece_of; // each point's piece (index into the pieces given)
+  std::vector<int64_t> global;    // each point's global id, when merging by ids
+  bool ids = false;               // by_ids and every non-empty piece has ids
+  std::size_t filled = 0;         // pieces that are not empty
+};
+PieceParts concatenate_pieces(std::vector<FilePiece> &pieces, const std::string &where,
+                              bool by_ids);
+
 } // namespace hoct

@@ -15,8 +15,7 @@ namespace hoct {
 
 namespace fs = std::filesystem;
 
-MeshInput read_pvtu(const std::string &path, const FieldSelection &field,
-                    const ReadLimits &limits) {
+PvtuListing list_pvtu(const std::string &path, const FieldSelection &field) {
   if (!field.default_step())
     throw InputError(path + ": --step / --time: a .pvtu file holds one time step (a .pvd "
                             "collection lists several)");
@@ -49,21 +48,34 @@ MeshInput read_pvtu(const std::string &path, const FieldSelection &field,
   if (files.empty())
     throw InputError(path + ": no <Piece> in <PUnstructuredGrid>: the partitioned grid lists no "
                             "piece files");
-  std::vector<FilePiece> pieces(files.size());
+  return PvtuListing{path, std::move(files), ids_name};
+}
+
+FilePiece read_pvtu_piece(const PvtuListing &listing, std::size_t k, const FieldSelection &field,
+                          const ReadLimits &budget) {
+  FilePiece p;
+  p.file = listing.files[k];
+  try {
+    p.input = read_vtu_piece(p.file, field, budget,
+                             {.global_ids_name = listing.ids_name, .allow_empty = true}, p.arrays);
+  } catch (const InputError &e) {
+    throw InputError(listing.path + ": piece " + std::to_string(k) + " of " +
+                     std::to_string(listing.files.size()) + ": " + e.what());
+  }
+  return p;
+}
+
+MeshInput read_pvtu(const std::string &path, const FieldSelection &field,
+                    const ReadLimits &limits) {
+  const PvtuListing listing = list_pvtu(path, field);
+  std::vector<FilePiece> pieces(listing.files.size());
   ReadLimits budget = limits; // each piece's counts checked with those read before
-  for (std::size_t k = 0; k < files.size(); ++k) {
-    FilePiece &p = pieces[k];
-    p.file = files[k];
-    try {
-      p.input = read_vtu_piece(files[k], field, budget,
-                               {.global_ids_name = ids_name, .allow_empty = true}, p.arrays);
-    } catch (const InputError &e) {
-      throw InputError(path + ": piece " + std::to_string(k) + " of " +
-                       std::to_string(files.size()) + ": " + e.what());
-    }
-    budget.prior_points += p.input.points.size();
-    budget.prior_cells += p.input.num_cells();
-    budget.prior_cell_nodes += p.input.cell_nodes.size();
+  for (std::size_t k = 0; k < pieces.size(); ++k) {
+    pieces[k] = read_pvtu_piece(listing, k, field, budget);
+    const MeshInput &in = pieces[k].input;
+    budget.prior_points += in.points.size();
+    budget.prior_cells += in.num_cells();
+    budget.prior_cell_nodes += in.cell_nodes.size();
   }
   return join_pieces(std::move(pieces), path, /*by_ids=*/true, limits.threads);
 }

@@ -3,11 +3,13 @@
 #pragma once
 
 #include "io/field_selection.hpp"
+#include "io/piece_join.hpp"
 #include "io/read_limits.hpp"
 #include "mesh/mesh_input.hpp"
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 namespace hoct {
 
@@ -19,6 +21,20 @@ namespace hoct {
 // `field` must be of the default step: a .pvtu holds one.
 MeshInput read_pvtu(const std::string &path, const FieldSelection &field = {},
                     const ReadLimits &limits = {});
+
+// What a .pvtu lists: its piece files (checked as read_pvtu checks them) and the name of the
+// global ids array its PPointData declares (empty if none).
+struct PvtuListing {
+  std::string path;
+  std::vector<std::string> files;
+  std::string ids_name;
+};
+PvtuListing list_pvtu(const std::string &path, const FieldSelection &field = {});
+
+// Piece k of a listing, as read_pvtu reads it (its ghost and id arrays kept); `budget` counts
+// the pieces read before it. Errors name the .pvtu, the piece and its file.
+FilePiece read_pvtu_piece(const PvtuListing &listing, std::size_t k, const FieldSelection &field,
+                          const ReadLimits &budget);
 
 // The .pvtu in the directory of `vtu_path` that lists it as a piece (its path as vtu_path's
 // directory is written), or "" if there is none (or the directory holds too many to look).

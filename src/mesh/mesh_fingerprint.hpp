@@ -16,4 +16,23 @@ namespace hoct {
 // One pass over the input's arrays: about 1 ns per 8-byte word on one core.
 InputFingerprint mesh_fingerprint(const MeshInput &input);
 
+// The same hash of an input held in consecutive parts (one per process, in order), section by
+// section: a running state that each part continues and passes on (distributed/
+// distributed_read). mesh_fingerprint is these steps on one part.
+struct FingerprintState {
+  Fingerprint64::State hash;
+  uint64_t packed = 0;    // bytes of a word not yet full (degrees, kinds: eight to a word)
+  uint64_t in_packed = 0; // how many
+};
+FingerprintState fingerprint_start();
+// A section's start: its element count (points, values, cells, cell nodes).
+void fingerprint_count(FingerprintState &s, uint64_t count);
+// 8-byte words (doubles, ids: their bits).
+void fingerprint_words(FingerprintState &s, const void *data, std::size_t words);
+// Bytes eight to a word, the word's first byte lowest; the last word's rest zeros once
+// fingerprint_flush_packed ends the section.
+void fingerprint_packed(FingerprintState &s, const uint8_t *bytes, std::size_t n);
+void fingerprint_flush_packed(FingerprintState &s);
+uint64_t fingerprint_value(const FingerprintState &s);
+
 } // namespace hoct

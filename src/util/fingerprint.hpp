@@ -43,6 +43,20 @@ public:
       add(word_at(bytes, i));
   }
 
+  // The running state, to continue the hash elsewhere (in another process).
+  struct State {
+    uint64_t lane[4];
+    uint64_t count;
+  };
+  State state() const { return {{lane_[0], lane_[1], lane_[2], lane_[3]}, count_}; }
+  static Fingerprint64 resume(const State &s) {
+    Fingerprint64 h;
+    for (int k = 0; k < 4; ++k)
+      h.lane_[k] = s.lane[k];
+    h.count_ = s.count;
+    return h;
+  }
+
   uint64_t value() const {
     uint64_t h = count_ * kMulB;
     for (uint64_t lane : lane_)

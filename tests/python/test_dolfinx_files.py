@@ -15,7 +15,8 @@ with ghost cells and points. What hoct must make of them:
   among their mesh neighbours (found here by brute force from DOLFINx's in-memory arrays), every
   node a vertex with the value f there; VTKFile and XDMF give the same tree;
 - the partitioned files, on 2 and 3 ranks, the tree of the serial file, and read by
-  `mpirun -np N hoct tree` (N = 1, 2, 3, 4, 7) the same JSON as one process; one piece alone, a
+  `mpirun -np N hoct tree` (N = 1, 2, 3, 4, 7) the same JSON as one process, the .pvd (every rank
+  reads the whole) and the .pvtu (each rank reads only its pieces); one piece alone, a
   warning naming the .pvtu to read instead;
 - XDMF steps: `hoct info` lists both, the default is the last, --step and --time choose, and a
   time that is not there is an error listing the times;
@@ -177,6 +178,20 @@ with tempdir() as d:
                                capture_output=True, text=True, env=env)
             same = w.returncode == 0 and open(got, "rb").read() == open(want, "rb").read()
             r.check(same, f"P2 written on {n} ranks, hoct on {m} ranks: {w.stderr[-800:]}")
+        # The step's .pvtu itself: each hoct rank reads only its pieces (no note that every
+        # rank reads the whole), the same JSON as one process.
+        pvtu = p(f"part{n}000000.pvtu")
+        want = p(f"part{n}.pvtu.plain.json")
+        run("tree", pvtu, "--json", want, "--no-timings", "-q")
+        for m in (1, 2, 3, 4, 7):
+            got = p(f"part{n}.pvtu.mpi{m}.json")
+            w = subprocess.run([shutil.which("mpirun"), "--oversubscribe", "-np", str(m), HOCT,
+                                "tree", pvtu, "--json", got, "--no-timings"],
+                               capture_output=True, text=True, env=env)
+            same = w.returncode == 0 and open(got, "rb").read() == open(want, "rb").read()
+            r.check(same and "reads the whole" not in w.stderr
+                    and "checks: by the pieces together" in w.stdout,
+                    f"{pvtu} on {n} ranks, hoct on {m} ranks, each its pieces: {w.stderr[-800:]}")
         res = run("tree", p(f"part{n}_p0_000000.vtu"), check=False)
         r.check(res.returncode == 0 and f"part{n}000000.pvtu" in res.stderr,
                 f"one piece of {n}: {res.returncode} {res.stderr.strip()[:400]}")

@@ -1,0 +1,46 @@
+// Records sent between all ranks in one step (MPI_Alltoallv of trivially copyable records).
+#pragma once
+
+#include "util/error.hpp"
+
+#include <mpi.h>
+
+#include <climits>
+#include <cstdint>
+#include <type_traits>
+#include <vector>
+
+namespace hoct {
+
+// Collective: sends out[r] to rank r (out is emptied) and returns what every rank sent here, in
+// rank order. Throws hoct::Error where one step would carry 2 GiB or more to or from a rank.
+template <class T>
+std::vector<T> exchange_records(MPI_Comm comm, std::vector<std::vector<T>> &out) {
+  static_assert(std::is_trivially_copyable_v<T>);
+  const int ranks = static_cast<int>(out.size());
+  std::vector<int> send_counts(out.size()), send_offsets(out.size()), receive_counts(out.size()),
+      receive_offsets(out.size());
+  std::vector<T> sending;
+  for (int r = 0; r < ranks; ++r) {
+    if ((sending.size() + out[r].size()) * sizeof(T) > static_cast<std::size_t>(INT_MAX))
+      throw Error("a rank sends more than 2 GiB in one exchange: use more ranks");
+    send_offsets[r] = static_cast<int>(sending.size() * sizeof(T));
+    send_counts[r] = static_cast<int>(out[r].size() * sizeof(T));
+    sending.insert(sending.end(), out[r].begin(), out[r].end());
+    std::vector<T>().swap(out[r]);
+  }
+  MPI_Alltoall(send_counts.data(), 1, MPI_INT, receive_counts.data(), 1, MPI_INT, comm);
+  int64_t total = 0;
+  for (int r = 0; r < ranks; ++r) {
+    receive_offsets[r] = static_cast<int>(total);
+    total += receive_counts[r];
+  }
+  if (total > INT_MAX)
+    throw Error("a rank receives more than 2 GiB in one exchange: use more ranks");
+  std::vector<T> received(static_cast<std::size_t>(total) / sizeof(T));
+  MPI_Alltoallv(sending.data(), send_counts.data(), send_offsets.data(), MPI_BYTE, received.data(),
+                receive_counts.data(), receive_offsets.data(), MPI_BYTE, comm);
+  return received;
+}
+
+} // namespace hoct

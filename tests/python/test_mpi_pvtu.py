@@ -1,0 +1,207 @@
+"""`mpirun -np N hoct tree FILE.pvtu`: each rank reads only its own pieces (issue 31).
+
+Partitioned files written by VTK itself (vtkExtractUnstructuredGridPiece and
+vtkXMLPUnstructuredGridWriter, as in test_collections): ghost levels 0, 1 and 2, with global ids
+(the GlobalIds attribute) and without (the pieces' copies of a point joined by position), cubic
+triangles, quadratic quadrilaterals, a plateau (ties ordered by the whole's ids) and a field at
++1e7 simplified; pieces cut by hand with a plain GlobalIds array and an empty piece. The
+independent truth is one process reading the whole file (`hoct tree FILE.pvtu`, io/piece_join):
+for 1, 2, 3, 4 and 7 ranks (more ranks than pieces: ranks without any) the JSON (--no-timings,
+the input's fingerprint included) is byte-identical, the ranks read their pieces alone (no note
+that every rank reads the whole) and check the whole mesh together. A plate with 100 holes split
+into pieces is refused with the whole's shape (hoct info's counts). Pieces whose fields differ,
+and a broken piece file, give the error of one process (every rank reads the whole then), once.
+
+Skipped (exit 77) without mpirun, VTK's Python module or an MPI build of hoct."""
+import os
+import re
+import shutil
+import subprocess
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from hoct_testing import HOCT, Results, run, tempdir  # noqa: E402
+
+MPIRUN = shutil.which("mpirun")
+if not MPIRUN:
+    print("SKIPPED: no mpirun (Debian: openmpi-bin)")
+    sys.exit(77)
+try:
+    import vtk
+except ImportError as e:
+    print(f"SKIPPED: no VTK Python module ({e})")
+    sys.exit(77)
+ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
+           OMPI_MCA_rmaps_base_oversubscribe="1", HOCT_MPI="1")
+r = Results()
+
+
+def mpi(n, *args):
+    return subprocess.run([MPIRUN, "--oversubscribe", "-np", str(n), HOCT, *map(str, args)],
+                          capture_output=True, text=True, env=ENV, timeout=600)
+
+
+def read(path):
+    with open(path, "rb") as f:
+        return f.read()
+
+
+def read_grid(path):
+    reader = vtk.vtkXMLUnstructuredGridReader()
+    reader.SetFileName(path)
+    reader.Update()
+    return reader.GetOutput()
+
+
+def write_pieces(grid, path, pieces, ghost_level, ids=None):
+    """grid split into `pieces` by VTK's streaming pipeline; ids: an id array to declare as the
+    point data's GlobalIds attribute in every piece."""
+    if ids:
+        gid = vtk.vtkIdTypeArray()
+        gid.SetName(ids)
+        for i in range(grid.GetNumberOfPoints()):
+            gid.InsertNextValue(1000 + 7 * i)  # ids that are no point indices
+        grid.GetPointData().AddArray(gid)
+    extract = vtk.vtkExtractUnstructuredGridPiece()
+    extract.SetInputData(grid)
+    last = extract
+    if ids:
+        declare = vtk.vtkProgrammableFilter()
+        declare.SetInputConnection(extract.GetOutputPort())
+
+        def execute():
+            out = declare.GetUnstructuredGridOutput()
+            out.ShallowCopy(declare.GetUnstructuredGridInput())
+            out.GetPointData().SetGlobalIds(out.GetPointData().GetArray(ids))
+
+        declare.SetExecuteMethod(execute)
+        last = declare
+    w = vtk.vtkXMLPUnstructuredGridWriter()
+    w.SetInputConnection(last.GetOutputPort())
+    w.SetFileName(path)
+    w.SetNumberOfPieces(pieces)
+    w.SetStartPiece(0)
+    w.SetEndPiece(pieces - 1)
+    w.SetGhostLevel(ghost_level)
+    w.Write()
+
+
+def same_for_all_ranks(label, pvtu, *extra):
+    want = pvtu + ".plain.json"
+    plain = run("tree", pvtu, "--json", want, "--no-timings", "-q", *extra, check=False)
+    r.check(plain.returncode == 0, f"{label}: one process: {plain.stderr[-800:]}")
+    for n in (1, 2, 3, 4, 7):
+        got = f"{pvtu}.{n}.json"
+        p = mpi(n, "tree", pvtu, "--json", got, "--no-timings", *extra)
+        ok = p.returncode == 0 and os.path.exists(got) and read(got) == read(want)
+        r.check(ok, f"{label}, {n} ranks: the JSON of one process ({p.returncode}) "
+                    f"{p.stderr[-1200:]}")
+        r.check("reads the whole" not in p.stderr, f"{label}, {n} ranks: read by pieces:\n{p.stderr}")
+        r.check("checks: by the pieces together" in p.stdout,
+                f"{label}, {n} ranks: checked by the pieces:\n{p.stdout[-1500:]}")
+        # One report line per rank, their cells adding up to the whole's.
+        rows = [l.split() for l in p.stdout.splitlines() if l.startswith("    ") and "cells," in l]
+        m = re.search(r"field '[^']*', (\d+) cells", p.stdout)
+        r.check(m and len(rows) == n and sum(int(row[1]) for row in rows) == int(m.group(1)),
+                f"{label}, {n} ranks: per-rank cells add up:\n{p.stdout[-1500:]}")
+    print(f"{label}: 1-7 ranks checked", flush=True)
+
+
+with tempdir() as d:
+    probe = mpi(1, "tree", "--help")
+    if probe.returncode != 0:
+        print(f"SKIPPED: mpirun cannot start hoct here:\n{probe.stderr[-2000:]}")
+        sys.exit(77)
+
+    sources = {
+        "gauss": ["gauss", "--cells", "2000", "--degree", "3"],
+        "quads": ["random", "--cells", "1500", "--quads", "--degree", "2"],
+        "plateau": ["random", "--cells", "3000", "--plateau", "30"],
+        "offset": ["random", "--cells", "2000", "--degree", "4", "--offset", "1e7"],
+    }
+    for name, gen in sources.items():
+        run("generate", *gen, "-o", os.path.join(d, f"{name}.vtu"))
+    cases = [("gauss", "ghosts_ids", 3, 1, "gid", []), ("gauss", "ghosts", 3, 1, None, []),
+             ("gauss", "no_ghosts", 4, 0, None, []), ("gauss", "no_ghosts_ids", 3, 0, "gid", []),
+             ("gauss", "ghosts2", 4, 2, None, []), ("quads", "ghosts", 3, 1, None, []),
+             ("plateau", "ghosts", 5, 1, None, []),
+             ("offset", "ghosts_ids", 3, 1, "gid", ["--simplify", "1%"])]
+    for source, name, pieces, level, ids, extra in cases:
+        pvtu = os.path.join(d, f"{source}_{name}.pvtu")
+        write_pieces(read_grid(os.path.join(d, f"{source}.vtu")), pvtu, pieces, level, ids)
+        same_for_all_ranks(f"{source} {name} ({pieces} pieces)", pvtu, *extra)
+
+    # Pieces cut by hand: a plain GlobalIds array (no attribute) and an empty piece.
+    grid = read_grid(os.path.join(d, "gauss.vtu"))
+    n = grid.GetNumberOfCells()
+    plain_ids = vtk.vtkIdTypeArray()
+    plain_ids.SetName("GlobalIds")
+    for i in range(grid.GetNumberOfPoints()):
+        plain_ids.InsertNextValue(5 + 3 * i)
+    grid.GetPointData().AddArray(plain_ids)
+    hand = []
+    for k, (lo, hi) in enumerate([(0, n // 3), (n // 3, n // 3), (n // 3, n)]):
+        cells = vtk.vtkIdList()
+        for c in range(lo, hi):
+            cells.InsertNextId(c)
+        ex = vtk.vtkExtractCells()
+        ex.SetInputData(grid)
+        ex.SetCellList(cells)
+        ex.Update()
+        w = vtk.vtkXMLUnstructuredGridWriter()
+        w.SetInputData(ex.GetOutput())
+        w.SetFileName(os.path.join(d, f"hand_{k}.vtu"))
+        w.Write()
+        hand.append(f"hand_{k}.vtu")
+
+    def listing(path, files, field="f"):
+        with open(path, "w") as f:
+            f.write('<?xml version="1.0"?>\n<VTKFile type="PUnstructuredGrid" version="0.1">\n'
+                    f' <PUnstructuredGrid GhostLevel="0">\n  <PPointData Scalars="{field}">\n'
+                    f'   <PDataArray type="Float64" Name="{field}"/>\n  </PPointData>\n'
+                    '  <PPoints><PDataArray type="Float64" NumberOfComponents="3"/></PPoints>\n'
+                    + "".join(f'  <Piece Source="{p}"/>\n' for p in files)
+                    + " </PUnstructuredGrid>\n</VTKFile>\n")
+
+    listing(os.path.join(d, "hand.pvtu"), hand)
+    same_for_all_ranks("hand-cut, an empty piece", os.path.join(d, "hand.pvtu"))
+
+    # A plate with 100 holes in pieces: refused, with the whole's shape.
+    run("generate", "plate", "--cells", "2000", "-o", os.path.join(d, "plate.vtu"))
+    plate = os.path.join(d, "plate.pvtu")
+    write_pieces(read_grid(os.path.join(d, "plate.vtu")), plate, 4, 1)
+
+    def shape(text):
+        return tuple(int(re.search(pattern, text).group(1)) for pattern in
+                     (r"Euler characteristic (-?\d+)", r"(\d+) boundary loop", r"(\d+) component"))
+
+    want_shape = shape(run("info", plate).stdout)
+    for n in (2, 3, 7):
+        p = mpi(n, "tree", plate)
+        r.check(p.returncode != 0 and "Reeb graph is not computed over MPI" in p.stderr
+                and shape(p.stderr) == want_shape and "reads the whole" not in p.stderr,
+                f"plate pieces, {n} ranks: the whole's shape {want_shape}:\n{p.stderr[-1500:]}")
+
+    # What the ranks cannot join alone: one process's error, once.
+    os.makedirs(os.path.join(d, "bad"))
+    for k, file in enumerate(hand):
+        shutil.copy(os.path.join(d, file), os.path.join(d, "bad", file))
+    with open(os.path.join(d, "bad", "hand_2.vtu"), "rb") as f:
+        data = f.read()
+    with open(os.path.join(d, "bad", "cut.vtu"), "wb") as f:
+        f.write(data[:len(data) // 2])
+    listing(os.path.join(d, "bad", "broken.pvtu"), ["hand_0.vtu", "hand_1.vtu", "cut.vtu"])
+    # Another field in one piece: the renamed array.
+    with open(os.path.join(d, "bad", "other.vtu"), "wb") as f:
+        f.write(data.replace(b'Name="f"', b'Name="g"'))
+    listing(os.path.join(d, "bad", "fields.pvtu"), ["hand_0.vtu", "other.vtu"])
+    for name in ("broken", "fields"):
+        path = os.path.join(d, "bad", f"{name}.pvtu")
+        want = run("tree", path, check=False)
+        first = want.stderr.strip().splitlines()[0] if want.stderr.strip() else ""
+        for n in (2, 3):
+            p = mpi(n, "tree", path)
+            r.check(want.returncode != 0 and p.returncode != 0 and first and first in p.stderr
+                    and p.stderr.count("hoct: error:") == 1,
+                    f"{name}, {n} ranks: {first!r} once in\n{p.stderr[-1500:]}")
+r.finish()
