@@ -63,8 +63,8 @@ ToleranceGrid::ToleranceGrid(const std::array<Vec3, 2> &box, double tolerance)
 }
 
 std::vector<uint8_t> ToleranceGrid::near_other_labels(MPI_Comm comm,
-                                                      std::span<const Vec3> positions,
-                                                      std::span<const int64_t> label) const {
+                                                      std::span<const Vec3> positions, int64_t base,
+                                                      std::span<const uint32_t> label) const {
   int rank = 0, ranks = 1;
   MPI_Comm_rank(comm, &rank);
   MPI_Comm_size(comm, &ranks);
@@ -75,13 +75,16 @@ std::vector<uint8_t> ToleranceGrid::near_other_labels(MPI_Comm comm,
     int64_t label;
     int64_t rank;
   };
+  auto label_of = [&](std::size_t i) {
+    return base + (label.empty() ? 0 : static_cast<int64_t>(label[i]));
+  };
   std::vector<uint64_t> bits(kCoarseCells / 64 + 1, 0);
   std::vector<uint64_t> keys;
   std::vector<std::vector<Claim>> claims(static_cast<std::size_t>(ranks));
   for (std::size_t i = 0; i < positions.size();) {
     std::size_t j = i;
     keys.clear();
-    for (; j < positions.size() && label[j] == label[i]; ++j)
+    for (; j < positions.size() && label_of(j) == label_of(i); ++j)
       for_coarse(positions[j], [&](uint64_t key) {
         if (!(bits[key >> 6] >> (key & 63) & 1)) {
           bits[key >> 6] |= uint64_t{1} << (key & 63);
@@ -90,7 +93,7 @@ std::vector<uint8_t> ToleranceGrid::near_other_labels(MPI_Comm comm,
       });
     for (const uint64_t key : keys) {
       bits[key >> 6] = 0;
-      claims[static_cast<std::size_t>(owner(key, ranks))].push_back({key, label[i], rank});
+      claims[static_cast<std::size_t>(owner(key, ranks))].push_back({key, label_of(i), rank});
     }
     i = j;
   }
@@ -137,8 +140,7 @@ bool duplicate_vertices_across(MPI_Comm comm, std::span<const Vec3> positions,
   // The vertices where another rank's may be near, to the owners of the fine cells their box
   // meets: any two within the tolerance meet at the owner of either one's own cell.
   const ToleranceGrid grid(box, tolerance);
-  const std::vector<int64_t> label(positions.size(), rank);
-  const std::vector<uint8_t> near = grid.near_other_labels(comm, positions, label);
+  const std::vector<uint8_t> near = grid.near_other_labels(comm, positions, rank, {});
   std::vector<std::vector<Located>> out(static_cast<std::size_t>(ranks));
   int to[8];
   for (std::size_t v = 0; v < positions.size(); ++v) {

@@ -38,9 +38,10 @@ class ToleranceGrid {
 public:
   ToleranceGrid(const std::array<Vec3, 2> &box, double tolerance);
   // Collective: per point, whether its coarse cells hold points of another label too (on any
-  // rank). `label`: per point, in runs (points of one label consecutive).
+  // rank). Point i's label is base + label[i] (or base alone for an empty `label`), the points
+  // of one label consecutive.
   std::vector<uint8_t> near_other_labels(MPI_Comm comm, std::span<const Vec3> positions,
-                                         std::span<const int64_t> label) const;
+                                         int64_t base, std::span<const uint32_t> label) const;
   // The distinct ranks owning the fine cells p's box meets, into `to`; returns how many.
   int fine_owners(const Vec3 &p, int ranks, int to[8]) const;
   // The rank owning the fine cell p lies in (one of fine_owners(p)).

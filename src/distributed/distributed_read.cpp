@@ -7,6 +7,7 @@
 #include "mesh/duplicate_points.hpp"
 #include "mesh/mesh_fingerprint.hpp"
 #include "mesh/mesh_partition.hpp"
+#include "util/uninitialized_vector.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -201,10 +202,8 @@ RankRead read_pvtu_by_ranks(const std::string &path, const FieldSelection &field
         sent[(h >> 32) % static_cast<uint64_t>(ranks)].push_back(copy_of(i));
       }
     } else {
-      std::vector<int64_t> label(n);
-      for (std::size_t i = 0; i < n; ++i)
-        label[i] = static_cast<int64_t>(first + parts.piece_of[i]);
-      const std::vector<uint8_t> near = grid.near_other_labels(comm, m.points, label);
+      const std::vector<uint8_t> near =
+          grid.near_other_labels(comm, m.points, static_cast<int64_t>(first), parts.piece_of);
       int to[8];
       for (std::size_t i = 0; i < n; ++i) {
         if (!near[i])
@@ -295,33 +294,42 @@ RankRead read_pvtu_by_ranks(const std::string &path, const FieldSelection &field
 
   // 5. Every point's target (itself unless merged) and span; the whole's numbering of the
   // points that stay, then of the merged ones (asked of their representatives' ranks).
-  std::vector<int32_t> rep_rank(n, rank);
-  std::vector<int64_t> rep_local(n);
-  std::iota(rep_local.begin(), rep_local.end(), int64_t{0});
-  std::vector<std::array<int32_t, 2>> span(n);
-  for (std::size_t i = 0; i < n; ++i)
-    span[i] = used[i] ? std::array<int32_t, 2>{rank, rank} : std::array<int32_t, 2>{-1, -1};
-  for (const Decision &d : mine) {
+  // Most points have no decision (no copy elsewhere): theirs is to stay, their span this rank.
+  // (Pooled arrays: the pages the reading freed serve here.)
+  UninitializedVector<int32_t> decided(n);
+  std::fill(decided.begin(), decided.end(), -1);
+  for (std::size_t k = 0; k < mine.size(); ++k) {
+    const Decision &d = mine[k];
     const auto i = static_cast<std::size_t>(d.local);
-    rep_rank[i] = d.rep_rank;
-    rep_local[i] = d.rep_local;
-    span[i] = {d.span_lo, d.span_hi};
+    decided[i] = static_cast<int32_t>(k);
     m.points[i] = d.rep_p;
     m.values[i] = d.rep_value;
   }
+  auto stays = [&](std::size_t i) {
+    const int32_t k = decided[i];
+    return k < 0 || (mine[k].rep_rank == rank && mine[k].rep_local == static_cast<int64_t>(i));
+  };
+  auto span_of = [&](std::size_t i) {
+    const int32_t k = decided[i];
+    if (k >= 0)
+      return std::array<int32_t, 2>{mine[k].span_lo, mine[k].span_hi};
+    return used[i] ? std::array<int32_t, 2>{rank, rank} : std::array<int32_t, 2>{-1, -1};
+  };
   int64_t stay = 0;
   for (std::size_t i = 0; i < n; ++i)
-    stay += rep_rank[i] == rank && rep_local[i] == static_cast<int64_t>(i);
+    stay += stays(i);
   const int64_t base = exclusive_sum(comm, stay, rank);
-  std::vector<int64_t> global(n, -1);
+  UninitializedVector<int64_t> global(n);
   int64_t next = base;
   std::vector<std::vector<Ask>> asks(static_cast<std::size_t>(ranks));
   for (std::size_t i = 0; i < n; ++i) {
-    if (rep_rank[i] == rank && rep_local[i] == static_cast<int64_t>(i))
+    if (stays(i)) {
       global[i] = next++;
-    else
-      asks[static_cast<std::size_t>(rep_rank[i])].push_back(
-          Ask{rep_local[i], static_cast<int64_t>(i), rank});
+    } else {
+      const Decision &d = mine[static_cast<std::size_t>(decided[i])];
+      asks[static_cast<std::size_t>(d.rep_rank)].push_back(
+          Ask{d.rep_local, static_cast<int64_t>(i), rank});
+    }
   }
   std::vector<std::vector<Answer>> answers(static_cast<std::size_t>(ranks));
   for (const Ask &a : exchange_records(comm, asks))
@@ -339,7 +347,6 @@ RankRead read_pvtu_by_ranks(const std::string &path, const FieldSelection &field
   FingerprintState fp = fingerprint_start();
   static_assert(std::is_trivially_copyable_v<FingerprintState>);
   constexpr int kStateBytes = static_cast<int>(sizeof(FingerprintState));
-  std::vector<double> buffer;
   const int sections = with_kinds ? 5 : 4;
   for (int s = 0; s < sections; ++s) {
     constexpr int kTag = 77;
@@ -352,15 +359,17 @@ RankRead read_pvtu_by_ranks(const std::string &path, const FieldSelection &field
                                                   : s == 2 ? whole_cells
                                                            : totals[1]));
     if (s == 0 || s == 1) {
-      buffer.clear();
-      for (std::size_t i = 0; i < n; ++i)
-        if (rep_rank[i] == rank && rep_local[i] == static_cast<int64_t>(i)) {
-          if (s == 0)
-            buffer.insert(buffer.end(), m.points[i].begin(), m.points[i].end());
-          else
-            buffer.push_back(m.values[i]);
-        }
-      fingerprint_words(fp, buffer.data(), buffer.size());
+      // Runs of points that stay, hashed in place.
+      for (std::size_t i = 0; i < n;) {
+        std::size_t j = i;
+        while (j < n && stays(j))
+          ++j;
+        if (s == 0)
+          fingerprint_words(fp, m.points.data() + i, 3 * (j - i));
+        else
+          fingerprint_words(fp, m.values.data() + i, j - i);
+        i = j < n ? j + 1 : j;
+      }
     } else if (s == 2 || s == 4) {
       const auto &bytes = s == 2 ? m.cell_degree : m.cell_kind;
       fingerprint_packed(fp, bytes.data(), bytes.size());
@@ -370,12 +379,12 @@ RankRead read_pvtu_by_ranks(const std::string &path, const FieldSelection &field
       if (rank == ranks - 1)
         fingerprint_flush_packed(fp);
     } else {
-      std::vector<int64_t> nodes;
+      int64_t nodes[4096];
       for (std::size_t k = 0; k < m.cell_nodes.size(); k += 4096) {
-        nodes.clear();
-        for (std::size_t j = k; j < std::min(m.cell_nodes.size(), k + 4096); ++j)
-          nodes.push_back(global[static_cast<std::size_t>(m.cell_nodes[j])]);
-        fingerprint_words(fp, nodes.data(), nodes.size());
+        const std::size_t end = std::min(m.cell_nodes.size(), k + 4096);
+        for (std::size_t j = k; j < end; ++j)
+          nodes[j - k] = global[static_cast<std::size_t>(m.cell_nodes[j])];
+        fingerprint_words(fp, nodes, end - k);
       }
     }
     if (rank < ranks - 1)
@@ -389,23 +398,55 @@ RankRead read_pvtu_by_ranks(const std::string &path, const FieldSelection &field
   // 7. This rank's share: its cells, the points they use in the whole's order, their spans.
   RankInput in;
   MeshPiece &piece = in.piece;
-  std::vector<std::pair<int64_t, int64_t>> uses; // (whole's id, local)
-  for (std::size_t i = 0; i < n; ++i)
-    if (used[i])
-      uses.emplace_back(global[i], static_cast<int64_t>(i));
-  std::sort(uses.begin(), uses.end());
-  std::vector<int64_t> index(n, -1);
-  MeshInput &out = piece.input;
-  for (std::size_t k = 0; k < uses.size(); ++k) {
-    const auto i = static_cast<std::size_t>(uses[k].second);
-    if (k == 0 || uses[k].first != uses[k - 1].first) {
-      piece.global_point.push_back(uses[k].first);
-      piece.point_span.push_back(span[i]);
-      out.points.push_back(m.points[i]);
-      out.values.push_back(m.values[i]);
-    }
-    index[i] = static_cast<int64_t>(piece.global_point.size()) - 1;
+  // The points its cells use, in the whole's order: first the other ranks' (merged copies whose
+  // representative is elsewhere, with lower ids), then its own that stay, in order. A merged
+  // copy whose representative is on this rank is that point (used through it).
+  std::vector<std::pair<int64_t, int64_t>> external; // (whole's id, local)
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!used[i] || stays(i))
+      continue;
+    const Decision &d = mine[static_cast<std::size_t>(decided[i])];
+    if (d.rep_rank != rank)
+      external.emplace_back(global[i], static_cast<int64_t>(i));
+    else
+      used[static_cast<std::size_t>(d.rep_local)] = 1;
   }
+  std::sort(external.begin(), external.end());
+  std::size_t count = 0;
+  for (std::size_t k = 0; k < external.size(); ++k)
+    count += k == 0 || external[k].first != external[k - 1].first;
+  for (std::size_t i = 0; i < n; ++i)
+    count += used[i] && stays(i);
+  UninitializedVector<int64_t> index(n);
+  MeshInput &out = piece.input;
+  piece.global_point.resize(count);
+  piece.point_span.resize(count);
+  out.points.resize(count);
+  out.values.resize(count);
+  std::size_t k = 0;
+  auto place = [&](std::size_t i) {
+    piece.global_point[k] = global[i];
+    piece.point_span[k] = span_of(i);
+    out.points[k] = m.points[i];
+    out.values[k] = m.values[i];
+    ++k;
+  };
+  for (std::size_t e = 0; e < external.size(); ++e) {
+    if (e == 0 || external[e].first != external[e - 1].first)
+      place(static_cast<std::size_t>(external[e].second));
+    index[static_cast<std::size_t>(external[e].second)] = static_cast<int64_t>(k) - 1;
+  }
+  for (std::size_t i = 0; i < n; ++i)
+    if (used[i] && stays(i)) {
+      index[i] = static_cast<int64_t>(k);
+      place(i);
+    }
+  for (std::size_t i = 0; i < n; ++i)
+    if (used[i] && !stays(i)) {
+      const Decision &d = mine[static_cast<std::size_t>(decided[i])];
+      if (d.rep_rank == rank)
+        index[i] = index[static_cast<std::size_t>(d.rep_local)];
+    }
   out.source = path;
   out.field_name = field_name;
   out.coordinate_precision = coordinate_precision;

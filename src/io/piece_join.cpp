@@ -64,6 +64,41 @@ PieceParts concatenate_pieces(std::vector<FilePiece> &pieces, const std::string 
       fail(pieces[k].file + ": ghost or id arrays do not match its points and cells");
     out.coordinate_precision = std::max(out.coordinate_precision, in.coordinate_precision);
     out.value_precision = std::max(out.value_precision, in.value_precision);
+    auto ghost_flag = [](uint8_t g) { return (g & kDuplicateGhost) != 0; };
+    if (std::none_of(a.cell_ghost.begin(), a.cell_ghost.end(), ghost_flag) &&
+        std::none_of(a.point_ghost.begin(), a.point_ghost.end(), ghost_flag)) {
+      // No ghosts: every point and cell kept, in order (the arrays moved or appended whole).
+      const int64_t base = static_cast<int64_t>(out.points.size());
+      piece_of.insert(piece_of.end(), np, static_cast<uint32_t>(k));
+      if (ids)
+        global.insert(global.end(), a.global_ids.begin(), a.global_ids.end());
+      const bool kinds = !in.lagrange_triangles_only() || !out.cell_kind.empty();
+      if (base == 0 && out.num_cells() == 0) {
+        out.points = std::move(in.points);
+        out.values = std::move(in.values);
+        out.cell_nodes = std::move(in.cell_nodes);
+        out.cell_offsets = std::move(in.cell_offsets);
+        out.cell_degree = std::move(in.cell_degree);
+        out.cell_kind = std::move(in.cell_kind);
+      } else {
+        const int64_t node_base = static_cast<int64_t>(out.cell_nodes.size());
+        const std::size_t first_cell = out.num_cells();
+        out.points.insert(out.points.end(), in.points.begin(), in.points.end());
+        out.values.insert(out.values.end(), in.values.begin(), in.values.end());
+        out.cell_nodes.reserve(out.cell_nodes.size() + in.cell_nodes.size());
+        for (const int64_t q : in.cell_nodes)
+          out.cell_nodes.push_back(q + base);
+        out.cell_offsets.reserve(out.cell_offsets.size() + nc);
+        for (std::size_t c = 1; c <= nc; ++c)
+          out.cell_offsets.push_back(in.cell_offsets[c] + node_base);
+        out.cell_degree.insert(out.cell_degree.end(), in.cell_degree.begin(), in.cell_degree.end());
+        if (kinds)
+          for (std::size_t c = 0; c < nc; ++c)
+            out.set_kind(first_cell + c, in.kind(c));
+      }
+      in = MeshInput();
+      continue;
+    }
     // Bit 1: used by a kept cell, bit 2: by a ghost cell.
     std::vector<uint8_t> use(np, 0);
     for (std::size_t c = 0; c < nc; ++c) {
@@ -72,6 +107,11 @@ PieceParts concatenate_pieces(std::vector<FilePiece> &pieces, const std::string 
         use[static_cast<std::size_t>(in.cell_nodes[i])] |= bit;
     }
     const int64_t base = static_cast<int64_t>(out.points.size());
+    out.points.reserve(out.points.size() + np);
+    out.values.reserve(out.values.size() + np);
+    out.cell_nodes.reserve(out.cell_nodes.size() + in.cell_nodes.size());
+    out.cell_offsets.reserve(out.cell_offsets.size() + nc);
+    out.cell_degree.reserve(out.cell_degree.size() + nc);
     std::vector<int64_t> renumber(np, -1);
     int64_t next = base;
     for (std::size_t i = 0; i < np; ++i) {
