@@ -11,6 +11,7 @@
 #include "exact/exact_contour_tree.hpp"
 #include "io/vtu_writer.hpp"
 #include "mesh/mesh.hpp"
+#include "mesh/mesh_partition.hpp"
 #include "pl/pl_contour_tree.hpp"
 #include "pl/pl_mesh.hpp"
 #include "pl/refinement.hpp"
@@ -541,16 +542,45 @@ void large_section(const Settings &s) {
   std::printf("\n");
 }
 
-// `mpirun -np N hoct tree` against one plain process: whole runs (a fresh mpirun per run, rank
-// counts alternated), each rank's report (its piece's time, kept nodes, bytes, peak memory) read
-// from the summary, and the JSON compared with the plain run's.
+// The mesh as a partitioned file: `pieces` .vtu files of contiguous cells (no ghosts; the shared
+// points written by both neighbours, joined by position) listed by `pvtu`.
+void write_pieces(const std::string &pvtu, const MeshInput &in, int pieces) {
+  const std::filesystem::path listing(pvtu);
+  std::string xml = "<?xml version=\"1.0\"?>\n<VTKFile type=\"PUnstructuredGrid\" "
+                    "version=\"0.1\">\n <PUnstructuredGrid GhostLevel=\"0\">\n  <PPointData "
+                    "Scalars=\"f\">\n   <PDataArray type=\"Float64\" Name=\"f\"/>\n  "
+                    "</PPointData>\n  <PPoints><PDataArray type=\"Float64\" "
+                    "NumberOfComponents=\"3\"/></PPoints>\n";
+  for (int k = 0; k < pieces; ++k) {
+    const auto [begin, end] = piece_cell_range(static_cast<int64_t>(in.num_cells()), pieces, k);
+    const std::string name = listing.stem().string() + "_" + std::to_string(k) + ".vtu";
+    write_vtu((listing.parent_path() / name).string(), extract_piece(in, begin, end).input);
+    xml += "  <Piece Source=\"" + name + "\"/>\n";
+  }
+  xml += " </PUnstructuredGrid>\n</VTKFile>\n";
+  std::ofstream(pvtu) << xml;
+}
+
+// `mpirun -np N hoct tree` against one plain process, on the mesh as one .vtu (every rank reads
+// it whole) and as a .pvtu of 8 pieces (each rank reads its own): whole runs (a fresh mpirun per
+// run, rank counts alternated), each rank's report (its piece's time, kept nodes, bytes, peak
+// memory) read from the summary, and the JSON compared with the plain run's.
 void mpi_section(const Settings &s) {
   const int runs = s.quick ? 1 : std::min(std::max(s.runs, 3), 5);
   const double size = s.quick ? 1e5 : 4e6;
   const std::vector<int> counts = s.quick ? std::vector<int>{1, 2} : std::vector<int>{1, 2, 4, 8};
   ScratchDir scratch;
-  const std::string vtu = scratch.file("random.vtu");
-  const long long cells = write_random(vtu, size, 3);
+  const std::string vtu = scratch.file("random.vtu"), pvtu = scratch.file("random.pvtu");
+  long long cells = 0;
+  {
+    DatasetOptions o;
+    o.cells = static_cast<long long>(size);
+    o.degree = 3;
+    const MeshInput in = generate_dataset("random", o);
+    write_vtu(vtu, in);
+    write_pieces(pvtu, in, 8);
+    cells = static_cast<long long>(in.num_cells());
+  }
   setenv("OMPI_ALLOW_RUN_AS_ROOT", "1", 1); // a container's root
   setenv("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1", 1);
   setenv("HOCT_MPI", "1", 1); // -np 1 too runs the distributed code
@@ -559,63 +589,76 @@ void mpi_section(const Settings &s) {
     std::ifstream in(path, std::ios::binary);
     return std::string(std::istreambuf_iterator<char>(in), {});
   };
-  const std::string plain_json = scratch.file("plain.json");
-  std::vector<double> plain;
-  std::map<int, std::vector<double>> whole, piece, kept, sent, received, peak;
-  std::map<int, bool> same;
-  for (int i = 0; i < runs; ++i) {
-    plain.push_back(run_process({hoct, "tree", vtu, "--json", plain_json, "--no-timings",
-                                 "--threads", "1", "-q"})
-                        .seconds);
-    for (int n : counts) {
-      const std::string json = scratch.file("mpi.json"), out = scratch.file("mpi.txt");
-      const ProcessPeak p =
-          run_process({"/usr/bin/mpirun", "--oversubscribe", "-np", std::to_string(n), hoct, "tree",
-                       vtu, "--json", json, "--no-timings", "--threads", "1"},
-                      out);
-      whole[n].push_back(p.seconds);
-      same[n] = (i == 0 || same[n]) && slurp(json) == slurp(plain_json);
-      // "    k: C cells, K kept, S / R KiB, M MiB, T s" per rank.
-      std::istringstream text(slurp(out));
-      double max_piece = 0, max_kept = 0, max_sent = 0, max_peak = 0, root_received = 0;
-      for (std::string line; std::getline(text, line);) {
-        int rank = 0;
-        double c = 0, k = 0, sk = 0, rk = 0, m = 0, t = 0;
-        if (std::sscanf(line.c_str(), " %d: %lf cells, %lf kept, %lf / %lf KiB, %lf MiB, %lf s",
-                        &rank, &c, &k, &sk, &rk, &m, &t) == 7) {
-          max_piece = std::max(max_piece, t);
-          max_kept = std::max(max_kept, k);
-          max_sent = std::max(max_sent, sk);
-          max_peak = std::max(max_peak, m);
-          if (rank == 0)
-            root_received = rk;
+  struct Input {
+    std::string file, label;
+  };
+  const std::vector<Input> inputs = {{vtu, "FILE.vtu (every rank reads it whole)"},
+                                     {pvtu, "FILE.pvtu, 8 pieces (each rank reads its own)"}};
+  for (const Input &input : inputs) {
+    const std::string plain_json = scratch.file("plain.json");
+    std::vector<double> plain;
+    std::map<int, std::vector<double>> whole, piece, kept, sent, received, peak;
+    std::map<int, bool> same, by_pieces;
+    for (int i = 0; i < runs; ++i) {
+      plain.push_back(run_process({hoct, "tree", input.file, "--json", plain_json, "--no-timings",
+                                   "--threads", "1", "-q"})
+                          .seconds);
+      for (int n : counts) {
+        const std::string json = scratch.file("mpi.json"), out = scratch.file("mpi.txt"),
+                          err = scratch.file("mpi.err");
+        const ProcessPeak p =
+            run_process({"/usr/bin/mpirun", "--oversubscribe", "-np", std::to_string(n), hoct,
+                         "tree", input.file, "--json", json, "--no-timings", "--threads", "1"},
+                        out, err);
+        whole[n].push_back(p.seconds);
+        same[n] = (i == 0 || same[n]) && slurp(json) == slurp(plain_json);
+        const std::string text = slurp(out);
+        by_pieces[n] = (i == 0 || by_pieces[n]) &&
+                       text.find("checks: by the pieces together") != std::string::npos &&
+                       slurp(err).find("reads the whole") == std::string::npos;
+        // "    k: C cells, K kept, S / R KiB, M MiB, T s" per rank.
+        std::istringstream lines(text);
+        double max_piece = 0, max_kept = 0, max_sent = 0, max_peak = 0, root_received = 0;
+        for (std::string line; std::getline(lines, line);) {
+          int rank = 0;
+          double c = 0, k = 0, sk = 0, rk = 0, m = 0, t = 0;
+          if (std::sscanf(line.c_str(), " %d: %lf cells, %lf kept, %lf / %lf KiB, %lf MiB, %lf s",
+                          &rank, &c, &k, &sk, &rk, &m, &t) == 7) {
+            max_piece = std::max(max_piece, t);
+            max_kept = std::max(max_kept, k);
+            max_sent = std::max(max_sent, sk);
+            max_peak = std::max(max_peak, m);
+            if (rank == 0)
+              root_received = rk;
+          }
         }
+        piece[n].push_back(max_piece);
+        kept[n].push_back(max_kept);
+        sent[n].push_back(max_sent);
+        received[n].push_back(root_received);
+        peak[n].push_back(max_peak);
       }
-      piece[n].push_back(max_piece);
-      kept[n].push_back(max_kept);
-      sent[n].push_back(max_sent);
-      received[n].push_back(root_received);
-      peak[n].push_back(max_peak);
     }
+    std::printf("## MPI, %s: `mpirun --oversubscribe -np N hoct tree FILE --json J --no-timings "
+                "--threads 1` (HOCT_MPI=1) on %lld random cubic cells, a fresh mpirun per run, "
+                "rank counts alternated with one plain process (`hoct tree FILE --threads 1`): "
+                "medians of %d runs; per rank, the largest over the ranks\n\n",
+                input.label.c_str(), cells, runs);
+    std::printf("plain process: %.3f s\n\n", median(plain));
+    std::printf("| ranks | whole (s) | 1 rank / N ranks | plain / N ranks | piece (s) | kept nodes "
+                "| KiB sent | KiB rank 0 received | peak MiB | JSON as plain | checked (.pvtu: and "
+                "read) by pieces |\n|---|---|---|---|---|---|---|---|---|---|---|\n");
+    const double one = median(whole[counts.front()]);
+    for (int n : counts) {
+      const double w = median(whole[n]);
+      std::printf("| %d | %.3f | %.2fx | %.2fx | %.3f | %.0f | %.1f | %.1f | %.0f | %s | %s |\n", n,
+                  w, one / w, median(plain) / w, median(piece[n]), median(kept[n]), median(sent[n]),
+                  median(received[n]), median(peak[n]), same[n] ? "yes" : "NO",
+                  by_pieces[n] ? "yes" : "NO");
+      std::fflush(stdout);
+    }
+    std::printf("\n");
   }
-  std::printf("## MPI: `mpirun --oversubscribe -np N hoct tree FILE.vtu --json J --no-timings "
-              "--threads 1` (HOCT_MPI=1) on %lld random cubic cells, a fresh mpirun per run, rank "
-              "counts alternated with one plain process (`hoct tree FILE.vtu --threads 1`): "
-              "medians of %d runs; per rank, the largest over the ranks\n\n",
-              cells, runs);
-  std::printf("plain process: %.3f s\n\n", median(plain));
-  std::printf("| ranks | whole (s) | 1 rank / N ranks | plain / N ranks | piece (s) | kept nodes "
-              "| KiB sent | KiB rank 0 received | peak MiB | JSON as plain |\n"
-              "|---|---|---|---|---|---|---|---|---|---|\n");
-  const double one = median(whole[counts.front()]);
-  for (int n : counts) {
-    const double w = median(whole[n]);
-    std::printf("| %d | %.3f | %.2fx | %.2fx | %.3f | %.0f | %.1f | %.1f | %.0f | %s |\n", n, w,
-                one / w, median(plain) / w, median(piece[n]), median(kept[n]), median(sent[n]),
-                median(received[n]), median(peak[n]), same[n] ? "yes" : "NO");
-    std::fflush(stdout);
-  }
-  std::printf("\n");
 }
 
 // Peak memory of `hoct tree FILE.vtu --json J --threads 1` in a process of its own (GNU time).

@@ -9,10 +9,12 @@
 #include "mesh/mesh.hpp"
 #include "mesh/mesh_checks.hpp"
 #include "mesh/mesh_partition.hpp"
+#include "mesh/piece_surface.hpp"
 #include "mesh/topology.hpp"
 
 #include <algorithm>
 #include <cstdio>
+#include <stdexcept>
 #include <utility>
 
 namespace hoct::bench {
@@ -21,17 +23,19 @@ void pieces_section(const std::vector<double> &sizes, int runs) {
   std::printf("## The distributed tree's phases, piece by piece in one process (random cubic "
               "fields, 1 thread; per piece: the mean over the pieces; merge: the longest merge "
               "of each level of the binary reduction, summed over the levels)\n\n");
-  std::printf("| cells | pieces | whole topology (s) | whole duplicates (s) | extract + build per "
-              "piece (s) | kept trees per piece (s) | kept nodes per piece | bytes per piece "
-              "| bytes per node | merge, all levels (s) | levels |\n"
-              "|---|---|---|---|---|---|---|---|---|---|---|\n");
+  std::printf("| cells | pieces | whole topology, rank 0 alone (s) | whole duplicates, rank 0 "
+              "alone (s) | extract + build per piece (s) | surface summary per piece (s) | seam "
+              "bytes per piece | glue on rank 0 (s) | kept trees per piece (s) | kept nodes per "
+              "piece | bytes per piece | bytes per node | merge, all levels (s) | levels |\n"
+              "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   for (double size : sizes) {
     DatasetOptions o;
     o.cells = static_cast<long long>(size);
     o.degree = 3;
     const MeshInput whole = generate_dataset("random", o);
     const int64_t cells = static_cast<int64_t>(whole.num_cells());
-    // Rank 0's checks of the whole mesh (distributed/distributed_tree).
+    // Rank 0's checks of the whole mesh alone (distributed/distributed_tree: only where the
+    // pieces found a problem), for comparison with the pieces' summaries and their glue.
     std::vector<double> topo_s, dup_s;
     for (int i = 0; i < runs; ++i) {
       ProblemLog problems;
@@ -44,21 +48,30 @@ void pieces_section(const std::vector<double> &sizes, int runs) {
       dup_s.push_back(seconds_since(t1));
     }
     for (int pieces : {2, 8, 32, 128}) {
-      const auto spans = point_piece_spans(whole, pieces);
       std::vector<PieceTrees> groups;
-      double build = 0, trees = 0, kept = 0, bytes = 0;
+      std::vector<PieceSurface> surfaces;
+      double build = 0, summary = 0, seam_bytes = 0, trees = 0, kept = 0, bytes = 0;
       for (int r = 0; r < pieces; ++r) {
         const auto [begin, end] = piece_cell_range(cells, pieces, r);
+        // As a rank does (distributed/distributed_tree): its cells and their spans, the mesh
+        // built with its open points.
         const auto t0 = clock_type::now();
-        const MeshPiece piece = extract_piece(whole, begin, end);
+        const MeshPiece piece = partition_piece(whole, pieces, r);
+        std::vector<uint8_t> open(piece.point_span.size());
+        for (std::size_t i = 0; i < open.size(); ++i)
+          open[i] = piece.point_span[i][0] != piece.point_span[i][1];
         MeshBuildOptions bo;
         bo.throw_on_error = false;
+        bo.open_points = open;
         const Mesh mesh = build_mesh(piece.input, bo);
         build += seconds_since(t0);
+        const auto ts = clock_type::now();
+        surfaces.push_back(summarize_piece(mesh.topology, piece.global_point, open, r));
+        summary += seconds_since(ts);
+        seam_bytes += static_cast<double>(encode_piece_surface(surfaces.back()).size());
         const auto t1 = clock_type::now();
-        const auto piece_spans = piece_point_spans(piece.global_point, spans);
         const PiecePlace place{r, piece.global_point, begin, triangles_before(whole, begin),
-                               piece_spans};
+                               piece.point_span};
         ExactTreeOptions eo;
         TreeTimings time;
         PieceTrees t = piece_trees(mesh, place, eo, time);
@@ -67,6 +80,12 @@ void pieces_section(const std::vector<double> &sizes, int runs) {
         bytes += static_cast<double>(encode_piece_trees(t).size());
         groups.push_back(std::move(t));
       }
+      const auto tg = clock_type::now();
+      const SurfaceShape shape = glue_pieces(surfaces);
+      const double glue = seconds_since(tg);
+      if (!shape.seam_problem.empty() || shape.components != 1)
+        throw std::runtime_error("the pieces' glue does not give one clean surface: " +
+                                 shape.seam_problem);
       double merge = 0;
       int levels = 0;
       for (int step = 1; step < pieces; step *= 2, ++levels) {
@@ -78,10 +97,11 @@ void pieces_section(const std::vector<double> &sizes, int runs) {
         }
         merge += longest;
       }
-      std::printf("| %lld | %d | %.3f | %.3f | %.4f | %.4f | %.0f | %.0f | %.0f | %.4f | %d |\n",
+      std::printf("| %lld | %d | %.3f | %.3f | %.4f | %.4f | %.0f | %.4f | %.4f | %.0f | %.0f | "
+                  "%.0f | %.4f | %d |\n",
                   static_cast<long long>(cells), pieces, median(topo_s), median(dup_s),
-                  build / pieces, trees / pieces, kept / pieces, bytes / pieces, bytes / kept,
-                  merge, levels);
+                  build / pieces, summary / pieces, seam_bytes / pieces, glue, trees / pieces,
+                  kept / pieces, bytes / pieces, bytes / kept, merge, levels);
       std::fflush(stdout);
     }
   }

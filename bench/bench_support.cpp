@@ -37,7 +37,8 @@ long status_field_kib(const char *key) {
 
 long peak_rss_kib() { return status_field_kib("VmHWM:"); }
 
-ProcessPeak run_process(const std::vector<std::string> &argv, const std::string &stdout_file) {
+ProcessPeak run_process(const std::vector<std::string> &argv, const std::string &stdout_file,
+                        const std::string &stderr_file) {
   // Through GNU time (-f %M: the peak resident set of the program it runs): a child spawned
   // directly from this large process would inherit this process's peak at exec.
   char report[] = "/tmp/hoct-bench-peak-XXXXXX";
@@ -56,7 +57,9 @@ ProcessPeak run_process(const std::vector<std::string> &argv, const std::string 
   posix_spawn_file_actions_addopen(&actions, 1,
                                    stdout_file.empty() ? "/dev/null" : stdout_file.c_str(),
                                    O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  posix_spawn_file_actions_addopen(&actions, 2, "/dev/null", O_WRONLY, 0);
+  posix_spawn_file_actions_addopen(&actions, 2,
+                                   stderr_file.empty() ? "/dev/null" : stderr_file.c_str(),
+                                   O_WRONLY | O_CREAT | O_TRUNC, 0644);
   pid_t pid = 0;
   const auto t0 = clock_type::now();
   const int rc = posix_spawn(&pid, args[0], &actions, nullptr, args.data(), environ);

@@ -27,8 +27,9 @@ struct ProcessPeak {
   long max_rss_kib = 0;
   double seconds = 0;
 };
-// `stdout_file`: where its standard output goes (else /dev/null).
-ProcessPeak run_process(const std::vector<std::string> &argv, const std::string &stdout_file = "");
+// `stdout_file`, `stderr_file`: where its standard output and error go (else /dev/null).
+ProcessPeak run_process(const std::vector<std::string> &argv, const std::string &stdout_file = "",
+                        const std::string &stderr_file = "");
 
 // The directory of the running executable (to find the hoct CLI next to hoct_bench).
 std::string executable_dir();
