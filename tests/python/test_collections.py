@@ -21,43 +21,9 @@ import vtk
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from hoct_testing import Results, run, tempdir  # noqa: E402
+from vtk_pieces import read_grid, write_pieces  # noqa: E402
 
 r = Results()
-
-
-def read_grid(path):
-    reader = vtk.vtkXMLUnstructuredGridReader()
-    reader.SetFileName(path)
-    reader.Update()
-    return reader.GetOutput()
-
-
-def write_pieces(grid, path, pieces, ghost_level, ids=None):
-    """grid split into `pieces` by VTK's streaming pipeline; ids: the name of an id array to
-    declare as the point data's GlobalIds attribute in every piece."""
-    extract = vtk.vtkExtractUnstructuredGridPiece()
-    extract.SetInputData(grid)
-    last = extract
-    if ids:
-        # Filters do not pass the GlobalIds attribute on: declared again after the split.
-        declare = vtk.vtkProgrammableFilter()
-        declare.SetInputConnection(extract.GetOutputPort())
-
-        def execute():
-            out = declare.GetUnstructuredGridOutput()
-            out.ShallowCopy(declare.GetUnstructuredGridInput())
-            out.GetPointData().SetGlobalIds(out.GetPointData().GetArray(ids))
-
-        declare.SetExecuteMethod(execute)
-        last = declare
-    w = vtk.vtkXMLPUnstructuredGridWriter()
-    w.SetInputConnection(last.GetOutputPort())
-    w.SetFileName(path)
-    w.SetNumberOfPieces(pieces)
-    w.SetStartPiece(0)
-    w.SetEndPiece(pieces - 1)
-    w.SetGhostLevel(ghost_level)
-    w.Write()
 
 
 def write_whole(grid, path):

@@ -16,74 +16,29 @@ Skipped (exit 77) without mpirun, VTK's Python module or an MPI build of hoct.""
 import os
 import re
 import shutil
-import subprocess
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from hoct_testing import HOCT, Results, run, tempdir  # noqa: E402
+from hoct_testing import Results, run, tempdir  # noqa: E402
+from mpi_testing import mpi, read, refused_with_shape, require_mpi_hoct  # noqa: E402
 
-MPIRUN = shutil.which("mpirun")
-if not MPIRUN:
-    print("SKIPPED: no mpirun (Debian: openmpi-bin)")
-    sys.exit(77)
 try:
     import vtk
+    from vtk_pieces import read_grid, write_pieces
 except ImportError as e:
     print(f"SKIPPED: no VTK Python module ({e})")
     sys.exit(77)
-ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
-           OMPI_MCA_rmaps_base_oversubscribe="1", HOCT_MPI="1")
 r = Results()
 
 
-def mpi(n, *args):
-    return subprocess.run([MPIRUN, "--oversubscribe", "-np", str(n), HOCT, *map(str, args)],
-                          capture_output=True, text=True, env=ENV, timeout=600)
-
-
-def read(path):
-    with open(path, "rb") as f:
-        return f.read()
-
-
-def read_grid(path):
-    reader = vtk.vtkXMLUnstructuredGridReader()
-    reader.SetFileName(path)
-    reader.Update()
-    return reader.GetOutput()
-
-
-def write_pieces(grid, path, pieces, ghost_level, ids=None):
-    """grid split into `pieces` by VTK's streaming pipeline; ids: an id array to declare as the
-    point data's GlobalIds attribute in every piece."""
-    if ids:
-        gid = vtk.vtkIdTypeArray()
-        gid.SetName(ids)
-        for i in range(grid.GetNumberOfPoints()):
-            gid.InsertNextValue(1000 + 7 * i)  # ids that are no point indices
-        grid.GetPointData().AddArray(gid)
-    extract = vtk.vtkExtractUnstructuredGridPiece()
-    extract.SetInputData(grid)
-    last = extract
-    if ids:
-        declare = vtk.vtkProgrammableFilter()
-        declare.SetInputConnection(extract.GetOutputPort())
-
-        def execute():
-            out = declare.GetUnstructuredGridOutput()
-            out.ShallowCopy(declare.GetUnstructuredGridInput())
-            out.GetPointData().SetGlobalIds(out.GetPointData().GetArray(ids))
-
-        declare.SetExecuteMethod(execute)
-        last = declare
-    w = vtk.vtkXMLPUnstructuredGridWriter()
-    w.SetInputConnection(last.GetOutputPort())
-    w.SetFileName(path)
-    w.SetNumberOfPieces(pieces)
-    w.SetStartPiece(0)
-    w.SetEndPiece(pieces - 1)
-    w.SetGhostLevel(ghost_level)
-    w.Write()
+def with_ids(grid, name):
+    """The grid with an id array `name` (ids that are no point indices)."""
+    gid = vtk.vtkIdTypeArray()
+    gid.SetName(name)
+    for i in range(grid.GetNumberOfPoints()):
+        gid.InsertNextValue(1000 + 7 * i)
+    grid.GetPointData().AddArray(gid)
+    return grid
 
 
 def same_for_all_ranks(label, pvtu, *extra):
@@ -108,10 +63,7 @@ def same_for_all_ranks(label, pvtu, *extra):
 
 
 with tempdir() as d:
-    probe = mpi(1, "tree", "--help")
-    if probe.returncode != 0:
-        print(f"SKIPPED: mpirun cannot start hoct here:\n{probe.stderr[-2000:]}")
-        sys.exit(77)
+    require_mpi_hoct()
 
     sources = {
         "gauss": ["gauss", "--cells", "2000", "--degree", "3"],
@@ -128,7 +80,8 @@ with tempdir() as d:
              ("offset", "ghosts_ids", 3, 1, "gid", ["--simplify", "1%"])]
     for source, name, pieces, level, ids, extra in cases:
         pvtu = os.path.join(d, f"{source}_{name}.pvtu")
-        write_pieces(read_grid(os.path.join(d, f"{source}.vtu")), pvtu, pieces, level, ids)
+        grid = read_grid(os.path.join(d, f"{source}.vtu"))
+        write_pieces(with_ids(grid, ids) if ids else grid, pvtu, pieces, level, ids)
         same_for_all_ranks(f"{source} {name} ({pieces} pieces)", pvtu, *extra)
 
     # Pieces cut by hand: a plain GlobalIds array (no attribute) and an empty piece.
@@ -171,16 +124,7 @@ with tempdir() as d:
     plate = os.path.join(d, "plate.pvtu")
     write_pieces(read_grid(os.path.join(d, "plate.vtu")), plate, 4, 1)
 
-    def shape(text):
-        return tuple(int(re.search(pattern, text).group(1)) for pattern in
-                     (r"Euler characteristic (-?\d+)", r"(\d+) boundary loop", r"(\d+) component"))
-
-    want_shape = shape(run("info", plate).stdout)
-    for n in (2, 3, 7):
-        p = mpi(n, "tree", plate)
-        r.check(p.returncode != 0 and "Reeb graph is not computed over MPI" in p.stderr
-                and shape(p.stderr) == want_shape and "reads the whole" not in p.stderr,
-                f"plate pieces, {n} ranks: the whole's shape {want_shape}:\n{p.stderr[-1500:]}")
+    refused_with_shape(r, "plate pieces", plate, read_by_pieces=True)
 
     # What the ranks cannot join alone: one process's error, once.
     os.makedirs(os.path.join(d, "bad"))

@@ -17,39 +17,17 @@ the whole mesh's counts.
 
 Skipped (exit 77) without mpirun or an MPI build of hoct."""
 import os
-import re
-import shutil
-import subprocess
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from hoct_testing import HOCT, Results, run, tempdir  # noqa: E402
+from hoct_testing import Results, run, tempdir  # noqa: E402
+from mpi_testing import mpi, read, refused_with_shape, require_mpi_hoct  # noqa: E402
 
-MPIRUN = shutil.which("mpirun")
-if not MPIRUN:
-    print("SKIPPED: no mpirun (Debian: openmpi-bin)")
-    sys.exit(77)
-# HOCT_MPI=1: `mpirun -np 1` too runs the distributed code (one piece), not the plain run.
-ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
-           OMPI_MCA_rmaps_base_oversubscribe="1", HOCT_MPI="1")
 r = Results()
 
 
-def mpi(n, *args):
-    return subprocess.run([MPIRUN, "--oversubscribe", "-np", str(n), HOCT, *map(str, args)],
-                          capture_output=True, text=True, env=ENV, timeout=600)
-
-
-def read(path):
-    with open(path, "rb") as f:
-        return f.read()
-
-
 with tempdir() as d:
-    probe = mpi(1, "tree", "--help")
-    if probe.returncode != 0:
-        print(f"SKIPPED: mpirun cannot start hoct here:\n{probe.stderr[-2000:]}")
-        sys.exit(77)
+    require_mpi_hoct()
     cases = [
         ("two-triangle", [], []),
         ("gauss", ["--cells", "2000"], []),
@@ -107,16 +85,7 @@ with tempdir() as d:
     for n in (2, 3):
         p = mpi(n, "tree", path)
         r.check("checks: by the pieces together" in p.stdout, f"{n} ranks: checks:\n{p.stdout}")
-    def shape(text):
-        return tuple(int(re.search(pattern, text).group(1)) for pattern in
-                     (r"Euler characteristic (-?\d+)", r"(\d+) boundary loop", r"(\d+) component"))
-
-    want_shape = shape(run("info", plate).stdout)
-    for n in (2, 3, 7):
-        p = mpi(n, "tree", plate)
-        r.check(p.returncode != 0 and "Reeb graph is not computed over MPI" in p.stderr
-                and shape(p.stderr) == want_shape,
-                f"plate, {n} ranks: the whole's shape {want_shape}:\n{p.stderr[-1500:]}")
+    refused_with_shape(r, "plate", plate)
 
     # A broken file: the same error as without MPI, from every rank's read.
     broken = os.path.join(d, "broken.vtu")

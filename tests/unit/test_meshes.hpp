@@ -151,4 +151,42 @@ inline Vec3 sphere_projection(const Vec3 &p) {
   return {p[0] / r, p[1] / r, p[2] / r};
 }
 
+// Linear triangles of an nu x nv grid of quadrilaterals (two triangles each): flat on the
+// integer lattice, or wrapped in u (a band around a circle; twisted once for a Moebius strip,
+// whose v runs across the band) and also in v (a torus), on the surface in 3D; values from
+// `value` at the points.
+inline MeshInput surface_grid(int nu, int nv, bool wrap_u, bool wrap_v, bool twist,
+                              const std::function<double(const Vec3 &)> &value) {
+  MeshInput in;
+  const int rows = wrap_v ? nv : nv + 1, cols = wrap_u ? nu : nu + 1;
+  for (int j = 0; j < rows; ++j)
+    for (int i = 0; i < cols; ++i) {
+      const double u = 2 * M_PI * i / nu, w = 2 * M_PI * j / nv;
+      if (wrap_u && wrap_v) {
+        in.points.push_back({(2 + 0.7 * std::cos(w)) * std::cos(u),
+                             (2 + 0.7 * std::cos(w)) * std::sin(u), 0.7 * std::sin(w)});
+      } else if (wrap_u) {
+        const double s = (j - nv / 2.0) / nv;
+        in.points.push_back({(2 + s * std::cos(u / 2)) * std::cos(u),
+                             (2 + s * std::cos(u / 2)) * std::sin(u), s * std::sin(u / 2)});
+      } else {
+        in.points.push_back({static_cast<double>(i), static_cast<double>(j), 0});
+      }
+      in.values.push_back(value(in.points.back()));
+    }
+  auto id = [&](int i, int j) {
+    if (wrap_u && i == nu && twist) // the seam of the twist: across it, v runs the other way
+      return static_cast<int64_t>((nv - j) * cols);
+    return static_cast<int64_t>((j % rows) * cols + i % cols);
+  };
+  for (int j = 0; j < nv; ++j)
+    for (int i = 0; i < nu; ++i) {
+      const int64_t a = id(i, j), b = id(i + 1, j), c = id(i + 1, j + 1), d = id(i, j + 1);
+      const int64_t t1[3] = {a, b, c}, t2[3] = {a, c, d};
+      in.add_cell(1, t1);
+      in.add_cell(1, t2);
+    }
+  return in;
+}
+
 } // namespace hoct::testing

@@ -10,6 +10,8 @@
 
 #include <gtest/gtest.h>
 
+#include "test_meshes.hpp"
+
 #include <cmath>
 #include <numeric>
 #include <random>
@@ -61,36 +63,7 @@ MeshInput shuffled(const MeshInput &in, uint64_t seed) {
 }
 
 MeshInput grid(int nu, int nv, bool wrap_u, bool wrap_v, bool twist) {
-  MeshInput in;
-  const int rows = wrap_v ? nv : nv + 1, cols = wrap_u ? nu : nu + 1;
-  for (int j = 0; j < rows; ++j)
-    for (int i = 0; i < cols; ++i) {
-      const double u = 2 * M_PI * i / nu, w = 2 * M_PI * j / nv;
-      if (wrap_u && wrap_v)
-        in.points.push_back({(2 + 0.7 * std::cos(w)) * std::cos(u),
-                             (2 + 0.7 * std::cos(w)) * std::sin(u), 0.7 * std::sin(w)});
-      else if (wrap_u) {
-        const double s = (j - nv / 2.0) / nv;
-        in.points.push_back({(2 + s * std::cos(u / 2)) * std::cos(u),
-                             (2 + s * std::cos(u / 2)) * std::sin(u), s * std::sin(u / 2)});
-      } else {
-        in.points.push_back({static_cast<double>(i), static_cast<double>(j), 0});
-      }
-      in.values.push_back(in.points.back()[0]);
-    }
-  auto id = [&](int i, int j) {
-    if (wrap_u && i == nu && twist)
-      return static_cast<int64_t>((nv - j) * cols);
-    return static_cast<int64_t>((j % rows) * cols + i % cols);
-  };
-  for (int j = 0; j < nv; ++j)
-    for (int i = 0; i < nu; ++i) {
-      const int64_t a = id(i, j), b = id(i + 1, j), c = id(i + 1, j + 1), d = id(i, j + 1);
-      const int64_t t1[3] = {a, b, c}, t2[3] = {a, c, d};
-      in.add_cell(1, t1);
-      in.add_cell(1, t2);
-    }
-  return in;
+  return testing::surface_grid(nu, nv, wrap_u, wrap_v, twist, [](const Vec3 &p) { return p[0]; });
 }
 
 // The square grid without the squares in [lo, hi)^2: an annulus.

@@ -14,6 +14,8 @@
 
 #include <gtest/gtest.h>
 
+#include "test_meshes.hpp"
+
 #include <cmath>
 #include <map>
 #include <random>
@@ -180,32 +182,8 @@ TEST(ReebGraph, TwoComponentsGiveTwoGraphsByEveryMethod) {
 // Quadrilaterals of an nu x nv grid wrapped in u (and in v for a torus; twisted once in u for a
 // Moebius strip, whose v runs 0..nv), two triangles each, linear, on the surface in 3D.
 MeshInput wrapped_grid(int nu, int nv, bool torus, bool twist) {
-  MeshInput in;
-  const int rows = torus ? nv : nv + 1;
-  for (int j = 0; j < rows; ++j)
-    for (int i = 0; i < nu; ++i) {
-      const double u = 2 * M_PI * i / nu, w = torus ? 2 * M_PI * j / nv : (j - nv / 2.0) / nv;
-      if (torus)
-        in.points.push_back({(2 + 0.7 * std::cos(w)) * std::cos(u),
-                             (2 + 0.7 * std::cos(w)) * std::sin(u), 0.7 * std::sin(w)});
-      else
-        in.points.push_back({(2 + w * std::cos(u / 2)) * std::cos(u),
-                             (2 + w * std::cos(u / 2)) * std::sin(u), w * std::sin(u / 2)});
-      in.values.push_back(in.points.back()[0] + 0.1 * in.points.back()[2]);
-    }
-  auto id = [&](int i, int j) {
-    if (i == nu && twist) // the seam of the twist: across it, v runs the other way
-      return static_cast<int64_t>((nv - j) * nu);
-    return static_cast<int64_t>((j % rows) * nu + i % nu);
-  };
-  for (int j = 0; j < nv; ++j)
-    for (int i = 0; i < nu; ++i) {
-      const int64_t a = id(i, j), b = id(i + 1, j), c = id(i + 1, j + 1), d = id(i, j + 1);
-      const int64_t t1[3] = {a, b, c}, t2[3] = {a, c, d};
-      in.add_cell(1, t1);
-      in.add_cell(1, t2);
-    }
-  return in;
+  return testing::surface_grid(nu, nv, true, torus, twist,
+                               [](const Vec3 &p) { return p[0] + 0.1 * p[2]; });
 }
 
 // Topology::cut_open, which derives the cut topology, gives what building it from the cut
