@@ -142,18 +142,14 @@ RankRead read_pvtu_by_ranks(const std::string &path, const FieldSelection &field
   double scale = 0;
   for (const double v : m.values)
     scale = std::max(scale, std::abs(v));
+  // The whole's bounding box, largest precisions and largest value magnitude: one reduction.
   const double inf = std::numeric_limits<double>::infinity();
-  double most[8] = {n ? -own_box[0][0] : -inf, n ? -own_box[0][1] : -inf,
-                    n ? -own_box[0][2] : -inf, n ? own_box[1][0] : -inf,
-                    n ? own_box[1][1] : -inf,  n ? own_box[1][2] : -inf,
-                    m.coordinate_precision,    std::max(scale, m.value_precision)};
-  double value_precision = m.value_precision;
-  MPI_Allreduce(MPI_IN_PLACE, most, 8, MPI_DOUBLE, MPI_MAX, comm);
-  MPI_Allreduce(MPI_IN_PLACE, &value_precision, 1, MPI_DOUBLE, MPI_MAX, comm);
-  scale = 0;
-  for (const double v : m.values)
-    scale = std::max(scale, std::abs(v));
-  MPI_Allreduce(MPI_IN_PLACE, &scale, 1, MPI_DOUBLE, MPI_MAX, comm);
+  double most[9] = {n ? -own_box[0][0] : -inf, n ? -own_box[0][1] : -inf, n ? -own_box[0][2] : -inf,
+                    n ? own_box[1][0] : -inf,  n ? own_box[1][1] : -inf,  n ? own_box[1][2] : -inf,
+                    m.coordinate_precision,    m.value_precision,         scale};
+  MPI_Allreduce(MPI_IN_PLACE, most, 9, MPI_DOUBLE, MPI_MAX, comm);
+  const double value_precision = most[7];
+  scale = most[8];
   // The field's name, from the first rank with a piece that is not empty: the same on all.
   int named = parts.filled > 0 ? rank : ranks;
   MPI_Allreduce(MPI_IN_PLACE, &named, 1, MPI_INT, MPI_MIN, comm);
