@@ -2,46 +2,22 @@
 
 #include "distributed/mpi_exchange.hpp"
 #include "mesh/duplicate_points.hpp"
-#include "util/error.hpp"
 
 #include <algorithm>
-#include <climits>
 #include <cmath>
 #include <vector>
 
 namespace hoct {
 
 SurfaceShape gather_surface(MPI_Comm comm, const PieceSurface *own) {
-  int rank = 0, ranks = 1;
-  MPI_Comm_rank(comm, &rank);
-  MPI_Comm_size(comm, &ranks);
   const std::vector<std::byte> bytes = own ? encode_piece_surface(*own) : std::vector<std::byte>{};
-  if (bytes.size() > static_cast<std::size_t>(INT_MAX))
-    throw Error("a piece's seams take more than 2 GiB: use more ranks");
-  int n = static_cast<int>(bytes.size());
-  std::vector<int> sizes(static_cast<std::size_t>(ranks)), offsets(static_cast<std::size_t>(ranks));
-  MPI_Gather(&n, 1, MPI_INT, sizes.data(), 1, MPI_INT, 0, comm);
-  std::vector<std::byte> all;
-  if (rank == 0) {
-    int64_t total = 0;
-    for (int r = 0; r < ranks; ++r) {
-      offsets[r] = static_cast<int>(total);
-      total += sizes[r];
-    }
-    if (total > INT_MAX)
-      throw Error("the pieces' seams take more than 2 GiB on rank 0");
-    all.resize(static_cast<std::size_t>(total));
-  }
-  MPI_Gatherv(bytes.data(), n, MPI_BYTE, all.data(), sizes.data(), offsets.data(), MPI_BYTE, 0,
-              comm);
-  if (rank != 0)
-    return {};
   std::vector<PieceSurface> pieces;
-  for (int r = 0; r < ranks; ++r)
-    if (sizes[r] > 0)
-      pieces.push_back(decode_piece_surface(
-          std::span<const std::byte>(all.data() + offsets[r], static_cast<std::size_t>(sizes[r]))));
-  return glue_pieces(pieces);
+  for (const std::vector<std::byte> &b : gather_bytes(comm, bytes))
+    if (!b.empty())
+      pieces.push_back(decode_piece_surface(b));
+  int rank = 0;
+  MPI_Comm_rank(comm, &rank);
+  return rank == 0 ? glue_pieces(pieces) : SurfaceShape{};
 }
 
 namespace {

@@ -1,6 +1,7 @@
 #include "distributed/distributed_tree.hpp"
 
 #include "distributed/distributed_checks.hpp"
+#include "distributed/mpi_exchange.hpp"
 
 #include "exact/piece_codec.hpp"
 #include "exact/piece_trees.hpp"
@@ -154,26 +155,11 @@ void decode_problems(const std::string &s, ProblemLog &log) {
 }
 
 // Every rank's string on rank 0, in rank order.
-std::vector<std::string> gather_strings(MPI_Comm comm, const std::string &own, int rank,
-                                        int ranks) {
-  int n = static_cast<int>(own.size());
-  std::vector<int> sizes(static_cast<std::size_t>(ranks)), offsets(static_cast<std::size_t>(ranks));
-  MPI_Gather(&n, 1, MPI_INT, sizes.data(), 1, MPI_INT, 0, comm);
-  std::string all;
-  if (rank == 0) {
-    int total = 0;
-    for (int r = 0; r < ranks; ++r) {
-      offsets[r] = total;
-      total += sizes[r];
-    }
-    all.resize(static_cast<std::size_t>(total));
-  }
-  MPI_Gatherv(own.data(), n, MPI_CHAR, all.data(), sizes.data(), offsets.data(), MPI_CHAR, 0, comm);
+std::vector<std::string> gather_strings(MPI_Comm comm, const std::string &own) {
   std::vector<std::string> out;
-  if (rank == 0)
-    for (int r = 0; r < ranks; ++r)
-      out.push_back(
-          all.substr(static_cast<std::size_t>(offsets[r]), static_cast<std::size_t>(sizes[r])));
+  for (const std::vector<std::byte> &b :
+       gather_bytes(comm, std::as_bytes(std::span<const char>(own.data(), own.size()))))
+    out.emplace_back(reinterpret_cast<const char *>(b.data()), b.size());
   return out;
 }
 
@@ -292,8 +278,7 @@ DistributedOutcome distributed_tree_on(RankInput in, const MeshInput *whole, con
   const int complete = flags[0];
   if (flags[1] != 0)
     d.whole_check = "a piece found a problem of the whole mesh's kinds";
-  const std::vector<std::string> logs =
-      gather_strings(comm, encode_problems(mesh.problems, begin), rank, ranks);
+  const std::vector<std::string> logs = gather_strings(comm, encode_problems(mesh.problems, begin));
   SurfaceShape surface;
   if (complete) {
     const Topology &topo = mesh.topology;

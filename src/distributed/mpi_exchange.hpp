@@ -1,4 +1,5 @@
-// Records sent between all ranks in one step (MPI_Alltoallv of trivially copyable records).
+// Records sent between all ranks in one step (MPI_Alltoallv of trivially copyable records), and
+// every rank's bytes gathered on rank 0 (MPI_Gatherv).
 #pragma once
 
 #include "util/error.hpp"
@@ -6,7 +7,9 @@
 #include <mpi.h>
 
 #include <climits>
+#include <cstddef>
 #include <cstdint>
+#include <span>
 #include <type_traits>
 #include <vector>
 
@@ -41,6 +44,35 @@ std::vector<T> exchange_records(MPI_Comm comm, std::vector<std::vector<T>> &out)
   MPI_Alltoallv(sending.data(), send_counts.data(), send_offsets.data(), MPI_BYTE, received.data(),
                 receive_counts.data(), receive_offsets.data(), MPI_BYTE, comm);
   return received;
+}
+
+// Collective: every rank's bytes on rank 0, in rank order (nothing elsewhere). Throws
+// hoct::Error where rank 0 would receive 2 GiB or more.
+inline std::vector<std::vector<std::byte>> gather_bytes(MPI_Comm comm,
+                                                        std::span<const std::byte> own) {
+  int rank = 0, ranks = 1;
+  MPI_Comm_rank(comm, &rank);
+  MPI_Comm_size(comm, &ranks);
+  int n = static_cast<int>(own.size());
+  std::vector<int> sizes(static_cast<std::size_t>(ranks)), offsets(static_cast<std::size_t>(ranks));
+  MPI_Gather(&n, 1, MPI_INT, sizes.data(), 1, MPI_INT, 0, comm);
+  std::vector<std::byte> all;
+  if (rank == 0) {
+    int64_t total = 0;
+    for (int r = 0; r < ranks; ++r) {
+      offsets[r] = static_cast<int>(total);
+      total += sizes[r];
+    }
+    if (total > INT_MAX)
+      throw Error("the ranks' messages to rank 0 take 2 GiB or more: use fewer ranks per step");
+    all.resize(static_cast<std::size_t>(total));
+  }
+  MPI_Gatherv(own.data(), n, MPI_BYTE, all.data(), sizes.data(), offsets.data(), MPI_BYTE, 0, comm);
+  std::vector<std::vector<std::byte>> out;
+  if (rank == 0)
+    for (int r = 0; r < ranks; ++r)
+      out.emplace_back(all.begin() + offsets[r], all.begin() + offsets[r] + sizes[r]);
+  return out;
 }
 
 } // namespace hoct

@@ -1,5 +1,7 @@
 #include "exact/piece_codec.hpp"
 
+#include "util/byte_codec.hpp"
+
 #include <cstring>
 #include <stdexcept>
 #include <type_traits>
@@ -9,61 +11,12 @@ namespace {
 
 constexpr uint64_t kMagic = 0x686f637470696563; // "hoctpiec"
 
-class Writer {
-public:
-  template <class T> void value(const T &v) {
-    static_assert(std::is_trivially_copyable_v<T>);
-    const auto *p = reinterpret_cast<const std::byte *>(&v);
-    out.insert(out.end(), p, p + sizeof(T));
-  }
-  template <class T> void array(const std::vector<T> &v) {
-    static_assert(std::is_trivially_copyable_v<T>);
-    value<uint64_t>(v.size());
-    if (v.empty())
-      return;
-    const auto *p = reinterpret_cast<const std::byte *>(v.data());
-    out.insert(out.end(), p, p + v.size() * sizeof(T));
-  }
-  std::vector<std::byte> out;
-};
-
-class Reader {
-public:
-  explicit Reader(std::span<const std::byte> in) : in_(in) {}
-  template <class T> T value() {
-    T v;
-    take(&v, sizeof(T));
-    return v;
-  }
-  template <class T> std::vector<T> array() {
-    const uint64_t n = value<uint64_t>();
-    if (n > (in_.size() - at_) / sizeof(T))
-      throw std::runtime_error("decode_piece_trees: an array runs past the end");
-    std::vector<T> v(static_cast<std::size_t>(n));
-    take(v.data(), v.size() * sizeof(T));
-    return v;
-  }
-  bool done() const { return at_ == in_.size(); }
-
-private:
-  void take(void *to, std::size_t bytes) {
-    if (bytes > in_.size() - at_)
-      throw std::runtime_error("decode_piece_trees: the bytes end early");
-    if (bytes == 0) // an empty array's data() may be null
-      return;
-    std::memcpy(to, in_.data() + at_, bytes);
-    at_ += bytes;
-  }
-  std::span<const std::byte> in_;
-  std::size_t at_ = 0;
-};
-
 } // namespace
 
 std::vector<std::byte> encode_piece_trees(const PieceTrees &t) {
   static_assert(std::is_trivially_copyable_v<PieceNode>);
   static_assert(std::is_trivially_copyable_v<ExactCounts>);
-  Writer w;
+  ByteWriter w;
   w.value(kMagic);
   w.value(t.first_piece);
   w.value(t.last_piece);
@@ -82,7 +35,7 @@ std::vector<std::byte> encode_piece_trees(const PieceTrees &t) {
 }
 
 PieceTrees decode_piece_trees(std::span<const std::byte> bytes) {
-  Reader r(bytes);
+  ByteReader r(bytes, "decode_piece_trees");
   if (r.value<uint64_t>() != kMagic)
     throw std::runtime_error("decode_piece_trees: not an encoded PieceTrees");
   PieceTrees t;

@@ -1,12 +1,11 @@
 #include "mesh/piece_surface.hpp"
 
+#include "util/byte_codec.hpp"
 #include "util/concurrent_sets.hpp"
 #include "util/parallel_for.hpp"
 
 #include <algorithm>
-#include <cstring>
 #include <stdexcept>
-#include <type_traits>
 #include <unordered_map>
 
 namespace hoct {
@@ -295,76 +294,34 @@ SurfaceShape glue_pieces(const std::vector<PieceSurface> &pieces) {
   return out;
 }
 
-namespace {
-
-template <class T> void put(std::vector<std::byte> &out, const T &x) {
-  static_assert(std::is_trivially_copyable_v<T>);
-  const auto *b = reinterpret_cast<const std::byte *>(&x);
-  out.insert(out.end(), b, b + sizeof(T));
-}
-
-template <class T> void put_all(std::vector<std::byte> &out, const std::vector<T> &v) {
-  put(out, static_cast<uint64_t>(v.size()));
-  const auto *b = reinterpret_cast<const std::byte *>(v.data());
-  out.insert(out.end(), b, b + v.size() * sizeof(T));
-}
-
-class Reader {
-public:
-  explicit Reader(std::span<const std::byte> b) : b_(b) {}
-  template <class T> T get() {
-    T x;
-    take(&x, sizeof(T));
-    return x;
-  }
-  template <class T> std::vector<T> get_all() {
-    const uint64_t n = get<uint64_t>();
-    if (n > (b_.size() - at_) / sizeof(T))
-      throw std::runtime_error("a piece surface's bytes are cut short");
-    std::vector<T> v(n);
-    take(v.data(), n * sizeof(T));
-    return v;
-  }
-
-private:
-  void take(void *to, std::size_t n) {
-    if (n > b_.size() - at_)
-      throw std::runtime_error("a piece surface's bytes are cut short");
-    std::memcpy(to, b_.data() + at_, n);
-    at_ += n;
-  }
-  std::span<const std::byte> b_;
-  std::size_t at_ = 0;
-};
-
-} // namespace
-
 std::vector<std::byte> encode_piece_surface(const PieceSurface &s) {
-  std::vector<std::byte> out;
-  put(out, s.piece);
-  put(out, s.vertices);
-  put(out, s.edges);
-  put(out, s.triangles);
-  put(out, s.components);
-  put(out, s.closed_loops);
-  put(out, static_cast<uint8_t>(s.orientable));
-  put_all(out, s.band);
-  put_all(out, s.loop_ends);
-  return out;
+  ByteWriter w;
+  w.value(s.piece);
+  w.value(s.vertices);
+  w.value(s.edges);
+  w.value(s.triangles);
+  w.value(s.components);
+  w.value(s.closed_loops);
+  w.value(static_cast<uint8_t>(s.orientable));
+  w.array(s.band);
+  w.array(s.loop_ends);
+  return std::move(w.out);
 }
 
 PieceSurface decode_piece_surface(std::span<const std::byte> bytes) {
-  Reader r(bytes);
+  ByteReader r(bytes, "decode_piece_surface");
   PieceSurface s;
-  s.piece = r.get<int32_t>();
-  s.vertices = r.get<int64_t>();
-  s.edges = r.get<int64_t>();
-  s.triangles = r.get<int64_t>();
-  s.components = r.get<int64_t>();
-  s.closed_loops = r.get<int64_t>();
-  s.orientable = r.get<uint8_t>() != 0;
-  s.band = r.get_all<BandTriangle>();
-  s.loop_ends = r.get_all<LoopEnd>();
+  s.piece = r.value<int32_t>();
+  s.vertices = r.value<int64_t>();
+  s.edges = r.value<int64_t>();
+  s.triangles = r.value<int64_t>();
+  s.components = r.value<int64_t>();
+  s.closed_loops = r.value<int64_t>();
+  s.orientable = r.value<uint8_t>() != 0;
+  s.band = r.array<BandTriangle>();
+  s.loop_ends = r.array<LoopEnd>();
+  if (!r.done())
+    throw std::runtime_error("decode_piece_surface: bytes left after the summary");
   return s;
 }
 
