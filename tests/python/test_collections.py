@@ -21,7 +21,7 @@ import vtk
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from hoct_testing import Results, run, tempdir  # noqa: E402
-from vtk_pieces import read_grid, write_pieces  # noqa: E402
+from vtk_pieces import read_grid, write_hand_cut, write_pieces  # noqa: E402
 
 r = Results()
 
@@ -106,35 +106,7 @@ with tempdir() as d:
     r.check("warning" not in res.stderr, f"the whole file: no warning: {res.stderr!r}")
 
     # Pieces cut by hand: a plain GlobalIds array (no attribute), and an empty piece.
-    n = grid.GetNumberOfCells()
-    plain = vtk.vtkIdTypeArray()
-    plain.SetName("GlobalIds")  # an array of that name, not the GlobalIds attribute
-    for i in range(grid.GetNumberOfPoints()):
-        plain.InsertNextValue(5 + 3 * i)
-    grid.GetPointData().AddArray(plain)
-    hand = []
-    for k, (lo, hi) in enumerate([(0, n // 3), (n // 3, n // 3), (n // 3, n)]):
-        ids = vtk.vtkIdList()
-        for c in range(lo, hi):
-            ids.InsertNextId(c)
-        ex = vtk.vtkExtractCells()
-        ex.SetInputData(grid)
-        ex.SetCellList(ids)
-        ex.Update()
-        part = ex.GetOutput()
-        file = f"hand_{k}.vtu"
-        w = vtk.vtkXMLUnstructuredGridWriter()
-        w.SetInputData(part)
-        w.SetFileName(os.path.join(d, file))
-        w.Write()
-        hand.append(file)
-    with open(os.path.join(d, "hand.pvtu"), "w") as f:
-        f.write('<?xml version="1.0"?>\n<VTKFile type="PUnstructuredGrid" version="0.1">\n'
-                ' <PUnstructuredGrid GhostLevel="0">\n  <PPointData Scalars="f">\n'
-                '   <PDataArray type="Float64" Name="f"/>\n  </PPointData>\n'
-                '  <PPoints><PDataArray type="Float64" NumberOfComponents="3"/></PPoints>\n'
-                + "".join(f'  <Piece Source="{p}"/>\n' for p in hand)
-                + " </PUnstructuredGrid>\n</VTKFile>\n")
+    write_hand_cut(grid, d)
     got, _ = tree(os.path.join(d, "hand.pvtu"))
     original, _ = tree(src)
     r.check(signature(got) == signature(original),

@@ -24,7 +24,7 @@ from mpi_testing import mpi, read, refused_with_shape, require_mpi_hoct  # noqa:
 
 try:
     import vtk
-    from vtk_pieces import read_grid, write_pieces
+    from vtk_pieces import read_grid, write_hand_cut, write_listing, write_pieces
 except ImportError as e:
     print(f"SKIPPED: no VTK Python module ({e})")
     sys.exit(77)
@@ -85,39 +85,9 @@ with tempdir() as d:
         same_for_all_ranks(f"{source} {name} ({pieces} pieces)", pvtu, *extra)
 
     # Pieces cut by hand: a plain GlobalIds array (no attribute) and an empty piece.
-    grid = read_grid(os.path.join(d, "gauss.vtu"))
-    n = grid.GetNumberOfCells()
-    plain_ids = vtk.vtkIdTypeArray()
-    plain_ids.SetName("GlobalIds")
-    for i in range(grid.GetNumberOfPoints()):
-        plain_ids.InsertNextValue(5 + 3 * i)
-    grid.GetPointData().AddArray(plain_ids)
-    hand = []
-    for k, (lo, hi) in enumerate([(0, n // 3), (n // 3, n // 3), (n // 3, n)]):
-        cells = vtk.vtkIdList()
-        for c in range(lo, hi):
-            cells.InsertNextId(c)
-        ex = vtk.vtkExtractCells()
-        ex.SetInputData(grid)
-        ex.SetCellList(cells)
-        ex.Update()
-        w = vtk.vtkXMLUnstructuredGridWriter()
-        w.SetInputData(ex.GetOutput())
-        w.SetFileName(os.path.join(d, f"hand_{k}.vtu"))
-        w.Write()
-        hand.append(f"hand_{k}.vtu")
-
-    def listing(path, files, field="f"):
-        with open(path, "w") as f:
-            f.write('<?xml version="1.0"?>\n<VTKFile type="PUnstructuredGrid" version="0.1">\n'
-                    f' <PUnstructuredGrid GhostLevel="0">\n  <PPointData Scalars="{field}">\n'
-                    f'   <PDataArray type="Float64" Name="{field}"/>\n  </PPointData>\n'
-                    '  <PPoints><PDataArray type="Float64" NumberOfComponents="3"/></PPoints>\n'
-                    + "".join(f'  <Piece Source="{p}"/>\n' for p in files)
-                    + " </PUnstructuredGrid>\n</VTKFile>\n")
-
-    listing(os.path.join(d, "hand.pvtu"), hand)
-    same_for_all_ranks("hand-cut, an empty piece", os.path.join(d, "hand.pvtu"))
+    hand_pvtu = write_hand_cut(read_grid(os.path.join(d, "gauss.vtu")), d)
+    hand = [f"hand_{k}.vtu" for k in range(3)]
+    same_for_all_ranks("hand-cut, an empty piece", hand_pvtu)
 
     # A plate with 100 holes in pieces: refused, with the whole's shape.
     run("generate", "plate", "--cells", "2000", "-o", os.path.join(d, "plate.vtu"))
@@ -128,17 +98,17 @@ with tempdir() as d:
 
     # What the ranks cannot join alone: one process's error, once.
     os.makedirs(os.path.join(d, "bad"))
-    for k, file in enumerate(hand):
+    for file in hand:
         shutil.copy(os.path.join(d, file), os.path.join(d, "bad", file))
     with open(os.path.join(d, "bad", "hand_2.vtu"), "rb") as f:
         data = f.read()
     with open(os.path.join(d, "bad", "cut.vtu"), "wb") as f:
         f.write(data[:len(data) // 2])
-    listing(os.path.join(d, "bad", "broken.pvtu"), ["hand_0.vtu", "hand_1.vtu", "cut.vtu"])
+    write_listing(os.path.join(d, "bad", "broken.pvtu"), ["hand_0.vtu", "hand_1.vtu", "cut.vtu"])
     # Another field in one piece: the renamed array.
     with open(os.path.join(d, "bad", "other.vtu"), "wb") as f:
         f.write(data.replace(b'Name="f"', b'Name="g"'))
-    listing(os.path.join(d, "bad", "fields.pvtu"), ["hand_0.vtu", "other.vtu"])
+    write_listing(os.path.join(d, "bad", "fields.pvtu"), ["hand_0.vtu", "other.vtu"])
     for name in ("broken", "fields"):
         path = os.path.join(d, "bad", f"{name}.pvtu")
         want = run("tree", path, check=False)

@@ -1,6 +1,8 @@
 """Partitioned outputs written by VTK itself, for the tests: a .vtu read with VTK's reader, and
 split into pieces by VTK's streaming pipeline (vtkExtractUnstructuredGridPiece) written by
 vtkXMLPUnstructuredGridWriter. Needs VTK's Python module (python3-paraview's vtkmodules)."""
+import os
+
 import vtk
 
 
@@ -37,3 +39,43 @@ def write_pieces(grid, path, pieces, ghost_level, ids=None):
     w.SetEndPiece(pieces - 1)
     w.SetGhostLevel(ghost_level)
     w.Write()
+
+
+def write_hand_cut(grid, directory, name="hand"):
+    """The grid cut by hand into 3 pieces of consecutive cells, the middle one empty, each
+    piece's points given a plain array named GlobalIds (not the GlobalIds attribute), listed by
+    `directory/name.pvtu`; returns that path."""
+    n = grid.GetNumberOfCells()
+    plain = vtk.vtkIdTypeArray()
+    plain.SetName("GlobalIds")
+    for i in range(grid.GetNumberOfPoints()):
+        plain.InsertNextValue(5 + 3 * i)
+    grid.GetPointData().AddArray(plain)
+    files = []
+    for k, (lo, hi) in enumerate([(0, n // 3), (n // 3, n // 3), (n // 3, n)]):
+        cells = vtk.vtkIdList()
+        for c in range(lo, hi):
+            cells.InsertNextId(c)
+        ex = vtk.vtkExtractCells()
+        ex.SetInputData(grid)
+        ex.SetCellList(cells)
+        ex.Update()
+        w = vtk.vtkXMLUnstructuredGridWriter()
+        w.SetInputData(ex.GetOutput())
+        files.append(f"{name}_{k}.vtu")
+        w.SetFileName(os.path.join(directory, files[-1]))
+        w.Write()
+    path = os.path.join(directory, f"{name}.pvtu")
+    write_listing(path, files)
+    return path
+
+
+def write_listing(path, files, field="f"):
+    """A .pvtu listing `files` (relative to its directory), ghost level 0, point data `field`."""
+    with open(path, "w") as f:
+        f.write('<?xml version="1.0"?>\n<VTKFile type="PUnstructuredGrid" version="0.1">\n'
+                f' <PUnstructuredGrid GhostLevel="0">\n  <PPointData Scalars="{field}">\n'
+                f'   <PDataArray type="Float64" Name="{field}"/>\n  </PPointData>\n'
+                '  <PPoints><PDataArray type="Float64" NumberOfComponents="3"/></PPoints>\n'
+                + "".join(f'  <Piece Source="{p}"/>\n' for p in files)
+                + " </PUnstructuredGrid>\n</VTKFile>\n")
