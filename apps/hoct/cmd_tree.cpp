@@ -149,8 +149,9 @@ void register_tree(CLI::App &app) {
                   "arcs' paths (default: all cores; the result does not depend on it)")
       ->check(CLI::Range(0, 1024));
   sub->add_flag("--no-timings", o->no_timings,
-                "Leave the timings (time_* statistics) out of the JSON: the same input then gives "
-                "byte-identical files, whatever the thread count");
+                "Leave the timings (time_* statistics) and a Reeb graph's seam_edges (the size of "
+                "the cut, which depends on the run) out of the JSON: the same input then gives "
+                "byte-identical files, whatever the thread or MPI rank count");
   sub->add_flag("-q,--quiet", o->quiet, "No summary on the terminal");
   sub->callback([o] { run_tree(*o); });
 }

@@ -141,11 +141,15 @@ void report(const DistributedTreeRun &run, const DistributedOutcome &d,
   if (!run.svg.empty())
     write_tree_svg(run.svg, tree,
                    std::filesystem::path(run.file).filename().string() + ": " + tree.method +
-                       " contour tree, " + std::to_string(tree.nodes.size()) + " nodes");
+                       (tree.reeb_graph ? " Reeb graph, " : " contour tree, ") +
+                       std::to_string(tree.nodes.size()) + " nodes");
   if (!run.quiet) {
-    std::printf("%s: field '%s', %lld cells, exact contour tree over %d MPI ranks\n",
-                run.file.c_str(), field_name.c_str(), static_cast<long long>(cells), d.ranks);
+    std::printf("%s: field '%s', %lld cells, exact %s over %d MPI ranks\n", run.file.c_str(),
+                field_name.c_str(), static_cast<long long>(cells),
+                tree.reeb_graph ? graph_kind(tree).c_str() : "contour tree", d.ranks);
     print_tree_body(tree, total.seconds());
+    if (!d.whole_tree.empty())
+      std::printf("  tree: the whole mesh on rank 0 (%s)\n", d.whole_tree.c_str());
     if (d.whole_check.empty())
       std::printf("  checks: by the pieces together (seams, shape, duplicate vertices)\n");
     else

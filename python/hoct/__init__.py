@@ -322,7 +322,9 @@ def contour_tree(mesh, simplify=None, threads=None, method="exact", refine=4, ke
                gets the tree (the same as without comm, and its arcs not drawn on the surface:
                `write_vtp` draws them straight); the other ranks get None. Errors are raised on
                every rank; one that only one rank meets ends the job (MPI_Abort), as the others
-               would wait for it. Not over MPI: method "linear" and "refine", Reeb graphs.
+               would wait for it. A domain with holes or handles gets its Reeb graph (each
+               rank's pieces cut into disks, glued on rank 0). Not over MPI: method "linear"
+               and "refine".
 
     The arguments follow the flags' rules: simplify a finite number >= 0 or "N%" with N such a
     number (nan, -1, "-5%" are refused), refine an integer 1..1024, threads 1..1024, the

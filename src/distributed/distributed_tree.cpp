@@ -5,6 +5,7 @@
 
 #include "exact/piece_codec.hpp"
 #include "exact/piece_trees.hpp"
+#include "exact/reeb_pieces.hpp"
 #include "mesh/duplicate_points.hpp"
 #include "mesh/mesh.hpp"
 #include "mesh/mesh_checks.hpp"
@@ -307,6 +308,7 @@ DistributedOutcome distributed_tree_on(RankInput in, const MeshInput *whole, con
   }
   std::string failure;
   std::vector<std::string> warnings;
+  int reeb = 0; // not a disk or a sphere: the Reeb graph (exact/reeb_pieces)
   if (rank == 0) {
     try {
       Mesh checked;
@@ -341,15 +343,13 @@ DistributedOutcome distributed_tree_on(RankInput in, const MeshInput *whole, con
         shape = domain_shape(topo);
       }
       warnings = check_domain(checked, rq.force);
-      if (!shape.empty())
-        throw Error((in.source.empty() ? std::string("the mesh") : in.source) + " is " + shape +
-                    ": its Reeb graph is not computed over MPI yet (run hoct without "
-                    "mpirun)");
+      reeb = !shape.empty();
     } catch (const std::exception &e) {
       failure = e.what();
     }
   }
   agree(comm, failure, rank, ranks);
+  MPI_Bcast(&reeb, 1, MPI_INT, 0, comm);
   // The field's reference and precision (the whole's, as every piece computes them) from the
   // first rank with cells.
   int source = empty_piece ? ranks : rank;
@@ -357,7 +357,8 @@ DistributedOutcome distributed_tree_on(RankInput in, const MeshInput *whole, con
   double field_scale[2] = {mesh.field.reference(), mesh.field.precision()};
   MPI_Bcast(field_scale, 2, MPI_DOUBLE, source, comm);
 
-  // 3. The piece's kept trees, 4. merged in a binary tree of ranks.
+  // 3. The piece's kept trees, 4. merged in a binary tree of ranks (a Reeb graph's pieces: glued
+  // on rank 0).
   PieceTrees trees;
   TreeTimings time;
   try {
@@ -366,11 +367,12 @@ DistributedOutcome distributed_tree_on(RankInput in, const MeshInput *whole, con
     eo.augmented = rq.augmented;
     eo.threads = threads;
     eo.fallback_refinement = rq.fallback_refinement;
-    if (empty_piece) {
+    if (empty_piece)
       trees.first_piece = trees.last_piece = rank;
-    } else {
+    else if (reeb)
+      trees = reeb_piece(mesh, place, eo, time);
+    else
       trees = piece_trees(mesh, place, eo, time);
-    }
   } catch (const std::exception &e) {
     failure = std::string(e.what());
   }
@@ -378,7 +380,23 @@ DistributedOutcome distributed_tree_on(RankInput in, const MeshInput *whole, con
   me.piece_seconds = build_seconds + clock.seconds();
   me.kept_nodes = static_cast<int64_t>(trees.nodes.size());
   const double tree_start = clock.seconds();
-  for (int step = 1; step < ranks; step *= 2) {
+  std::vector<PieceTrees> reeb_pieces;
+  if (reeb) {
+    const std::vector<std::byte> bytes = encode_piece_trees(trees);
+    const std::vector<std::vector<std::byte>> all = gather_bytes(comm, bytes);
+    if (rank != 0) {
+      me.bytes_sent = static_cast<int64_t>(bytes.size());
+      me.messages = 1;
+    }
+    for (std::size_t r = 0; r < all.size(); ++r) {
+      if (r > 0) {
+        me.bytes_received += static_cast<int64_t>(all[r].size());
+        ++me.messages;
+      }
+      reeb_pieces.push_back(r == 0 ? std::move(trees) : decode_piece_trees(all[r]));
+    }
+  }
+  for (int step = 1; step < ranks && !reeb; step *= 2) {
     if (rank % (2 * step) == step) {
       const std::vector<std::byte> bytes = encode_piece_trees(trees);
       send_bytes(comm, bytes, rank - step, step);
@@ -414,8 +432,29 @@ DistributedOutcome distributed_tree_on(RankInput in, const MeshInput *whole, con
   }
 
   // 5. Rank 0: the whole tree, finished as compute_tree finishes it.
-  TreeResult tree = tree_of_pieces(trees, rq.augmented, field_scale[0]);
+  TreeResult tree = reeb ? reeb_graph_of_pieces(reeb_pieces, rq.augmented, field_scale[0])
+                         : tree_of_pieces(trees, rq.augmented, field_scale[0]);
+  if (const int64_t ties = tree.stats.seam_paths_nonmonotone.value_or(0); ties > 0) {
+    // A seam piece whose path in the disks' tree does not rise (a tie with a fallback lattice
+    // node on a plateau, between pieces where one process has no seam): glued at its ends only,
+    // it would make a loop one process does not. Rank 0 computes the graph from the whole mesh.
+    d.whole_tree = std::to_string(ties) + " seam piece(s) between the pieces tie on a plateau";
+    if (ranks > 1 && whole) {
+      uint64_t ignored = 0;
+      MPI_Recv(&ignored, 1, MPI_UINT64_T, ranks - 1, kFingerprintTag, comm, MPI_STATUS_IGNORE);
+    }
+    MeshInput loaded;
+    if (!whole)
+      loaded = in.read_whole();
+    const MeshInput &all = whole ? *whole : loaded;
+    MeshBuildOptions bo;
+    bo.throw_on_error = false; // checked already (or forced past)
+    bo.threads = threads;
+    d.outcome = compute_tree(build_mesh(all, bo), rq, &all);
+    return d;
+  }
   time.tree = clock.seconds() - tree_start + (me.piece_seconds - build_seconds);
+  time.gluing = tree.stats.time.gluing;
   tree.stats.time = time;
   TreeContext context;
   context.warnings = warnings;

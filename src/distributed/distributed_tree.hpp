@@ -42,6 +42,9 @@ struct DistributedOutcome {
   // duplicate vertices); else why rank 0 checked the whole mesh alone (for the report a run
   // without MPI gives).
   std::string whole_check;
+  // On rank 0: empty when the pieces computed the tree; else why rank 0 computed it from the
+  // whole mesh alone (a Reeb graph whose seams between pieces the gluing could not follow).
+  std::string whole_tree;
 };
 
 // One rank's share of a mesh no rank holds whole (a partitioned file each rank reads its pieces

@@ -11,15 +11,52 @@
 #include "tree/stand_in_contraction.hpp"
 
 #include <algorithm>
+#include <unordered_map>
 
 namespace hoct {
 namespace {
 
-// The tree's nodes where they lie in the mesh, its arcs and persistence pairs.
+// The tree's nodes where they lie in the mesh, its arcs and persistence pairs. On a surface cut
+// open, a node glued from copies of one point (`links`: seam_links) is placed as the uncut mesh
+// places it: in the lowest cell among them, a fallback node if any of them is.
 TreeResult tree_result(const Mesh &mesh, const EdgeNodes &en, const ExactGraph &g,
-                       const ContourTree &ct, bool augmented) {
+                       const ContourTree &ct, bool augmented,
+                       std::span<const std::array<int64_t, 2>> links) {
+  std::unordered_map<int64_t, int64_t> parent;
+  const auto find = [&](int64_t x) {
+    auto it = parent.find(x);
+    if (it == parent.end())
+      return x;
+    while (it->second != x) {
+      x = it->second;
+      it = parent.find(x);
+    }
+    return x;
+  };
+  for (const auto &[a, b] : links) {
+    parent.try_emplace(a, a);
+    parent.try_emplace(b, b);
+    const int64_t x = find(a), y = find(b);
+    parent[std::max(x, y)] = std::min(x, y);
+  }
+  std::unordered_map<int64_t, std::vector<int64_t>> copies; // by root
+  for (const auto &[id, up] : parent)
+    copies[find(id)].push_back(id);
   return tree_result_of(ct, "exact", augmented, [&](TreeNode &n) {
-    const NodeSource where = g.source(mesh.topology, en, n.graph_node);
+    NodeSource where = g.source(mesh.topology, en, n.graph_node);
+    if (const auto it = copies.find(find(n.graph_node)); it != copies.end()) {
+      bool fallback = false;
+      int64_t lowest = -1;
+      for (const int64_t id : it->second) {
+        const NodeSource s = g.source(mesh.topology, en, id);
+        fallback = fallback || s.fallback;
+        if (lowest < 0 || s.cell < where.cell || (s.cell == where.cell && id < lowest)) {
+          where = s;
+          lowest = id;
+        }
+      }
+      where.fallback = fallback;
+    }
     n.cell = where.cell;
     n.uv = where.uv;
     n.location = where.location;
@@ -71,7 +108,7 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
   PathGluing gluing;
   if (opt.cut) {
     Stopwatch glue_clock;
-    gluing = seam_gluing(*opt.cut, en, graph.values);
+    gluing = seam_gluing(*opt.cut, en, graph.values, degenerate.lattice_on_edge);
     glued = glue_paths(ct, gluing, !opt.augmented);
     ct = std::move(glued.graph);
     time.gluing = glue_clock.seconds();
@@ -86,15 +123,17 @@ TreeResult exact_contour_tree(const Mesh &mesh, const ExactTreeOptions &opt) {
   clock.lap();
 
   // 9. The result: the tree's nodes in the mesh, and the graph to draw its arcs.
-  TreeResult r = tree_result(mesh, en, graph, ct, opt.augmented);
+  const std::vector<std::array<int64_t, 2>> links = seam_links(gluing);
+  TreeResult r = tree_result(mesh, en, graph, ct, opt.augmented, links);
   offset_values(r, mesh.field.reference());
   if (opt.arc_geometry)
-    r.graph = exact_arc_graph(mesh, en, graph, opt, threads, seam_links(gluing));
+    r.graph = exact_arc_graph(mesh, en, graph, opt, threads, links);
   time.output = clock.lap();
 
   ExactCounts &n = r.stats.exact.emplace(exact_counts(mesh, build));
   n.fallback_arcs_contracted = contracted;
   if (opt.cut) { // (compute_tree labels the result a Reeb graph, cut or not)
+    count_copies_once(*opt.cut, en, n);
     r.loops = graph_loops(ct);
     r.stats.seam_edges = static_cast<int64_t>(opt.cut->seams.size());
     r.stats.seam_paths_nonmonotone = glued.nonmonotone_paths;

@@ -3,6 +3,7 @@
 #include "cell/strict_extrema.hpp"
 #include "exact/exact_graph_build.hpp"
 #include "exact/graph_sweeps.hpp"
+#include "exact/piece_keys.hpp"
 #include "tree/node_order.hpp"
 #include "tree/stand_in_contraction.hpp"
 #include "tree/sweep_contour_tree.hpp"
@@ -16,96 +17,9 @@
 namespace hoct {
 namespace {
 
-bool within(const std::array<int32_t, 2> &span, int32_t first, int32_t last) {
-  return span[0] >= first && span[1] <= last;
-}
-
 bool before(const PieceNode &x, const PieceNode &y) {
   return x.value < y.value || (x.value == y.value && x.key < y.key);
 }
-
-// Each graph node's key, span and (for kept nodes) place.
-class PieceKeys {
-public:
-  PieceKeys(const Mesh &mesh, const PiecePlace &place, const ExactGraphBuild &b, int K)
-      : mesh_(mesh), place_(place), b_(b) {
-    const ExactGraph &g = b.graph;
-    for (const auto &[e, t, id] : b.degenerate.lattice_on_edge)
-      lattice_[id] = {e, std::llround(t * K)};
-    // The index of each interior and sub-vertex node among its cell's (they are consecutive).
-    tail_index_.resize(g.tail_source.size());
-    int64_t last_cell = -1, next = 0;
-    bool last_fallback = false;
-    for (std::size_t i = 0; i < g.tail_source.size(); ++i) {
-      if (lattice_.count(g.tail_base + static_cast<int64_t>(i)))
-        continue;
-      const NodeSource &s = g.tail_source[i];
-      if (s.cell != last_cell || s.fallback != last_fallback)
-        next = 0;
-      tail_index_[i] = next++;
-      last_cell = s.cell;
-      last_fallback = s.fallback;
-    }
-  }
-
-  NodeKey key(int64_t id) const {
-    const ExactGraph &g = b_.graph;
-    const Topology &topo = mesh_.topology;
-    if (id < g.edge_base)
-      return {NodeKey::Vertex, point(id), 0, 0};
-    if (id < g.tail_base) {
-      const int64_t i = id - g.edge_base;
-      const auto &off = b_.edge_nodes.offset;
-      const int64_t e = std::upper_bound(off.begin(), off.end(), i) - off.begin() - 1;
-      const auto &ev = topo.edge_vertices(e);
-      return {NodeKey::EdgeNode, point(ev[0]), point(ev[1]), i - off[e]};
-    }
-    // Fallback lattice nodes on edges by their edge and step (refine_degenerate_cells numbers
-    // them in that order), the other fallback nodes by their cell and rank among its nodes.
-    if (auto it = lattice_.find(id); it != lattice_.end()) {
-      const auto &ev = topo.edge_vertices(it->second.first);
-      return {NodeKey::EdgeLattice, point(ev[0]), point(ev[1]), it->second.second};
-    }
-    const std::size_t t = static_cast<std::size_t>(id - g.tail_base);
-    const NodeSource &s = g.tail_source[t];
-    return {s.fallback ? NodeKey::SubVertex : NodeKey::Interior, place_.first_triangle + s.cell, 0,
-            tail_index_[t]};
-  }
-
-  // The pieces that may hold node `id`: its vertex's, its edge's (vertex and edge nodes, lattice
-  // nodes on edges), or this piece alone.
-  std::array<int32_t, 2> span(int64_t id) const {
-    const ExactGraph &g = b_.graph;
-    if (id < g.edge_base)
-      return place_.point_span[mesh_.topology.vertex_point(id)];
-    if (id < g.tail_base) {
-      const auto &off = b_.edge_nodes.offset;
-      return edge_span(std::upper_bound(off.begin(), off.end(), id - g.edge_base) - off.begin() -
-                       1);
-    }
-    if (auto it = lattice_.find(id); it != lattice_.end())
-      return edge_span(it->second.first);
-    return {place_.piece, place_.piece};
-  }
-
-  // The pieces of an edge's cells hold both its ends: within both ends' spans.
-  std::array<int32_t, 2> edge_span(int64_t e) const {
-    const Topology &topo = mesh_.topology;
-    const auto &ev = topo.edge_vertices(e);
-    const auto &sa = place_.point_span[topo.vertex_point(ev[0])],
-               &sb = place_.point_span[topo.vertex_point(ev[1])];
-    return {std::max(sa[0], sb[0]), std::min(sa[1], sb[1])};
-  }
-
-private:
-  int64_t point(int64_t v) const { return place_.global_point[mesh_.topology.vertex_point(v)]; }
-
-  const Mesh &mesh_;
-  const PiecePlace &place_;
-  const ExactGraphBuild &b_;
-  std::unordered_map<int64_t, std::pair<int64_t, int64_t>> lattice_; // id -> (edge, step)
-  std::vector<int64_t> tail_index_;
-};
 
 } // namespace
 
@@ -116,24 +30,10 @@ PieceTrees piece_trees(const Mesh &mesh, const PiecePlace &place, const ExactTre
   eo.cut = nullptr;
   const ExactGraphBuild b = build_exact_graph(mesh, eo, time);
   const ExactGraph &g = b.graph;
-  const int K = eo.fallback_refinement > 0 ? eo.fallback_refinement
-                                           : std::max(4, 2 * std::max(1, mesh.field.max_degree()));
-  const PieceKeys keys(mesh, place, b, K);
+  const PieceKeys keys(mesh, place, b, lattice_steps(mesh, eo));
   const int64_t n = g.size();
   const int threads = threads_for(n, thread_count(eo.threads), 8 * eo.cells_per_thread);
-
-  // Ascending (value, key): ids follow the keys but for fallback nodes, so only runs of equal
-  // values need sorting by key.
-  std::vector<int64_t> order = ascending_order(g.values, threads);
-  for (int64_t i = 0; i < n;) {
-    int64_t j = i + 1;
-    while (j < n && g.values[order[j]] == g.values[order[i]])
-      ++j;
-    if (j - i > 1)
-      std::sort(order.begin() + i, order.begin() + j,
-                [&](int64_t x, int64_t y) { return keys.key(x) < keys.key(y); });
-    i = j;
-  }
+  const std::vector<int64_t> order = key_order(g.values, keys, threads);
   // Kept: nodes other pieces may hold too (and every node of an augmented tree).
   std::vector<uint8_t> keep(static_cast<std::size_t>(n), eo.augmented ? 1 : 0);
   if (!eo.augmented)
@@ -185,50 +85,11 @@ PieceTrees piece_trees(const Mesh &mesh, const PiecePlace &place, const ExactTre
   out.first_piece = out.last_piece = place.piece;
   out.join_parent = kt.join_parent;
   out.split_parent = kt.split_parent;
-  out.nodes.resize(kt.nodes.size());
-  // Vertices and edge nodes other pieces may hold: their slack before the certain extrema are
-  // taken out, and what this piece's edges and cells say of their certainty.
-  std::vector<uint8_t> wanted(static_cast<std::size_t>(mesh.topology.num_vertices()), 0);
-  for (const int64_t id : kt.nodes)
-    if (id < g.edge_base && keep[id])
-      wanted[id] = 1;
-  const std::vector<uint8_t> strict_vertex =
-      strict_vertex_extrema(mesh.topology, mesh.field, wanted);
-  auto slack_in = [](const std::vector<std::pair<int64_t, double>> &errors, int64_t id) {
-    auto it = std::lower_bound(errors.begin(), errors.end(), std::pair<int64_t, double>{id, -1.0});
-    return it != errors.end() && it->first == id ? it->second : -1.0;
-  };
-  for (std::size_t i = 0; i < kt.nodes.size(); ++i) {
-    const int64_t id = kt.nodes[i];
-    PieceNode &p = out.nodes[i];
-    p.key = keys.key(id);
-    p.value = g.values[id];
-    p.span = keys.span(id);
-    const NodeSource s = g.source(mesh.topology, b.edge_nodes, id);
-    p.order_cell = place.first_triangle + s.cell;
-    p.position = mesh.geometry.position(s.cell, s.uv[0], s.uv[1]);
-    const CellPlace c =
-        mesh.origins.identity() ? CellPlace{s.cell, s.uv} : mesh.origins.to_input(s.cell, s.uv);
-    p.cell = place.first_cell + c.cell;
-    p.uv = c.uv;
-    p.location = s.location;
-    p.fallback = s.fallback;
-    p.shared = id < g.tail_base && !within(p.span, place.piece, place.piece);
-    if (!p.shared) {
-      p.slack = slack_in(b.degenerate.node_error, id);
-      continue;
-    }
-    p.slack = slack_in(b.degenerate.node_bound, id);
-    if (id < g.edge_base) {
-      p.strict = strict_vertex[id];
-    } else {
-      const int64_t k = id - g.edge_base;
-      const auto &off = b.edge_nodes.offset;
-      const int64_t e = std::upper_bound(off.begin(), off.end(), k) - off.begin() - 1;
-      if (strict_edge_extremum(mesh.topology, mesh.field, b.edge_nodes, e, k))
-        p.strict = b.edge_nodes.nodes[k].second > 0 ? 1 : 2;
-    }
-  }
+  // Vertices and edge nodes other pieces may hold.
+  std::vector<uint8_t> shared(static_cast<std::size_t>(g.tail_base), 0);
+  for (int64_t id = 0; id < g.tail_base; ++id)
+    shared[id] = !within(keys.span(id), place.piece, place.piece);
+  out.nodes = piece_nodes(mesh, place, b, keys, kt.nodes, shared);
   // The shared edges' chains, by the kept nodes' indices.
   std::unordered_map<int64_t, int64_t> index_of;
   for (std::size_t i = 0; i < kt.nodes.size(); ++i)
@@ -265,6 +126,29 @@ PieceTrees piece_trees(const Mesh &mesh, const PiecePlace &place, const ExactTre
   out.counts = exact_counts(mesh, b);
   split_cell_time(b.totals, time);
   return out;
+}
+
+ExactCounts sum_counts(const ExactCounts &x, const ExactCounts &y) {
+  ExactCounts c;
+  c.cells = x.cells + y.cells;
+  c.graph_nodes = x.graph_nodes + y.graph_nodes;
+  c.edge_critical_points = x.edge_critical_points + y.edge_critical_points;
+  c.level_edges = x.level_edges + y.level_edges;
+  c.interior_critical_points = x.interior_critical_points + y.interior_critical_points;
+  c.connections_direct = x.connections_direct + y.connections_direct;
+  c.connections_traced = x.connections_traced + y.connections_traced;
+  c.connections_failed = x.connections_failed + y.connections_failed;
+  c.descent_steps = x.descent_steps + y.descent_steps;
+  c.fallback_cells = x.fallback_cells + y.fallback_cells;
+  for (std::size_t r = 0; r < c.fallback_by_reason.size(); ++r)
+    c.fallback_by_reason[r] = x.fallback_by_reason[r] + y.fallback_by_reason[r];
+  c.fallback_error = std::max(x.fallback_error, y.fallback_error);
+  c.unresolved_interior_zeros = x.unresolved_interior_zeros + y.unresolved_interior_zeros;
+  c.degenerate_points = x.degenerate_points + y.degenerate_points;
+  c.critical_corners = x.critical_corners + y.critical_corners;
+  c.critical_curves = x.critical_curves + y.critical_curves;
+  c.degenerate_slack = std::max(x.degenerate_slack, y.degenerate_slack);
+  return c;
 }
 
 PieceTrees merge_piece_trees(const PieceTrees &a, const PieceTrees &b, bool augmented,
@@ -383,26 +267,9 @@ PieceTrees merge_piece_trees(const PieceTrees &a, const PieceTrees &b, bool augm
   out.join_parent = kt.join_parent;
   out.split_parent = kt.split_parent;
 
-  ExactCounts &c = out.counts;
-  const ExactCounts &x = a.counts, &y = b.counts;
-  c.cells = x.cells + y.cells;
-  c.graph_nodes = x.graph_nodes + y.graph_nodes - shared;
-  c.edge_critical_points = x.edge_critical_points + y.edge_critical_points - shared_edge_nodes;
-  c.level_edges = x.level_edges + y.level_edges;
-  c.interior_critical_points = x.interior_critical_points + y.interior_critical_points;
-  c.connections_direct = x.connections_direct + y.connections_direct;
-  c.connections_traced = x.connections_traced + y.connections_traced;
-  c.connections_failed = x.connections_failed + y.connections_failed;
-  c.descent_steps = x.descent_steps + y.descent_steps;
-  c.fallback_cells = x.fallback_cells + y.fallback_cells;
-  for (std::size_t r = 0; r < c.fallback_by_reason.size(); ++r)
-    c.fallback_by_reason[r] = x.fallback_by_reason[r] + y.fallback_by_reason[r];
-  c.fallback_error = std::max(x.fallback_error, y.fallback_error);
-  c.unresolved_interior_zeros = x.unresolved_interior_zeros + y.unresolved_interior_zeros;
-  c.degenerate_points = x.degenerate_points + y.degenerate_points;
-  c.critical_corners = x.critical_corners + y.critical_corners;
-  c.critical_curves = x.critical_curves + y.critical_curves;
-  c.degenerate_slack = std::max(x.degenerate_slack, y.degenerate_slack);
+  out.counts = sum_counts(a.counts, b.counts);
+  out.counts.graph_nodes -= shared;
+  out.counts.edge_critical_points -= shared_edge_nodes;
   return out;
 }
 

@@ -90,6 +90,9 @@ struct PiecePlace {
 PieceTrees piece_trees(const Mesh &piece, const PiecePlace &place, const ExactTreeOptions &options,
                        TreeTimings &time);
 
+// The counts of two groups of pieces together, before the nodes both hold are counted once.
+ExactCounts sum_counts(const ExactCounts &x, const ExactCounts &y);
+
 // Groups a (pieces first .. k) and b (k + 1 .. last) as one.
 PieceTrees merge_piece_trees(const PieceTrees &a, const PieceTrees &b, bool augmented,
                              int threads = 1);

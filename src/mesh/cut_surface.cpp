@@ -143,12 +143,78 @@ void walk_fan(const Topology &t, int64_t v, Fan &fan) {
   fan.crossed = std::move(back_crossed);
 }
 
+// The wedges at vertices that may hold several fans (split_vertices): corners at such a vertex
+// are in one wedge when joined across its uncut interior edges (union-find over the corners).
+class SplitFans {
+public:
+  SplitFans(const Topology &t, std::span<const uint8_t> is_cut, std::span<const int64_t> split)
+      : split_(split.begin(), split.end()) {
+    if (split_.empty())
+      return;
+    for (int64_t c = 0; c < t.num_cells(); ++c)
+      for (int k = 0; k < 3; ++k)
+        if (holds(t.cell_vertices(c)[k]))
+          corners_.push_back({t.cell_vertices(c)[k], 3 * c + k});
+    std::sort(corners_.begin(), corners_.end());
+    parent_.resize(corners_.size());
+    std::iota(parent_.begin(), parent_.end(), int64_t{0});
+    for (int64_t e = 0; e < t.num_edges(); ++e) {
+      if (is_cut[e] || t.edge_cell_count(e) != 2)
+        continue;
+      const int64_t c0 = t.edge_cells_begin(e)[0], c1 = t.edge_cells_begin(e)[1];
+      for (int64_t w : t.edge_vertices(e))
+        if (holds(w)) {
+          const int64_t a = find(parent_, index(w, 3 * c0 + corner_of(t, c0, w)));
+          const int64_t b = find(parent_, index(w, 3 * c1 + corner_of(t, c1, w)));
+          parent_[std::max(a, b)] = std::min(a, b);
+        }
+    }
+  }
+
+  bool holds(int64_t v) const { return std::binary_search(split_.begin(), split_.end(), v); }
+
+  // Vertex v's wedges, ranked by their lowest corners (the corners are ascending, so a wedge's
+  // root, its lowest index, is its lowest corner): appends (corner, rank) for each of its
+  // corners if it has two or more, and returns how many.
+  int64_t wedges(int64_t v, std::vector<std::pair<int64_t, int64_t>> &corner_rank) {
+    const auto first =
+        std::lower_bound(corners_.begin(), corners_.end(), std::pair<int64_t, int64_t>{v, -1}) -
+        corners_.begin();
+    auto last = first;
+    while (last < static_cast<std::ptrdiff_t>(corners_.size()) && corners_[last].first == v)
+      ++last;
+    std::vector<int64_t> roots;
+    for (auto i = first; i < last; ++i)
+      if (find(parent_, i) == i)
+        roots.push_back(i);
+    if (roots.size() > 1)
+      for (auto i = first; i < last; ++i) {
+        const int64_t root = find(parent_, i);
+        corner_rank.push_back({corners_[i].second,
+                               std::lower_bound(roots.begin(), roots.end(), root) - roots.begin()});
+      }
+    return static_cast<int64_t>(roots.size());
+  }
+
+private:
+  int64_t index(int64_t v, int64_t corner) const {
+    return std::lower_bound(corners_.begin(), corners_.end(),
+                            std::pair<int64_t, int64_t>{v, corner}) -
+           corners_.begin();
+  }
+
+  std::vector<int64_t> split_;
+  std::vector<std::pair<int64_t, int64_t>> corners_; // (vertex, corner), ascending
+  std::vector<int64_t> parent_;
+};
+
 } // namespace
 
-CornerCut cut_corners(const Topology &t, std::span<const int64_t> cut_edges) {
+CornerCut cut_corners(const Topology &t, std::span<const int64_t> cut_edges,
+                      std::span<const int64_t> split_vertices) {
   const int64_t nv = t.num_vertices();
   std::vector<uint8_t> is_cut(static_cast<std::size_t>(t.num_edges()), 0);
-  std::vector<int64_t> cut_vertices;
+  std::vector<int64_t> cut_vertices(split_vertices.begin(), split_vertices.end());
   for (int64_t e : cut_edges) {
     is_cut[e] = 1;
     for (int64_t v : t.edge_vertices(e))
@@ -156,6 +222,7 @@ CornerCut cut_corners(const Topology &t, std::span<const int64_t> cut_edges) {
   }
   std::sort(cut_vertices.begin(), cut_vertices.end());
   cut_vertices.erase(std::unique(cut_vertices.begin(), cut_vertices.end()), cut_vertices.end());
+  SplitFans fans(t, is_cut, split_vertices);
   // Each vertex on the cut: the wedges of its fan between cut (or boundary) edges, one copy
   // each, numbered in the order of the wedges' lowest corners (3 cell + corner). Recorded as
   // (corner, wedge rank) per corner at the vertex, and the wedge count per cut vertex.
@@ -165,6 +232,10 @@ CornerCut cut_corners(const Topology &t, std::span<const int64_t> cut_edges) {
   Fan fan;
   for (std::size_t iv = 0; iv < cut_vertices.size(); ++iv) {
     const int64_t v = cut_vertices[iv];
+    if (fans.holds(v)) {
+      wedges[iv] = fans.wedges(v, corner_rank);
+      continue;
+    }
     walk_fan(t, v, fan);
     const std::size_t m = fan.cells.size();
     // A cycle starts after one of its cut crossings (an interior vertex on the cut has two).
@@ -266,26 +337,30 @@ std::vector<std::array<int64_t, 4>> seam_vertices(const Topology &t, const Corne
   return seams;
 }
 
-CutSurface cut_open(const Mesh &mesh, std::span<const int64_t> cut_edges) {
+CutSurface cut_open(const Mesh &mesh, std::span<const int64_t> cut_edges,
+                    std::span<const int64_t> split_vertices) {
   const Topology &t = mesh.topology;
   std::vector<uint8_t> is_cut(static_cast<std::size_t>(t.num_edges()), 0);
   for (int64_t e : cut_edges)
     is_cut[e] = 1;
-  CornerCut corner_cut = cut_corners(t, cut_edges);
+  CornerCut corner_cut = cut_corners(t, cut_edges, split_vertices);
   CutSurface out;
   std::vector<int64_t> edge_origin;
   Topology cut = t.cut_open(corner_cut.first, corner_cut.split_corners, is_cut, &edge_origin);
   out.vertex_origin = std::move(corner_cut.vertex_origin);
   out.group_offset = std::move(corner_cut.group_offset);
   out.copies = std::move(corner_cut.copies);
+  // Every component a disk (Euler characteristic 1, one boundary loop) or a sphere left whole
+  // (2, none: its cut graph is empty).
   const auto disks = [&](const Topology &x) {
-    return x.components() == t.components() && x.euler_characteristic() == x.components() &&
-           x.boundary_loops() == x.components();
+    const int64_t loops = x.boundary_loops(), spheres = x.components() - loops;
+    return x.components() == t.components() && spheres >= 0 &&
+           x.euler_characteristic() == loops + 2 * spheres;
   };
   if (!disks(cut))
     throw Error((mesh.source.empty() ? std::string("the mesh") : mesh.source) +
                 ": cutting the surface open along " + std::to_string(cut_edges.size()) +
-                " edges did not give one disk per component (Euler characteristic " +
+                " edges did not give one disk (or sphere) per component (Euler characteristic " +
                 std::to_string(cut.euler_characteristic()) + ", " +
                 std::to_string(cut.boundary_loops()) + " boundary loops, " +
                 std::to_string(cut.components()) + " components): an internal error");

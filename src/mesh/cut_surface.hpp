@@ -44,7 +44,13 @@ struct CornerCut {
   int64_t corner_vertex(const Topology &topology, int64_t c, int k) const;
 };
 
-CornerCut cut_corners(const Topology &topology, std::span<const int64_t> cut_edges);
+//
+// `split_vertices` (ascending, optional): vertices cut apart into their fans too, whether or not
+// on the cut: a piece of a partitioned mesh may hold two or more fans of cells around a point it
+// shares with other pieces (their cells lie between), which must be apart for its components to
+// be disks (exact/reeb_pieces).
+CornerCut cut_corners(const Topology &topology, std::span<const int64_t> cut_edges,
+                      std::span<const int64_t> split_vertices = {});
 
 // Every corner's vertex in the cut mesh, 3 per cell in the cells' corner order.
 std::vector<int64_t> corner_vertices(const Topology &topology, const CornerCut &cut);
@@ -68,8 +74,11 @@ struct CutSurface {
   std::vector<std::array<int64_t, 2>> seams;
 };
 
-// Cuts `mesh` open along `cut_edges` (from cut_graph_edges). Throws hoct::Error if the result is
-// not one disk per component (a mesh the topology checks should have refused).
-CutSurface cut_open(const Mesh &mesh, std::span<const int64_t> cut_edges);
+// Cuts `mesh` open along `cut_edges` (from cut_graph_edges), and apart at `split_vertices`
+// (cut_corners). Throws hoct::Error if the result is not one disk per component, or a sphere
+// (a closed component of genus 0 has an empty cut graph), as for a mesh the topology checks
+// should have refused.
+CutSurface cut_open(const Mesh &mesh, std::span<const int64_t> cut_edges,
+                    std::span<const int64_t> split_vertices = {});
 
 } // namespace hoct

@@ -53,8 +53,12 @@ TreeResult method_tree(const Mesh &mesh, const TreeRequest &rq, const MeshInput 
     const double cut_seconds = clock.lap();
     TreeResult tree = exact_contour_tree(cut ? cut->mesh : mesh, eo);
     tree.reeb_graph = reeb;
-    if (reeb)
+    if (reeb) {
       tree.stats.time.cut = cut_seconds;
+      // Spheres and disks only (several components): nothing cut, nothing glued.
+      tree.stats.seam_edges = tree.stats.seam_edges.value_or(0);
+      tree.stats.seam_paths_nonmonotone = tree.stats.seam_paths_nonmonotone.value_or(0);
+    }
     tree.stats.time.tree = cut_seconds + clock.seconds();
     return tree;
   }

@@ -105,7 +105,8 @@ struct TreeStats {
   std::vector<std::pair<std::string, double>> other;
 
   // As name/value pairs ("cells", ..., "time_tree_s"), in one fixed order; the time_* entries
-  // only with `timings`.
+  // and seam_edges (how the surface was cut: one process's cut differs from the pieces') only
+  // with `timings`.
   std::vector<std::pair<std::string, double>> entries(bool timings = true) const;
   // The inverse of entries() (unknown names go to `other`).
   static TreeStats from_entries(const std::vector<std::pair<std::string, double>> &entries);

@@ -1,5 +1,6 @@
 """What the tests of hoct under mpirun share: the launcher (skip, exit 77, without one), its
 environment and `mpi(n, ...)`, which runs the hoct CLI on n ranks."""
+import json
 import os
 import re
 import shutil
@@ -38,19 +39,34 @@ def read(path):
 
 
 def shape_counts(text):
-    """(Euler characteristic, boundary loops, components) as hoct info or a refusal states them."""
+    """(Euler characteristic, boundary loops, components) as hoct info states them."""
     return tuple(int(re.search(pattern, text).group(1)) for pattern in
                  (r"Euler characteristic (-?\d+)", r"(\d+) boundary loop", r"(\d+) component"))
 
 
-def refused_with_shape(r, label, path, ranks=(2, 3, 7), read_by_pieces=False):
-    """`mpirun hoct tree path` (a surface with holes) refused on every rank count with the
-    whole's counts, those of `hoct info` in one process."""
+def reeb_with_shape(r, label, path, ranks=(2, 3, 7), read_by_pieces=False):
+    """`mpirun hoct tree path` (a planar surface with holes and a height-like field, such as hoct's
+    plate) on every rank count: the shape the pieces find together (rank 0 does not check the
+    whole again) is no disk, so the result is the Reeb graph of one process (byte-identical
+    JSON), its loops the whole's first Betti number from `hoct info`'s counts (components -
+    Euler characteristic: one loop per hole); read_by_pieces: each rank reads its own pieces."""
     from hoct_testing import run
-    want = shape_counts(run("info", path).stdout)
+    chi, _, components = shape_counts(run("info", path).stdout)
+    want = f"{path}.shape.json"
+    run("tree", path, "--json", want, "--no-timings", "-q")
     for n in ranks:
-        p = mpi(n, "tree", path)
-        r.check(p.returncode != 0 and "Reeb graph is not computed over MPI" in p.stderr
-                and shape_counts(p.stderr) == want
+        got = f"{path}.shape{n}.json"
+        p = mpi(n, "tree", path, "--json", got, "--no-timings")
+        r.check(p.returncode == 0 and os.path.exists(got) and read(got) == read(want),
+                f"{label}, {n} ranks: the JSON of one process ({p.returncode}):\n"
+                f"{p.stderr[-1500:]}")
+        if p.returncode != 0 or not os.path.exists(got):
+            continue
+        with open(got) as f:
+            graph = json.load(f)
+        r.check(graph.get("kind") == "Reeb graph" and graph.get("loops") == components - chi
+                and "Reeb graph" in p.stdout and "checks: by the pieces together" in p.stdout
                 and (not read_by_pieces or "reads the whole" not in p.stderr),
-                f"{label}, {n} ranks: the whole's shape {want}:\n{p.stderr[-1500:]}")
+                f"{label}, {n} ranks: a Reeb graph with the whole's {components - chi} loops "
+                f"({graph.get('kind')}, {graph.get('loops')} loops), found by the pieces:\n"
+                f"{p.stdout[-1500:]}{p.stderr[-800:]}")

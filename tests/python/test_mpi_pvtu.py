@@ -9,7 +9,8 @@ independent truth is one process reading the whole file (`hoct tree FILE.pvtu`, 
 for 1, 2, 3, 4 and 7 ranks (more ranks than pieces: ranks without any) the JSON (--no-timings,
 the input's fingerprint included) is byte-identical, the ranks read their pieces alone (no note
 that every rank reads the whole) and check the whole mesh together. A plate with 100 holes split
-into pieces is refused with the whole's shape (hoct info's counts). Pieces whose fields differ,
+into pieces, read by pieces too, gets the Reeb graph of one process, with one loop per hole (hoct
+info's counts; more partitioned Reeb graphs in test_mpi_reeb). Pieces whose fields differ,
 and a broken piece file, give the error of one process (every rank reads the whole then), once.
 
 Skipped (exit 77) without mpirun, VTK's Python module or an MPI build of hoct."""
@@ -20,7 +21,7 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from hoct_testing import Results, run, tempdir  # noqa: E402
-from mpi_testing import mpi, read, refused_with_shape, require_mpi_hoct  # noqa: E402
+from mpi_testing import mpi, read, reeb_with_shape, require_mpi_hoct  # noqa: E402
 
 try:
     import vtk
@@ -89,12 +90,12 @@ with tempdir() as d:
     hand = [f"hand_{k}.vtu" for k in range(3)]
     same_for_all_ranks("hand-cut, an empty piece", hand_pvtu)
 
-    # A plate with 100 holes in pieces: refused, with the whole's shape.
+    # A plate with 100 holes in pieces: its Reeb graph, with the whole's loops.
     run("generate", "plate", "--cells", "2000", "-o", os.path.join(d, "plate.vtu"))
     plate = os.path.join(d, "plate.pvtu")
     write_pieces(read_grid(os.path.join(d, "plate.vtu")), plate, 4, 1)
 
-    refused_with_shape(r, "plate pieces", plate, read_by_pieces=True)
+    reeb_with_shape(r, "plate pieces", plate, read_by_pieces=True)
 
     # What the ranks cannot join alone: one process's error, once.
     os.makedirs(os.path.join(d, "bad"))

@@ -1,0 +1,37 @@
+// The Reeb graph of a partitioned mesh that is not a disk or a sphere (holes, handles, a twist,
+// several components), computed piece by piece (docs/ALGORITHM.md §7, §9).
+//
+// The join/split merge of exact/piece_trees is exact only where the level sets make no loops.
+// Here the surface is cut into disks along the pieces' borders and, inside each piece, along its
+// own cut graph (mesh/cut_surface; a point where the piece holds two or more fans is cut apart
+// too). Each piece reduces its disks' join and split trees to the nodes the gluing needs: the
+// copies of its cut points and the nodes along its cut edges and along the edges it shares with
+// other pieces. The pieces' disks' contour trees, put together, are glued back along all those
+// seams (tree/path_gluing): the whole surface's Reeb graph, the one a single process computes
+// from its own cut, with the same nodes, values, places and arcs for any number of pieces.
+#pragma once
+
+#include "exact/exact_tree_options.hpp"
+#include "exact/piece_trees.hpp"
+#include "mesh/mesh.hpp"
+#include "tree/tree_result.hpp"
+
+#include <cstdint>
+#include <span>
+
+namespace hoct {
+
+// One piece's kept join and split trees of its disks, and the chains of its cut edges and of
+// the edges it shares with other pieces (PieceTrees::chains: each edge's ends and edge nodes,
+// one chain per copy; a point's copies are kept nodes with one key). Counts count each of the
+// piece's own copies once.
+PieceTrees reeb_piece(const Mesh &piece, const PiecePlace &place, const ExactTreeOptions &options,
+                      TreeTimings &time);
+
+// The whole mesh's Reeb graph from every piece's reeb_piece, in piece order: values absolute
+// (`reference` added back), the fallback stand-in's arcs contracted as exact_contour_tree does.
+// Its seam_edges are the edges glued back: the pieces' cuts and the edges between pieces.
+TreeResult reeb_graph_of_pieces(std::span<const PieceTrees> pieces, bool augmented,
+                                double reference);
+
+} // namespace hoct

@@ -1,0 +1,204 @@
+// The exact Reeb graph computed piece by piece (exact/reeb_pieces) against the one a single
+// process computes from its own cut of the whole mesh: the plate (100 holes) of degrees 2 and 3,
+// with a plateau (fallback cells across the pieces), with its cells shuffled (pieces that hold
+// several fans around the points they share), an annulus, a Moebius strip and a torus, cut into
+// 1, 2, 3, 4, 7 and 16 pieces of contiguous cells: the same nodes (type, value, place: bit for
+// bit), arcs, pairs, loops and counts. Also: a point where a piece holds two fans is cut apart
+// (mesh/cut_surface's split vertices).
+#include "datasets/datasets.hpp"
+#include "exact/exact_contour_tree.hpp"
+#include "exact/piece_codec.hpp"
+#include "exact/reeb_pieces.hpp"
+#include "mesh/cut_surface.hpp"
+#include "mesh/mesh.hpp"
+#include "mesh/mesh_partition.hpp"
+#include "test_meshes.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <random>
+
+namespace hoct {
+namespace {
+
+using testing::surface_grid;
+
+// The Reeb graph as one process computes it (pipeline/compute_tree): the whole mesh cut open
+// along its cut graph, the disks' tree glued back.
+TreeResult whole_reeb_graph(const MeshInput &whole, MeshScales &scales, bool augmented) {
+  MeshBuildOptions bo;
+  bo.whole_scales = [&](const MeshScales &own) { return scales = own; };
+  const Mesh mesh = build_mesh(whole, bo);
+  const std::vector<int64_t> cut_edges = cut_graph_edges(mesh.topology);
+  const CutSurface cut = cut_open(mesh, cut_edges);
+  ExactTreeOptions eo;
+  eo.augmented = augmented;
+  eo.threads = 1;
+  eo.cut = &cut;
+  return exact_contour_tree(cut.mesh, eo);
+}
+
+// The same from `pieces` pieces, each through bytes as the ranks send them, glued as rank 0
+// glues them (distributed/distributed_tree).
+TreeResult reeb_graph_by_pieces(const MeshInput &whole, int pieces, const MeshScales &scales,
+                                bool augmented) {
+  const auto spans = point_piece_spans(whole, pieces);
+  std::vector<PieceTrees> all;
+  double reference = 0;
+  for (int r = 0; r < pieces; ++r) {
+    const auto [begin, end] = piece_cell_range(static_cast<int64_t>(whole.num_cells()), pieces, r);
+    const MeshPiece piece = extract_piece(whole, begin, end);
+    MeshBuildOptions bo;
+    bo.throw_on_error = false; // a piece may hold several fans around a shared point
+    bo.whole_scales = [&](const MeshScales &) { return scales; };
+    const Mesh mesh = build_mesh(piece.input, bo);
+    reference = mesh.field.reference();
+    const auto piece_spans = piece_point_spans(piece.global_point, spans);
+    PiecePlace place{r, piece.global_point, begin, triangles_before(whole, begin), piece_spans};
+    ExactTreeOptions eo;
+    eo.augmented = augmented;
+    eo.threads = 1;
+    TreeTimings time;
+    all.push_back(decode_piece_trees(encode_piece_trees(reeb_piece(mesh, place, eo, time))));
+  }
+  return reeb_graph_of_pieces(all, augmented, reference);
+}
+
+void expect_same_graph(const TreeResult &a, const TreeResult &b, const std::string &what) {
+  ASSERT_EQ(a.nodes.size(), b.nodes.size()) << what;
+  for (std::size_t i = 0; i < a.nodes.size(); ++i) {
+    const TreeNode &x = a.nodes[i], &y = b.nodes[i];
+    EXPECT_EQ(x.type, y.type) << what << " node " << i;
+    EXPECT_EQ(x.value, y.value) << what << " node " << i;
+    EXPECT_EQ(x.cell, y.cell) << what << " node " << i;
+    EXPECT_EQ(x.uv, y.uv) << what << " node " << i;
+    EXPECT_EQ(x.position, y.position) << what << " node " << i;
+    EXPECT_EQ(x.location, y.location) << what << " node " << i;
+    EXPECT_EQ(x.fallback, y.fallback) << what << " node " << i;
+  }
+  EXPECT_EQ(a.arcs, b.arcs) << what;
+  EXPECT_EQ(a.loops, b.loops) << what;
+  ASSERT_EQ(a.pairs.size(), b.pairs.size()) << what;
+  for (std::size_t i = 0; i < a.pairs.size(); ++i) {
+    EXPECT_EQ(a.pairs[i].birth, b.pairs[i].birth) << what;
+    EXPECT_EQ(a.pairs[i].death, b.pairs[i].death) << what;
+  }
+  const ExactCounts &p = *a.stats.exact, &q = *b.stats.exact;
+  EXPECT_EQ(p.cells, q.cells) << what;
+  EXPECT_EQ(p.graph_nodes, q.graph_nodes) << what;
+  EXPECT_EQ(p.edge_critical_points, q.edge_critical_points) << what;
+  EXPECT_EQ(p.interior_critical_points, q.interior_critical_points) << what;
+  EXPECT_EQ(p.fallback_cells, q.fallback_cells) << what;
+  EXPECT_EQ(p.fallback_error, q.fallback_error) << what;
+  EXPECT_EQ(p.fallback_arcs_contracted, q.fallback_arcs_contracted) << what;
+  EXPECT_EQ(a.stats.seam_paths_nonmonotone, b.stats.seam_paths_nonmonotone) << what;
+}
+
+// Returns the whole's loops (for the caller to check against the domain's). `flagged`: the
+// piece counts whose gluing met seam pieces that do not rise (ties with fallback nodes on a
+// plateau, between pieces): those the distributed tree hands to rank 0's whole mesh, so they
+// are not compared; without it, every count must give the whole's graph.
+int64_t check_all_piece_counts(const MeshInput &whole, const std::string &name,
+                               int *flagged = nullptr) {
+  MeshScales scales;
+  int64_t loops = -1;
+  for (bool augmented : {false, true}) {
+    const TreeResult expected = whole_reeb_graph(whole, scales, augmented);
+    EXPECT_EQ(expected.stats.seam_paths_nonmonotone, 0) << name;
+    if (!augmented)
+      loops = expected.loops;
+    for (int pieces : {1, 2, 3, 4, 7, 16}) {
+      const std::string what =
+          name + (augmented ? " augmented" : "") + ", " + std::to_string(pieces) + " pieces";
+      const TreeResult got = reeb_graph_by_pieces(whole, pieces, scales, augmented);
+      if (flagged && got.stats.seam_paths_nonmonotone.value_or(0) > 0) {
+        ++*flagged;
+        continue;
+      }
+      expect_same_graph(got, expected, what);
+    }
+  }
+  return loops;
+}
+
+MeshInput plate(int degree, int cells) {
+  DatasetOptions o;
+  o.degree = degree;
+  o.cells = cells;
+  return generate_dataset("plate", o);
+}
+
+TEST(ReebPieces, ThePlateForAnyNumberOfPieces) {
+  EXPECT_EQ(check_all_piece_counts(plate(3, 2000), "cubic plate"), 100);
+  EXPECT_EQ(check_all_piece_counts(plate(2, 1500), "quadratic plate"), 100);
+}
+
+TEST(ReebPieces, APlateauOnThePlate) {
+  // Every node value below the median raised to it: constant cells and level edges, fallback
+  // cells on the seams and between the pieces, ties between copies and across pieces.
+  MeshInput in = plate(2, 1500);
+  std::vector<double> sorted(in.values.begin(), in.values.end());
+  std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
+  const double floor = sorted[sorted.size() / 2];
+  for (double &v : in.values)
+    v = std::max(v, floor);
+  int flagged = 0;
+  EXPECT_EQ(check_all_piece_counts(in, "plate with a plateau", &flagged), 100);
+  // 4 of the 12 (4 and 16 pieces, reduced and augmented) tie with a lattice node on a seam
+  // between pieces; the others match the whole bit for bit.
+  EXPECT_LE(flagged, 4);
+}
+
+TEST(ReebPieces, ShuffledCellsGivePiecesWithSeveralFansAtASharedPoint) {
+  const MeshInput in = plate(2, 1500);
+  std::vector<int64_t> order(in.num_cells());
+  std::iota(order.begin(), order.end(), int64_t{0});
+  std::shuffle(order.begin(), order.end(), std::mt19937(5));
+  MeshInput shuffled;
+  shuffled.points.assign(in.points.begin(), in.points.end());
+  shuffled.values.assign(in.values.begin(), in.values.end());
+  for (const int64_t c : order)
+    shuffled.add_cell(in.cell_degree[c], &in.cell_nodes[in.cell_offsets[c]]);
+  EXPECT_EQ(check_all_piece_counts(shuffled, "shuffled plate"), 100);
+}
+
+TEST(ReebPieces, AnnulusMoebiusStripAndTorus) {
+  const auto wavy = [](const Vec3 &p) {
+    return p[0] + 0.3 * std::sin(3 * p[1]) + 0.2 * std::cos(2 * p[2] + p[0]);
+  };
+  EXPECT_EQ(check_all_piece_counts(surface_grid(40, 6, true, false, false, wavy), "annulus"), 1);
+  EXPECT_EQ(check_all_piece_counts(surface_grid(41, 6, true, false, true, wavy), "Moebius strip"),
+            1);
+  EXPECT_EQ(check_all_piece_counts(surface_grid(40, 12, true, true, false, wavy), "torus"), 1);
+}
+
+TEST(ReebPieces, APointWithTwoFansInAPieceIsCutApart) {
+  // Two triangles touching at point 0 only (a bow tie): split there, two copies, two disks.
+  MeshInput in;
+  in.points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {-1, 0, 0}, {0, -1, 0}};
+  in.values = {0, 1, 2, 3, 4};
+  const int64_t a[3] = {0, 1, 2}, b[3] = {0, 3, 4};
+  in.add_cell(1, a);
+  in.add_cell(1, b);
+  const std::vector<uint8_t> open{1, 0, 0, 0, 0};
+  MeshBuildOptions bo;
+  bo.throw_on_error = false;
+  bo.open_points = open;
+  const Mesh mesh = build_mesh(in, bo);
+  const std::vector<int64_t> split{0};
+  const CornerCut corners = cut_corners(mesh.topology, {}, split);
+  EXPECT_EQ(corners.first[1] - corners.first[0], 2);
+  ASSERT_EQ(corners.group_offset.size(), 2u);
+  const CutSurface cut = cut_open(mesh, {}, split);
+  EXPECT_EQ(cut.mesh.topology.num_vertices(), 6);
+  EXPECT_EQ(cut.mesh.topology.boundary_loops(), 2);
+  // The lower cell's corner keeps the first copy.
+  EXPECT_EQ(cut.mesh.topology.cell_vertices(0)[0], 0);
+  EXPECT_EQ(cut.mesh.topology.cell_vertices(1)[0], 1);
+}
+
+} // namespace
+} // namespace hoct
