@@ -570,8 +570,9 @@ void mpi_section(const Settings &s) {
   const double size = s.quick ? 1e5 : 4e6;
   const std::vector<int> counts = s.quick ? std::vector<int>{1, 2} : std::vector<int>{1, 2, 4, 8};
   ScratchDir scratch;
-  const std::string vtu = scratch.file("random.vtu"), pvtu = scratch.file("random.pvtu");
-  long long cells = 0;
+  const std::string vtu = scratch.file("random.vtu"), pvtu = scratch.file("random.pvtu"),
+                    plate = scratch.file("plate.vtu");
+  long long cells = 0, plate_cells = 0;
   {
     DatasetOptions o;
     o.cells = static_cast<long long>(size);
@@ -580,6 +581,10 @@ void mpi_section(const Settings &s) {
     write_vtu(vtu, in);
     write_pieces(pvtu, in, 8);
     cells = static_cast<long long>(in.num_cells());
+    o.cells = static_cast<long long>(size / 4); // a Reeb graph: the surface cut open, glued back
+    const MeshInput holes = generate_dataset("plate", o);
+    write_vtu(plate, holes);
+    plate_cells = static_cast<long long>(holes.num_cells());
   }
   setenv("OMPI_ALLOW_RUN_AS_ROOT", "1", 1); // a container's root
   setenv("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1", 1);
@@ -590,10 +595,14 @@ void mpi_section(const Settings &s) {
     return std::string(std::istreambuf_iterator<char>(in), {});
   };
   struct Input {
-    std::string file, label;
+    std::string file, label, mesh;
+    long long cells;
   };
-  const std::vector<Input> inputs = {{vtu, "FILE.vtu (every rank reads it whole)"},
-                                     {pvtu, "FILE.pvtu, 8 pieces (each rank reads its own)"}};
+  const std::vector<Input> inputs = {
+      {vtu, "FILE.vtu (every rank reads it whole)", "random cubic cells", cells},
+      {pvtu, "FILE.pvtu, 8 pieces (each rank reads its own)", "random cubic cells", cells},
+      {plate, "the plate's Reeb graph, FILE.vtu (every rank reads it whole)",
+       "cubic cells of the plate with 100 holes", plate_cells}};
   for (const Input &input : inputs) {
     const std::string plain_json = scratch.file("plain.json");
     std::vector<double> plain;
@@ -640,10 +649,10 @@ void mpi_section(const Settings &s) {
       }
     }
     std::printf("## MPI, %s: `mpirun --oversubscribe -np N hoct tree FILE --json J --no-timings "
-                "--threads 1` (HOCT_MPI=1) on %lld random cubic cells, a fresh mpirun per run, "
-                "rank counts alternated with one plain process (`hoct tree FILE --threads 1`): "
-                "medians of %d runs; per rank, the largest over the ranks\n\n",
-                input.label.c_str(), cells, runs);
+                "--threads 1` (HOCT_MPI=1) on %lld %s, a fresh mpirun per run, rank counts "
+                "alternated with one plain process (`hoct tree FILE --threads 1`): medians of %d "
+                "runs; per rank, the largest over the ranks\n\n",
+                input.label.c_str(), input.cells, input.mesh.c_str(), runs);
     std::printf("plain process: %.3f s\n\n", median(plain));
     std::printf("| ranks | whole (s) | 1 rank / N ranks | plain / N ranks | piece (s) | kept nodes "
                 "| KiB sent | KiB rank 0 received | peak MiB | JSON as plain | checked (.pvtu: and "
