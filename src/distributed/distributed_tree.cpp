@@ -436,9 +436,11 @@ DistributedOutcome distributed_tree_on(RankInput in, const MeshInput *whole, con
                          : tree_of_pieces(trees, rq.augmented, field_scale[0]);
   if (const int64_t ties = tree.stats.seam_paths_nonmonotone.value_or(0); ties > 0) {
     // A seam piece whose path in the disks' tree does not rise (a tie with a fallback lattice
-    // node on a plateau, between pieces where one process has no seam): glued at its ends only,
-    // it would make a loop one process does not. Rank 0 computes the graph from the whole mesh.
-    d.whole_tree = std::to_string(ties) + " seam piece(s) between the pieces tie on a plateau";
+    // node on a plateau, typically between pieces, where one process has no seam): glued at its
+    // ends only, it would make a loop one process does not. Rank 0 computes the graph from the
+    // whole mesh.
+    d.whole_tree = std::to_string(ties) + " seam piece(s) of the pieces' cuts do not rise: ties "
+                                          "on a plateau";
     if (ranks > 1 && whole) {
       uint64_t ignored = 0;
       MPI_Recv(&ignored, 1, MPI_UINT64_T, ranks - 1, kFingerprintTag, comm, MPI_STATUS_IGNORE);
