@@ -175,12 +175,8 @@ PieceTrees merge_piece_trees(const PieceTrees &a, const PieceTrees &b, bool augm
     } else if (take_b) {
       from_b[j] = static_cast<int64_t>(nodes.size());
       nodes.push_back(b.nodes[j++]);
-    } else { // the same key and value: one node, placed in the lower cell
-      const PieceNode &x = a.nodes[i], &y = b.nodes[j];
-      PieceNode m = x.order_cell <= y.order_cell ? x : y;
-      m.fallback = x.fallback || y.fallback;
-      m.slack = std::max(x.slack, y.slack);
-      m.strict = x.strict & y.strict;
+    } else { // the same key and value: one node
+      const PieceNode m = one_node(a.nodes[i], b.nodes[j]);
       from_a[i++] = from_b[j++] = static_cast<int64_t>(nodes.size());
       nodes.push_back(m);
       ++shared;
@@ -288,11 +284,17 @@ TreeResult tree_of_pieces(const PieceTrees &all, bool augmented, double referenc
       split.push_back({k, all.split_parent[k]});
   }
   ContourTree ct = sweep_contour_tree(values, {{}, join, split}, augmented);
+  return piece_graph_result(ct, all.counts, augmented, reference,
+                            [&](int64_t id) { return all.nodes[id]; });
+}
+
+TreeResult piece_graph_result(ContourTree &ct, const ExactCounts &counts, bool augmented,
+                              double reference, const std::function<PieceNode(int64_t)> &node) {
   int64_t contracted = 0;
-  if (!augmented && all.counts.fallback_error > 0) {
+  if (!augmented && counts.fallback_error > 0) {
     std::vector<double> slack(static_cast<std::size_t>(ct.size()));
     for (int64_t i = 0; i < ct.size(); ++i) {
-      const PieceNode &p = all.nodes[ct.nodes[i]];
+      const PieceNode p = node(ct.nodes[i]);
       slack[i] = p.shared && p.strict ? -1.0 : p.slack; // a certain extremum: no slack
     }
     StandInContraction c = contract_stand_in_arcs(ct, slack);
@@ -301,7 +303,7 @@ TreeResult tree_of_pieces(const PieceTrees &all, bool augmented, double referenc
     contracted = c.contracted;
   }
   TreeResult r = tree_result_of(ct, "exact", augmented, [&](TreeNode &t) {
-    const PieceNode &p = all.nodes[t.graph_node];
+    const PieceNode p = node(t.graph_node);
     t.cell = p.cell;
     t.uv = p.uv;
     t.location = p.location;
@@ -309,9 +311,17 @@ TreeResult tree_of_pieces(const PieceTrees &all, bool augmented, double referenc
     t.position = p.position;
   });
   offset_values(r, reference);
-  ExactCounts &c = r.stats.exact.emplace(all.counts);
+  ExactCounts &c = r.stats.exact.emplace(counts);
   c.fallback_arcs_contracted = contracted;
   return r;
+}
+
+PieceNode one_node(const PieceNode &x, const PieceNode &y) {
+  PieceNode m = x.order_cell <= y.order_cell ? x : y;
+  m.fallback = x.fallback || y.fallback;
+  m.slack = std::max(x.slack, y.slack);
+  m.strict = x.strict & y.strict;
+  return m;
 }
 
 } // namespace hoct

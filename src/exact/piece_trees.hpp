@@ -11,11 +11,13 @@
 
 #include "exact/exact_tree_options.hpp"
 #include "mesh/mesh.hpp"
+#include "tree/contour_tree.hpp"
 #include "tree/tree_result.hpp"
 
 #include <array>
 #include <compare>
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -96,6 +98,16 @@ ExactCounts sum_counts(const ExactCounts &x, const ExactCounts &y);
 // Groups a (pieces first .. k) and b (k + 1 .. last) as one.
 PieceTrees merge_piece_trees(const PieceTrees &a, const PieceTrees &b, bool augmented,
                              int threads = 1);
+
+// A node two pieces both hold (one key and value), as one: placed in the lower cell, a fallback
+// node if either says so, the larger slack, a certain extremum if both say so.
+PieceNode one_node(const PieceNode &x, const PieceNode &y);
+
+// The result of a tree or graph over PieceNodes (`node`: a graph node id's): the fallback
+// stand-in's arcs contracted in `ct` as exact_contour_tree contracts them, the nodes placed,
+// values absolute (`reference` added back), `counts` the statistics.
+TreeResult piece_graph_result(ContourTree &ct, const ExactCounts &counts, bool augmented,
+                              double reference, const std::function<PieceNode(int64_t)> &node);
 
 // The tree of the whole mesh from the group of all its pieces: values absolute (`reference`
 // added back), the fallback stand-in's arcs contracted as exact_contour_tree does.

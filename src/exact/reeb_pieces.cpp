@@ -6,7 +6,6 @@
 #include "exact/seam_gluing.hpp"
 #include "mesh/cut_surface.hpp"
 #include "tree/path_gluing.hpp"
-#include "tree/stand_in_contraction.hpp"
 #include "tree/sweep_contour_tree.hpp"
 #include "util/parallel_for.hpp"
 #include "util/stopwatch.hpp"
@@ -223,20 +222,11 @@ TreeResult reeb_graph_of_pieces(std::span<const PieceTrees> pieces, bool augment
   GluedGraph glued = glue_paths(disks, gluing, !augmented);
   ContourTree &ct = glued.graph;
 
-  // A glued node is its key's copies: placed in the lowest cell, certain where all are.
+  // A glued node is its key's copies, as one (one_node).
   const auto merged = [&](int64_t k) {
     PieceNode m = node(all[run_start[k]]);
-    for (int64_t i = run_start[k] + 1; i < run_end[k]; ++i) {
-      const PieceNode &x = node(all[i]);
-      const bool fallback = m.fallback || x.fallback;
-      const double slack = std::max(m.slack, x.slack);
-      const uint8_t strict = m.strict & x.strict;
-      if (x.order_cell < m.order_cell)
-        m = x;
-      m.fallback = fallback;
-      m.slack = slack;
-      m.strict = strict;
-    }
+    for (int64_t i = run_start[k] + 1; i < run_end[k]; ++i)
+      m = one_node(m, node(all[i]));
     return m;
   };
   ExactCounts counts;
@@ -244,29 +234,7 @@ TreeResult reeb_graph_of_pieces(std::span<const PieceTrees> pieces, bool augment
     counts = sum_counts(counts, p.counts);
   counts.graph_nodes -= repeated_nodes;
   counts.edge_critical_points -= repeated_edge_nodes;
-  int64_t contracted = 0;
-  if (!augmented && counts.fallback_error > 0) {
-    std::vector<double> slack(static_cast<std::size_t>(ct.size()));
-    for (int64_t i = 0; i < ct.size(); ++i) {
-      const PieceNode p = merged(ct.nodes[i]);
-      slack[i] = p.shared && p.strict ? -1.0 : p.slack; // a certain extremum: no slack
-    }
-    StandInContraction c = contract_stand_in_arcs(ct, slack);
-    if (c.contracted > 0)
-      ct = std::move(c.tree);
-    contracted = c.contracted;
-  }
-  TreeResult r = tree_result_of(ct, "exact", augmented, [&](TreeNode &t) {
-    const PieceNode p = merged(t.graph_node);
-    t.cell = p.cell;
-    t.uv = p.uv;
-    t.location = p.location;
-    t.fallback = p.fallback;
-    t.position = p.position;
-  });
-  offset_values(r, reference);
-  ExactCounts &c = r.stats.exact.emplace(counts);
-  c.fallback_arcs_contracted = contracted;
+  TreeResult r = piece_graph_result(ct, counts, augmented, reference, merged);
   r.reeb_graph = true;
   r.loops = graph_loops(ct);
   r.stats.seam_edges = seam_edges;

@@ -96,12 +96,38 @@ def write_vtu(path, points, cells, values, cell_type=None):
     arr.SetName("f")
     grid.GetPointData().AddArray(arr)
     grid.GetPointData().SetActiveScalars("f")
+    write_grid(path, grid)
+
+
+def write_grid(path, grid):
+    """A vtkUnstructuredGrid as binary VTK XML at path."""
     w = vtkXMLUnstructuredGridWriter()
     w.SetFileName(path)
     w.SetInputData(grid)
     w.SetDataModeToBinary()
     if not w.Write():
         raise RuntimeError(f"cannot write {path}")
+
+
+def graph_shape(tree):
+    """(degrees, components, loops) of a tree's or graph's arc graph (JSON of hoct tree;
+    parallel arcs count)."""
+    n = len(tree["nodes"])
+    degree = [0] * n
+    parent = list(range(n))
+
+    def find(a):
+        while parent[a] != a:
+            parent[a] = parent[parent[a]]
+            a = parent[a]
+        return a
+
+    for a, b in tree["arcs"]:
+        degree[a] += 1
+        degree[b] += 1
+        parent[find(a)] = find(b)
+    components = len({find(a) for a in range(n)})
+    return degree, components, len(tree["arcs"]) - n + components
 
 
 # --- Structured meshes -------------------------------------------------------------------------

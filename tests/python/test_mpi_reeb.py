@@ -46,8 +46,8 @@ try:
     import numpy as np
     from reeb_meshes import (HAVE_GMSH, HOLES, annulus, combined, disk_and_annulus,
                              disk_with_holes, double_torus, gmsh_mesh, moebius, moebius_f,
-                             square_with_holes, tilted, torus, torus_f1, wavy_planar,
-                             wavy_surface, wavy_torus, write_field)
+                             graph_shape, square_with_holes, tilted, torus, torus_f1,
+                             wavy_planar, wavy_surface, wavy_torus, write_field, write_grid)
     from vtk_pieces import read_grid, write_pieces
     from vtkmodules.util.numpy_support import numpy_to_vtkIdTypeArray, vtk_to_numpy
     from vtkmodules.vtkCommonDataModel import (VTK_LAGRANGE_TRIANGLE, vtkCellArray,
@@ -55,7 +55,6 @@ try:
     from vtkmodules.vtkCommonTransforms import vtkTransform
     from vtkmodules.vtkFiltersCore import vtkAppendFilter
     from vtkmodules.vtkFiltersGeneral import vtkTransformFilter
-    from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridWriter
 except ImportError as e:
     print(f"SKIPPED: numpy or VTK's Python modules are missing ({e})")
     sys.exit(77)
@@ -127,28 +126,12 @@ def same_json(label, path, extra=(), ranks=RANKS, quiet=True):
     return graph, done
 
 
-def arc_components(graph):
-    """The components of the arc graph (nodes joined by arcs)."""
-    parent = list(range(len(graph["nodes"])))
-
-    def find(a):
-        while parent[a] != a:
-            parent[a] = parent[parent[a]]
-            a = parent[a]
-        return a
-
-    for a, b in graph["arcs"]:
-        parent[find(a)] = find(b)
-    return len({find(a) for a in range(len(parent))})
-
-
 def check_graph(label, graph, loops, components=1, max_loops=None):
     """ "kind": "Reeb graph", the arc graph's components, and "loops" (its first Betti number):
     loops if given, else at most max_loops. Returns the loops."""
     if graph is None:
         return None
-    comps = arc_components(graph)
-    betti = len(graph["arcs"]) - len(graph["nodes"]) + comps
+    _, comps, betti = graph_shape(graph)
     r.check(graph.get("kind") == "Reeb graph", f"{label}: \"kind\" is {graph.get('kind')!r}")
     r.check(comps == components, f"{label}: {comps} component(s), expected {components}")
     r.check(graph.get("loops") == betti, f"{label}: \"loops\" {graph.get('loops')}, the arc "
@@ -329,12 +312,7 @@ def reorder_vtu(src, dst, order):
     out.SetPoints(grid.GetPoints())
     out.GetPointData().ShallowCopy(grid.GetPointData())
     out.SetCells(cell_type, ca)
-    w = vtkXMLUnstructuredGridWriter()
-    w.SetFileName(dst)
-    w.SetInputData(out)
-    w.SetDataModeToBinary()
-    if not w.Write():
-        raise RuntimeError(f"cannot write {dst}")
+    write_grid(dst, out)
     return cells[:, :3]
 
 
@@ -349,11 +327,8 @@ def appended(out, parts):
         shift.SetTransform(move)
         shift.SetInputData(read_grid(path))
         append.AddInputConnection(shift.GetOutputPort())
-    w = vtkXMLUnstructuredGridWriter()
-    w.SetFileName(out)
-    w.SetInputConnection(append.GetOutputPort())
-    if not w.Write():
-        raise RuntimeError(f"cannot write {out}")
+    append.Update()
+    write_grid(out, append.GetOutput())
     return out
 
 

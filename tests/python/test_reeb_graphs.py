@@ -34,9 +34,10 @@ try:
     import numpy as np
     import level_sets  # numpy, scipy and VTK's Python modules
     from reeb_meshes import (HAVE_GMSH, HOLES, annulus, disk_and_annulus, disk_with_holes,
-                             double_torus, drilled_box, gmsh_mesh, moebius, moebius_f, planar,
-                             radial, square, surface_f, tilted, torus, torus_f1, torus_f2,
-                             torus_solid, wavy_planar, wavy_surface, wavy_torus, write_vtu)
+                             double_torus, drilled_box, gmsh_mesh, graph_shape, moebius,
+                             moebius_f, planar, radial, square, surface_f, tilted, torus,
+                             torus_f1, torus_f2, torus_solid, wavy_planar, wavy_surface,
+                             wavy_torus, write_vtu)
     from vtkmodules.vtkCommonDataModel import VTK_LAGRANGE_TRIANGLE, VTK_QUADRATIC_TRIANGLE
 except ImportError as e:
     print(f"skipped: numpy, scipy or VTK's Python modules are missing ({e})")
@@ -48,26 +49,6 @@ RNG = np.random.default_rng(12345)
 
 
 # --- Checks ---------------------------------------------------------------------------------
-
-def graph_shape(tree):
-    """(degrees, components, loops) of the arc graph (parallel arcs count)."""
-    n = len(tree["nodes"])
-    degree = [0] * n
-    parent = list(range(n))
-
-    def find(a):
-        while parent[a] != a:
-            parent[a] = parent[parent[a]]
-            a = parent[a]
-        return a
-
-    for a, b in tree["arcs"]:
-        degree[a] += 1
-        degree[b] += 1
-        parent[find(a)] = find(b)
-    components = len({find(a) for a in range(n)})
-    return degree, components, len(tree["arcs"]) - n + components
-
 
 def reeb_fields(name, tree, json_path, vtu, loops):
     """The JSON's "kind" and "loops" fields and `hoct check` accepting the graph: written against
@@ -106,23 +87,13 @@ def converges(name, vtu, exact_json, exact):
 
 
 def bridges(tree):
-    """The arcs whose removal disconnects their ends (brute force, parallel arcs included)."""
-    n, arcs = len(tree["nodes"]), tree["arcs"]
-    out = set()
-    for k in range(len(arcs)):
-        parent = list(range(n))
-
-        def find(a):
-            while parent[a] != a:
-                parent[a] = parent[parent[a]]
-                a = parent[a]
-            return a
-        for j, (a, b) in enumerate(arcs):
-            if j != k:
-                parent[find(a)] = find(b)
-        if find(arcs[k][0]) != find(arcs[k][1]):
-            out.add(k)
-    return out
+    """The arcs whose removal disconnects their ends (brute force, parallel arcs included): those
+    without which the arc graph has one component more."""
+    arcs = tree["arcs"]
+    components = graph_shape(tree)[1]
+    return {k for k in range(len(arcs))
+            if graph_shape({"nodes": tree["nodes"], "arcs": arcs[:k] + arcs[k + 1:]})[1]
+            > components}
 
 
 def check_svg(name, vtu, tree):

@@ -11,6 +11,9 @@
 #include "mesh/topology.hpp"
 #include "tree/sweep_contour_tree.hpp"
 
+#include "test_pieces.hpp"
+#include "test_same_tree.hpp"
+
 #include <gtest/gtest.h>
 
 #include <random>
@@ -22,63 +25,18 @@ namespace {
 // merge them (pipeline/distributed_tree).
 TreeResult tree_by_pieces(const MeshInput &whole, int pieces, const MeshScales &scales,
                           bool augmented) {
-  const auto spans = point_piece_spans(whole, pieces);
-  std::vector<PieceTrees> groups;
   double reference = 0;
-  for (int r = 0; r < pieces; ++r) {
-    const auto [begin, end] = piece_cell_range(static_cast<int64_t>(whole.num_cells()), pieces, r);
-    const MeshPiece piece = extract_piece(whole, begin, end);
-    MeshBuildOptions bo;
-    bo.throw_on_error =
-        false; // a piece may touch itself at a vertex (a pinch of the whole's cells)
-    bo.whole_scales = [&](const MeshScales &) { return scales; };
-    const Mesh mesh = build_mesh(piece.input, bo);
-    reference = mesh.field.reference();
-    const auto piece_spans = piece_point_spans(piece.global_point, spans);
-    PiecePlace place{r, piece.global_point, begin, triangles_before(whole, begin), piece_spans};
-    ExactTreeOptions eo;
-    eo.augmented = augmented;
-    eo.threads = 1;
-    TreeTimings time;
-    // Through bytes, as the ranks send them.
-    groups.push_back(decode_piece_trees(encode_piece_trees(piece_trees(mesh, place, eo, time))));
-  }
+  std::vector<PieceTrees> groups =
+      testing::pieces_of(whole, pieces, scales, augmented, reference,
+                         [](const Mesh &m, const PiecePlace &p, const ExactTreeOptions &eo,
+                            TreeTimings &time) { return piece_trees(m, p, eo, time); });
   for (int step = 1; step < pieces; step *= 2)
     for (int r = 0; r + step < pieces; r += 2 * step)
       groups[r] = merge_piece_trees(groups[r], groups[r + step], augmented);
   return tree_of_pieces(groups[0], augmented, reference);
 }
 
-void expect_same_tree(const TreeResult &a, const TreeResult &b, const std::string &what) {
-  ASSERT_EQ(a.nodes.size(), b.nodes.size()) << what;
-  for (std::size_t i = 0; i < a.nodes.size(); ++i) {
-    const TreeNode &x = a.nodes[i], &y = b.nodes[i];
-    EXPECT_EQ(x.type, y.type) << what << " node " << i;
-    EXPECT_EQ(x.value, y.value) << what << " node " << i;
-    EXPECT_EQ(x.cell, y.cell) << what << " node " << i;
-    EXPECT_EQ(x.uv, y.uv) << what << " node " << i;
-    EXPECT_EQ(x.position, y.position) << what << " node " << i;
-    EXPECT_EQ(x.location, y.location) << what << " node " << i;
-    EXPECT_EQ(x.fallback, y.fallback) << what << " node " << i;
-  }
-  EXPECT_EQ(a.arcs, b.arcs) << what;
-  ASSERT_EQ(a.pairs.size(), b.pairs.size()) << what;
-  for (std::size_t i = 0; i < a.pairs.size(); ++i) {
-    EXPECT_EQ(a.pairs[i].birth, b.pairs[i].birth) << what;
-    EXPECT_EQ(a.pairs[i].death, b.pairs[i].death) << what;
-  }
-  const ExactCounts &p = *a.stats.exact, &q = *b.stats.exact;
-  EXPECT_EQ(p.cells, q.cells) << what;
-  EXPECT_EQ(p.graph_nodes, q.graph_nodes) << what;
-  EXPECT_EQ(p.edge_critical_points, q.edge_critical_points) << what;
-  EXPECT_EQ(p.interior_critical_points, q.interior_critical_points) << what;
-  EXPECT_EQ(p.connections_direct, q.connections_direct) << what;
-  EXPECT_EQ(p.connections_traced, q.connections_traced) << what;
-  EXPECT_EQ(p.fallback_cells, q.fallback_cells) << what;
-  EXPECT_EQ(p.fallback_by_reason, q.fallback_by_reason) << what;
-  EXPECT_EQ(p.fallback_error, q.fallback_error) << what;
-  EXPECT_EQ(p.fallback_arcs_contracted, q.fallback_arcs_contracted) << what;
-}
+using testing::expect_same_tree;
 
 void check_all_piece_counts(const MeshInput &whole, const std::string &name) {
   MeshScales scales;

@@ -13,6 +13,8 @@
 #include "mesh/mesh.hpp"
 #include "mesh/mesh_partition.hpp"
 #include "test_meshes.hpp"
+#include "test_pieces.hpp"
+#include "test_same_tree.hpp"
 
 #include <gtest/gtest.h>
 
@@ -45,55 +47,17 @@ TreeResult whole_reeb_graph(const MeshInput &whole, MeshScales &scales, bool aug
 // glues them (distributed/distributed_tree).
 TreeResult reeb_graph_by_pieces(const MeshInput &whole, int pieces, const MeshScales &scales,
                                 bool augmented) {
-  const auto spans = point_piece_spans(whole, pieces);
-  std::vector<PieceTrees> all;
   double reference = 0;
-  for (int r = 0; r < pieces; ++r) {
-    const auto [begin, end] = piece_cell_range(static_cast<int64_t>(whole.num_cells()), pieces, r);
-    const MeshPiece piece = extract_piece(whole, begin, end);
-    MeshBuildOptions bo;
-    bo.throw_on_error = false; // a piece may hold several fans around a shared point
-    bo.whole_scales = [&](const MeshScales &) { return scales; };
-    const Mesh mesh = build_mesh(piece.input, bo);
-    reference = mesh.field.reference();
-    const auto piece_spans = piece_point_spans(piece.global_point, spans);
-    PiecePlace place{r, piece.global_point, begin, triangles_before(whole, begin), piece_spans};
-    ExactTreeOptions eo;
-    eo.augmented = augmented;
-    eo.threads = 1;
-    TreeTimings time;
-    all.push_back(decode_piece_trees(encode_piece_trees(reeb_piece(mesh, place, eo, time))));
-  }
+  const std::vector<PieceTrees> all =
+      testing::pieces_of(whole, pieces, scales, augmented, reference,
+                         [](const Mesh &m, const PiecePlace &p, const ExactTreeOptions &eo,
+                            TreeTimings &time) { return reeb_piece(m, p, eo, time); });
   return reeb_graph_of_pieces(all, augmented, reference);
 }
 
 void expect_same_graph(const TreeResult &a, const TreeResult &b, const std::string &what) {
-  ASSERT_EQ(a.nodes.size(), b.nodes.size()) << what;
-  for (std::size_t i = 0; i < a.nodes.size(); ++i) {
-    const TreeNode &x = a.nodes[i], &y = b.nodes[i];
-    EXPECT_EQ(x.type, y.type) << what << " node " << i;
-    EXPECT_EQ(x.value, y.value) << what << " node " << i;
-    EXPECT_EQ(x.cell, y.cell) << what << " node " << i;
-    EXPECT_EQ(x.uv, y.uv) << what << " node " << i;
-    EXPECT_EQ(x.position, y.position) << what << " node " << i;
-    EXPECT_EQ(x.location, y.location) << what << " node " << i;
-    EXPECT_EQ(x.fallback, y.fallback) << what << " node " << i;
-  }
-  EXPECT_EQ(a.arcs, b.arcs) << what;
+  testing::expect_same_tree(a, b, what);
   EXPECT_EQ(a.loops, b.loops) << what;
-  ASSERT_EQ(a.pairs.size(), b.pairs.size()) << what;
-  for (std::size_t i = 0; i < a.pairs.size(); ++i) {
-    EXPECT_EQ(a.pairs[i].birth, b.pairs[i].birth) << what;
-    EXPECT_EQ(a.pairs[i].death, b.pairs[i].death) << what;
-  }
-  const ExactCounts &p = *a.stats.exact, &q = *b.stats.exact;
-  EXPECT_EQ(p.cells, q.cells) << what;
-  EXPECT_EQ(p.graph_nodes, q.graph_nodes) << what;
-  EXPECT_EQ(p.edge_critical_points, q.edge_critical_points) << what;
-  EXPECT_EQ(p.interior_critical_points, q.interior_critical_points) << what;
-  EXPECT_EQ(p.fallback_cells, q.fallback_cells) << what;
-  EXPECT_EQ(p.fallback_error, q.fallback_error) << what;
-  EXPECT_EQ(p.fallback_arcs_contracted, q.fallback_arcs_contracted) << what;
   EXPECT_EQ(a.stats.seam_paths_nonmonotone, b.stats.seam_paths_nonmonotone) << what;
 }
 
