@@ -166,11 +166,13 @@ std::vector<std::string> gather_strings(MPI_Comm comm, const std::string &own) {
 
 } // namespace
 
-void agree_on_failure(const std::string &failure) {
+void agree_on_failure(const std::string &failure) { agree_on_failure(failure, MPI_COMM_WORLD); }
+
+void agree_on_failure(const std::string &failure, MPI_Comm comm) {
   int rank = 0, ranks = 1;
-  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-  MPI_Comm_size(MPI_COMM_WORLD, &ranks);
-  agree(MPI_COMM_WORLD, failure, rank, ranks);
+  MPI_Comm_rank(comm, &rank);
+  MPI_Comm_size(comm, &ranks);
+  agree(comm, failure, rank, ranks);
 }
 
 DistributedOutcome distributed_tree(const MeshInput &whole, const TreeRequest &rq) {
@@ -308,8 +310,22 @@ DistributedOutcome distributed_tree_on(RankInput in, const MeshInput *whole, con
   }
   std::string failure;
   std::vector<std::string> warnings;
+  // Rank 0 checks the whole mesh alone where the pieces found anything: the whole is joined on
+  // rank 0 then (read_whole is collective: a caller's pieces come from every rank).
+  int check_whole = rank == 0 && complete && cells > 0 && !d.whole_check.empty() ? 1 : 0;
+  MeshInput loaded;
+  if (!whole) {
+    MPI_Bcast(&check_whole, 1, MPI_INT, 0, comm);
+    if (check_whole) {
+      try {
+        loaded = in.read_whole();
+      } catch (const std::exception &e) {
+        failure = e.what();
+      }
+    }
+  }
   int reeb = 0; // not a disk or a sphere: the Reeb graph (exact/reeb_pieces)
-  if (rank == 0) {
+  if (rank == 0 && failure.empty()) {
     try {
       Mesh checked;
       checked.source = in.source;
@@ -324,9 +340,6 @@ DistributedOutcome distributed_tree_on(RankInput in, const MeshInput *whole, con
       if (checked.complete && d.whole_check.empty()) {
         shape = domain_shape(surface);
       } else if (checked.complete) {
-        MeshInput loaded;
-        if (!whole)
-          loaded = in.read_whole();
         const MeshInput &all = whole ? *whole : loaded;
         ProblemLog topology_problems;
         SplitCells split;
@@ -423,18 +436,31 @@ DistributedOutcome distributed_tree_on(RankInput in, const MeshInput *whole, con
   // The input's fingerprint (a pass over the whole input) by the last rank, idle by now, while
   // rank 0 finishes the tree.
   constexpr int kFingerprintTag = 1 << 20;
+  // A Reeb graph's pieces may not follow one process (below): rank 0 then needs the whole,
+  // which the ranks join together when they hold no whole input.
+  const bool joined_whole = reeb && !whole;
   if (rank != 0) {
     if (rank == ranks - 1 && whole) {
       const uint64_t hash = mesh_fingerprint(*whole).hash;
       MPI_Send(&hash, 1, MPI_UINT64_T, 0, kFingerprintTag, comm);
     }
+    int need = 0;
+    if (joined_whole)
+      MPI_Bcast(&need, 1, MPI_INT, 0, comm);
+    if (need)
+      in.read_whole();
     return d;
   }
 
   // 5. Rank 0: the whole tree, finished as compute_tree finishes it.
   TreeResult tree = reeb ? reeb_graph_of_pieces(reeb_pieces, rq.augmented, field_scale[0])
                          : tree_of_pieces(trees, rq.augmented, field_scale[0]);
-  if (const int64_t ties = tree.stats.seam_paths_nonmonotone.value_or(0); ties > 0) {
+  const int64_t ties = tree.stats.seam_paths_nonmonotone.value_or(0);
+  if (joined_whole) {
+    int need = ties > 0 ? 1 : 0;
+    MPI_Bcast(&need, 1, MPI_INT, 0, comm);
+  }
+  if (ties > 0) {
     // A seam piece whose path in the disks' tree does not rise (a tie with a fallback lattice
     // node on a plateau, typically between pieces, where one process has no seam): glued at its
     // ends only, it would make a loop one process does not. Rank 0 computes the graph from the
@@ -445,7 +471,6 @@ DistributedOutcome distributed_tree_on(RankInput in, const MeshInput *whole, con
       uint64_t ignored = 0;
       MPI_Recv(&ignored, 1, MPI_UINT64_T, ranks - 1, kFingerprintTag, comm, MPI_STATUS_IGNORE);
     }
-    MeshInput loaded;
     if (!whole)
       loaded = in.read_whole();
     const MeshInput &all = whole ? *whole : loaded;

@@ -57,7 +57,9 @@ struct RankInput {
   bool cells_split = false; // the whole has cells other than Lagrange triangles
   std::string source, field_name;
   std::optional<InputFingerprint> fingerprint; // the whole's, on rank 0
-  // Rank 0's way to the whole mesh, for the report of a mesh the pieces found a problem in.
+  // The ranks' way to the whole mesh on rank 0 (the others get an empty one), for the report of
+  // a mesh the pieces found a problem in and a Reeb graph the pieces cannot glue: collective,
+  // every rank calls it together.
   std::function<MeshInput()> read_whole;
 };
 
@@ -80,5 +82,7 @@ public:
 // A collective step (every rank calls it): throws AgreedError on every rank if any rank's
 // `failure` is not empty.
 void agree_on_failure(const std::string &failure);
+// The same over the ranks of `comm`.
+void agree_on_failure(const std::string &failure, MPI_Comm comm);
 
 } // namespace hoct

@@ -6,6 +6,7 @@
 
 #include <mpi.h>
 
+#include <algorithm>
 #include <climits>
 #include <cstddef>
 #include <cstdint>
@@ -72,6 +73,30 @@ inline std::vector<std::vector<std::byte>> gather_bytes(MPI_Comm comm,
   if (rank == 0)
     for (int r = 0; r < ranks; ++r)
       out.emplace_back(all.begin() + offsets[r], all.begin() + offsets[r] + sizes[r]);
+  return out;
+}
+
+// Collective: every rank's bytes on every rank, in rank order. Throws hoct::Error on every rank
+// where they take 2 GiB or more.
+inline std::vector<std::vector<std::byte>> all_gather_bytes(MPI_Comm comm,
+                                                            std::span<const std::byte> own) {
+  int ranks = 1;
+  MPI_Comm_size(comm, &ranks);
+  int n = static_cast<int>(own.size());
+  std::vector<int> sizes(static_cast<std::size_t>(ranks)), offsets(static_cast<std::size_t>(ranks));
+  MPI_Allgather(&n, 1, MPI_INT, sizes.data(), 1, MPI_INT, comm);
+  int64_t total = 0;
+  for (int r = 0; r < ranks; ++r) {
+    offsets[r] = static_cast<int>(std::min<int64_t>(total, INT_MAX));
+    total += sizes[r];
+  }
+  if (total > INT_MAX)
+    throw Error("the ranks' messages take 2 GiB or more: use fewer ranks per step");
+  std::vector<std::byte> all(static_cast<std::size_t>(total));
+  MPI_Allgatherv(own.data(), n, MPI_BYTE, all.data(), sizes.data(), offsets.data(), MPI_BYTE, comm);
+  std::vector<std::vector<std::byte>> out;
+  for (int r = 0; r < ranks; ++r)
+    out.emplace_back(all.begin() + offsets[r], all.begin() + offsets[r] + sizes[r]);
   return out;
 }
 

@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <memory>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -22,7 +23,7 @@ public:
     out.insert(out.end(), p, p + sizeof(T));
   }
   // Its length (uint64), then its elements.
-  template <class T> void array(const std::vector<T> &v) {
+  template <class T, class A> void array(const std::vector<T, A> &v) {
     static_assert(std::is_trivially_copyable_v<T>);
     value<uint64_t>(v.size());
     if (v.empty())
@@ -42,11 +43,11 @@ public:
     take(&v, sizeof(T));
     return v;
   }
-  template <class T> std::vector<T> array() {
+  template <class T, class A = std::allocator<T>> std::vector<T, A> array() {
     const uint64_t n = value<uint64_t>();
     if (n > (in_.size() - at_) / sizeof(T))
       throw std::runtime_error(what_ + ": an array runs past the end");
-    std::vector<T> v(static_cast<std::size_t>(n));
+    std::vector<T, A> v(static_cast<std::size_t>(n));
     take(v.data(), v.size() * sizeof(T));
     return v;
   }

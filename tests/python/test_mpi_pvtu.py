@@ -25,21 +25,11 @@ from mpi_testing import mpi, read, reeb_with_shape, require_mpi_hoct  # noqa: E4
 
 try:
     import vtk
-    from vtk_pieces import read_grid, write_hand_cut, write_listing, write_pieces
+    from vtk_pieces import read_grid, with_ids, write_hand_cut, write_listing, write_pieces
 except ImportError as e:
     print(f"SKIPPED: no VTK Python module ({e})")
     sys.exit(77)
 r = Results()
-
-
-def with_ids(grid, name):
-    """The grid with an id array `name` (ids that are no point indices)."""
-    gid = vtk.vtkIdTypeArray()
-    gid.SetName(name)
-    for i in range(grid.GetNumberOfPoints()):
-        gid.InsertNextValue(1000 + 7 * i)
-    grid.GetPointData().AddArray(gid)
-    return grid
 
 
 def same_for_all_ranks(label, pvtu, *extra):

@@ -25,7 +25,9 @@ holds the whole hole) while the others are disks; two components' cells interlea
 first checked here (fans around each vertex per rank, the Euler characteristic and boundary loops
 of each piece), then the JSON for 2, 3 and 7 ranks against one process. Partitioned input: the
 plate and a torus as .pvtu of 4 pieces written by VTK (vtk_pieces, ghost levels 0 and 1): 1, 2, 3
-and 4 ranks read their pieces alone and give the JSON of one process reading the whole .pvtu. Rank
+and 4 ranks read their pieces alone and give the JSON of one process reading the whole .pvtu; the
+plate with a plateau in 4 pieces of consecutive cells, where 4 ranks' pieces cannot glue a seam
+and rank 0 computes the whole mesh the ranks join from their pieces (its summary says so). Rank
 0 alone writes: on 3 ranks the output directory holds the JSON and the SVG only, equal to one
 process's, no rank reports an error or a warning, and the summary (once) says "Reeb graph (N
 loops)" and has the nodes line of the one-process run's.
@@ -49,7 +51,7 @@ try:
                              disk_with_holes, double_torus, gmsh_mesh, graph_shape, moebius,
                              moebius_f, square_with_holes, tilted, torus, torus_f1,
                              wavy_planar, wavy_surface, wavy_torus, write_field, write_grid)
-    from vtk_pieces import read_grid, write_pieces
+    from vtk_pieces import read_grid, write_consecutive, write_pieces
     from vtkmodules.util.numpy_support import numpy_to_vtk, numpy_to_vtkIdTypeArray, vtk_to_numpy
     from vtkmodules.vtkCommonCore import vtkPoints
     from vtkmodules.vtkCommonDataModel import (VTK_LAGRANGE_TRIANGLE, VTK_QUAD, vtkCellArray,
@@ -547,6 +549,29 @@ with tempdir() as d:
                         f"{label}, {n} ranks: read by pieces:\n{p.stderr[-1500:]}")
             check_graph(label, graph, loops)
             print(f"{label}: 1-4 ranks checked ({time.time() - t0:.1f} s)", flush=True)
+
+    # 4. A plateau below the median on the plate, in 4 pieces of consecutive cells: on 4 ranks a
+    # seam piece between pieces ties with a fallback cell's lattice node, the pieces cannot
+    # glue it, and rank 0 computes the graph of the whole mesh, which the ranks join together
+    # from their pieces (no rank read the whole file).
+    t0 = time.time()
+    grid = read_grid(small_plate)
+    f = grid.GetPointData().GetArray("f")
+    values = vtk_to_numpy(f).copy()
+    floor = np.sort(values)[len(values) // 2]
+    for i, v in enumerate(values):
+        f.SetValue(i, max(v, floor))
+    label = "the plate with a plateau, 4 pieces"
+    pvtu = write_consecutive(grid, d, "plateau_plate", 4)
+    graph, done = same_json(label, pvtu, ranks=(2, 4), quiet=False)
+    for n, p in done.items():
+        r.check("reads the whole" not in p.stderr,
+                f"{label}, {n} ranks: read by pieces:\n{p.stderr[-1500:]}")
+    r.check(4 in done and "tree: the whole mesh on rank 0" in done[4].stdout,
+            f"{label}, 4 ranks: the summary says rank 0 computed the whole mesh's graph:\n"
+            f"{done[4].stdout[-1500:] if 4 in done else ''}")
+    check_graph(label, graph, None, max_loops=100)  # holes within the plateau merge loops
+    print(f"{label}: 2 and 4 ranks checked ({time.time() - t0:.1f} s)", flush=True)
 
     # 5. Rank 0 alone writes, and its summary is one process's.
     for label, path in [("plate", plate), ("Moebius strip", meshes["Moebius strip, degree 2"])]:

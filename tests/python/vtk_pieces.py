@@ -13,6 +13,16 @@ def read_grid(path):
     return reader.GetOutput()
 
 
+def with_ids(grid, name):
+    """The grid with an id array `name` (ids that are no point indices)."""
+    gid = vtk.vtkIdTypeArray()
+    gid.SetName(name)
+    for i in range(grid.GetNumberOfPoints()):
+        gid.InsertNextValue(1000 + 7 * i)
+    grid.GetPointData().AddArray(gid)
+    return grid
+
+
 def write_pieces(grid, path, pieces, ghost_level, ids=None):
     """grid split into `pieces` by VTK's streaming pipeline; ids: the name of an id array of the
     grid to declare as the point data's GlobalIds attribute in every piece."""
@@ -62,6 +72,37 @@ def write_hand_cut(grid, directory, name="hand"):
         ex.Update()
         w = vtk.vtkXMLUnstructuredGridWriter()
         w.SetInputData(ex.GetOutput())
+        files.append(f"{name}_{k}.vtu")
+        w.SetFileName(os.path.join(directory, files[-1]))
+        w.Write()
+    path = os.path.join(directory, f"{name}.pvtu")
+    write_listing(path, files)
+    return path
+
+
+def write_consecutive(grid, directory, name, pieces):
+    """The grid cut into `pieces` pieces of consecutive cells (as `mpirun -np pieces hoct tree`
+    cuts a .vtu), each piece's points with the GlobalIds attribute (their ids in the grid),
+    listed by `directory/name.pvtu`; returns that path."""
+    n = grid.GetNumberOfCells()
+    ids = vtk.vtkIdTypeArray()
+    ids.SetName("GlobalIds")
+    for i in range(grid.GetNumberOfPoints()):
+        ids.InsertNextValue(i)
+    grid.GetPointData().SetGlobalIds(ids)
+    files = []
+    for k in range(pieces):
+        cells = vtk.vtkIdList()
+        for c in range(k * n // pieces, (k + 1) * n // pieces):
+            cells.InsertNextId(c)
+        ex = vtk.vtkExtractCells()
+        ex.SetInputData(grid)
+        ex.SetCellList(cells)
+        ex.Update()
+        piece = ex.GetOutput()
+        piece.GetPointData().SetGlobalIds(piece.GetPointData().GetArray("GlobalIds"))
+        w = vtk.vtkXMLUnstructuredGridWriter()
+        w.SetInputData(piece)
         files.append(f"{name}_{k}.vtu")
         w.SetFileName(os.path.join(directory, files[-1]))
         w.Write()

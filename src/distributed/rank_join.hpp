@@ -1,0 +1,47 @@
+// The pieces of one mesh spread over the ranks of an MPI communicator, each rank holding its own
+// (the pieces of a .pvtu it read, a parallel ParaView's piece, a Python rank's arrays), joined
+// into the mesh join_pieces gives of all of them in rank order, each rank keeping its share
+// (RankInput): the pieces' ghost cells and points dropped, the points the pieces share merged
+// (by their global ids, or without ids by position) and numbered as the whole join numbers
+// them, each point's span over the ranks, the whole's cell and triangle offsets and its
+// fingerprint (passed from rank to rank). What crosses between ranks is the points the pieces
+// may share, not the mesh.
+#pragma once
+
+#include "distributed/distributed_tree.hpp"
+#include "io/piece_join.hpp"
+#include "io/read_limits.hpp"
+
+#include <mpi.h>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace hoct {
+
+struct RankRead {
+  std::optional<RankInput> input; // on every rank, or on none
+  // Why not (on every rank): the ranks could not be sure to join the pieces as join_pieces does
+  // (a piece that cannot be read or joined, fields that differ, copies of a point at positions
+  // that differ without ids): join the whole then, which reports what is wrong.
+  std::string fallback;
+};
+
+// Collective over `comm` (every rank calls it, with its own pieces, maybe none). `failure` not
+// empty: this rank could not get its pieces (every rank then falls back). Never throws for the
+// pieces' content. The input's read_whole is left for the caller to set.
+RankRead join_rank_pieces(std::vector<FilePiece> pieces, const std::string &failure,
+                          const std::string &source, const ReadLimits &limits, MPI_Comm comm);
+
+// Collective over `comm`: every rank's pieces to rank 0, joined there by join_pieces (in rank
+// order; its errors thrown on rank 0). The other ranks get an empty mesh.
+MeshInput join_pieces_on_root(const std::vector<FilePiece> &pieces, const std::string &where,
+                              int threads, MPI_Comm comm);
+
+// Collective over `comm`: every rank's pieces on every rank, joined there by join_pieces (the same
+// mesh, or the same InputError, on every rank).
+MeshInput join_pieces_everywhere(const std::vector<FilePiece> &pieces, const std::string &where,
+                                 int threads, MPI_Comm comm);
+
+} // namespace hoct
