@@ -10,12 +10,16 @@ the cells their own way), with and without simplification.
 """
 
 import os
+import subprocess
 import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 
+sys.path.insert(0, os.path.join(os.path.dirname(HERE), "python"))
+
 import test_plugin as tp  # noqa: E402  (its helpers: hoct, cli_tree, compare_nodes, ...)
+import vtk_pieces  # noqa: E402  (tests/python: .pvtu pieces written by VTK)
 from paraview import servermanager as sm  # noqa: E402
 from paraview import simple as pv  # noqa: E402
 from vtkmodules.numpy_interface import dataset_adapter as dsa  # noqa: E402
@@ -61,6 +65,63 @@ def compare_whole(name, nodes, arcs, tree):
              f"{name}: {arcs.GetNumberOfLines()} arcs, the CLI has {len(tree['arcs'])}")
 
 
+def distribution(proxy):
+    """Rank 0's field data "Distribution": how the filter spread the mesh over the processes."""
+    a = local_output(proxy, 0).GetFieldData().GetAbstractArray("Distribution")
+    return a.GetValue(0) if a is not None else None
+
+
+def write_pieces(path, pvtu, pieces, ghost_level):
+    """vtk_pieces.write_pieces with global ids (a process's pieces are appended into one: only
+    ids join their copies of a point) in a process of its own: VTK's parallel writer here would use
+    pvbatch's MPI controller, whose other process does not run this script."""
+    env = {k: v for k, v in os.environ.items() if not k.startswith(("OMPI_", "PMIX_"))}
+    code = ("import sys; sys.path.insert(0, sys.argv[1]); import vtk_pieces as v; "
+            "v.write_pieces(v.with_ids(v.read_grid(sys.argv[2]), 'gid'), sys.argv[3], "
+            "int(sys.argv[4]), int(sys.argv[5]), 'gid')")
+    subprocess.run(["/usr/bin/python3", "-c", code, os.path.join(os.path.dirname(HERE), "python"),
+                    path, pvtu, str(pieces), str(ghost_level)], env=env, check=True)
+
+
+def slit_grid(path):
+    """A square of 12 x 12 x 2 triangles whose upper half has its own copies of the left half of
+    the middle row's points: a slit from the border (duplicate vertices across the halves; the
+    surface stays a disk), written by VTK with a smooth field f."""
+    import math
+
+    n, mid = 12, 6
+    pts = [(i / n, j / n, 0.0) for j in range(n + 1) for i in range(n + 1)]
+    tri = []
+    for j in range(n):
+        for i in range(n):
+            a, b = j * (n + 1) + i, j * (n + 1) + i + 1
+            c, e = (j + 1) * (n + 1) + i + 1, (j + 1) * (n + 1) + i
+            tri += [[a, b, c], [a, c, e]]
+    copy = {}
+    for t in tri[len(tri) // 2:]:
+        for m, v in enumerate(t):
+            if v // (n + 1) == mid and v % (n + 1) < n // 2:
+                if v not in copy:
+                    copy[v] = len(pts)
+                    pts.append(pts[v])
+                t[m] = copy[v]
+    grid = vtk_pieces.vtk.vtkUnstructuredGrid()
+    points = vtk_pieces.vtk.vtkPoints()
+    f = vtk_pieces.vtk.vtkDoubleArray()
+    f.SetName("f")
+    for x, y, z in pts:
+        points.InsertNextPoint(x, y, z)
+        f.InsertNextValue(math.sin(3 * x) * math.cos(2 * y) + 0.1 * x)
+    grid.SetPoints(points)
+    for t in tri:
+        grid.InsertNextCell(vtk_pieces.vtk.VTK_TRIANGLE, 3, t)
+    grid.GetPointData().SetScalars(f)
+    w = vtk_pieces.vtk.vtkXMLUnstructuredGridWriter()
+    w.SetInputData(grid)
+    w.SetFileName(path)
+    w.Write()
+
+
 def main():
     os.makedirs(tp.OUT, exist_ok=True)
     tp.render_tree.load_plugin()
@@ -100,6 +161,8 @@ def main():
         label = f"two pieces, threshold {threshold}%"
         tp.check(not errors and not warnings, f"{label}: errors {errors}, warnings {warnings}")
         compare_whole(label, local_output(f, 0), local_output(f, 1), tree)
+        tp.check(distribution(f) == "each process its own piece",
+                 f"{label}: each process keeps its piece, not {distribution(f)!r}")
         if threshold > 0:
             want = tp.cli_tree(path, "--simplify", "1%")
             simple = local_output(f, 2)
@@ -109,6 +172,39 @@ def main():
         # Gathered from both ranks (rank 1's part is empty): the same tree.
         compare_whole(label + ", gathered", tp.fetch(f, 0), tp.fetch(f, 1), tree)
         pv.Delete(f)
+
+    # A .pvtu of 4 pieces with a ghost level and global ids, each process reading two: the ghost
+    # cells are dropped and the copies joined as `hoct tree FILE.pvtu` does; the CLI's tree.
+    pvtu = os.path.join(tp.OUT, "mpi_gauss_ghosts.pvtu")
+    write_pieces(path, pvtu, 4, 1)
+    want = tp.cli_tree(pvtu)
+    f = pv.HigherOrderContourTree(Input=pv.XMLPartitionedUnstructuredGridReader(FileName=[pvtu]))
+    errors = catch(f, vtkCommand.ErrorEvent)
+    warnings = catch(f, vtkCommand.WarningEvent)
+    f.UpdatePipeline()
+    label = "4 pieces with ghosts"
+    tp.check(not errors and not warnings, f"{label}: errors {errors}, warnings {warnings}")
+    compare_whole(label, local_output(f, 0), local_output(f, 1), want)
+    tp.check(distribution(f) == "each process its own piece",
+             f"{label}: each process keeps its pieces, not {distribution(f)!r}")
+    pv.Delete(f)
+
+    # Duplicate vertices across the pieces (a slit): process 0 checks the whole mesh, which the
+    # processes join there from their pieces; forced past them, the CLI's --force tree.
+    slit = os.path.join(tp.OUT, "mpi_slit.vtu")
+    slit_grid(slit)
+    want = tp.cli_tree(slit, "--force")
+    f = pv.HigherOrderContourTree(Input=pv.RedistributeDataSet(
+        Input=pv.XMLUnstructuredGridReader(FileName=[slit])), Force=1)
+    errors = catch(f, vtkCommand.ErrorEvent)
+    f.UpdatePipeline()
+    label = "a slit over two processes, Force"
+    tp.check(not errors, f"{label}: errors {errors}")
+    compare_whole(label, local_output(f, 0), local_output(f, 1), want)
+    got = distribution(f) or ""
+    tp.check(got.startswith("each process its own piece; checks: the whole mesh on process 0"),
+             f"{label}: process 0 checks the joined whole, not {got!r}")
+    pv.Delete(f)
     print(f"{tp.passed} passed, {tp.failed} failed", flush=True)
     # Success: the script ends normally (no sys.exit, no os._exit as in test_plugin.py), so
     # that pvbatch's rank 0 releases the other ranks and all exit 0. Failure: exit 1 at once.

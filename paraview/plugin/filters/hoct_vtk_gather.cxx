@@ -91,4 +91,18 @@ MeshInput gather_whole(vtkMultiProcessController *controller, vtkUnstructuredGri
   return join_pieces(std::move(pieces), "the input's pieces", /*by_ids=*/true, threads);
 }
 
+std::vector<FilePiece> own_piece(vtkUnstructuredGrid *grid, vtkDataArray *scalar, int process) {
+  std::vector<FilePiece> pieces;
+  if (!grid || !scalar || grid->GetNumberOfCells() == 0)
+    return pieces;
+  vtkNew<vtkUnstructuredGrid> light;
+  light_copy(grid, scalar, light);
+  const std::string where = "the piece of process " + std::to_string(process);
+  FilePiece p = vtkio::grid_piece(light, scalar, FieldSelection::kScalar, where);
+  p.file = where;
+  if (p.input.num_cells() > 0)
+    pieces.push_back(std::move(p));
+  return pieces;
+}
+
 } // namespace hoct::paraview

@@ -1,10 +1,14 @@
-// A grid distributed over the processes of a parallel ParaView (pvbatch, pvserver under MPI)
-// gathered into one mesh on every process, for the distributed tree.
+// A grid distributed over the processes of a parallel ParaView (pvbatch, pvserver under MPI), for
+// the distributed tree: each process's own piece, joined with the others' where the processes
+// can join them alone (no process holds the whole), else gathered into one mesh on every
+// process.
 #pragma once
 
+#include "io/piece_join.hpp"
 #include "mesh/mesh_input.hpp"
 
 #include <string>
+#include <vector>
 
 class vtkDataArray;
 class vtkMultiProcessController;
@@ -23,5 +27,9 @@ namespace hoct::paraview {
 MeshInput gather_whole(vtkMultiProcessController *controller, vtkUnstructuredGrid *grid,
                        vtkDataArray *scalar, const std::string &failure, int threads,
                        std::string *scalar_name);
+
+// This process's piece as a .pvtu's piece is read (its cells, the scalar, its ghost levels and
+// global point ids); none without cells. Throws hoct::InputError for a piece it cannot take.
+std::vector<FilePiece> own_piece(vtkUnstructuredGrid *grid, vtkDataArray *scalar, int process);
 
 } // namespace hoct::paraview

@@ -17,6 +17,7 @@
 #include <vtkMultiProcessController.h>
 #ifdef HOCT_WITH_MPI
 #include "distributed/distributed_tree.hpp"
+#include "distributed/rank_join.hpp"
 
 #include <vtkMPI.h>
 #include <vtkMPICommunicator.h>
@@ -275,20 +276,59 @@ int vtkHoctContourTree::RequestDistributed(vtkInformationVector **inputVector,
       }
     }
     const int threads = hoct::thread_count(this->Threads);
-    const hoct::MeshInput whole =
-        hoct::paraview::gather_whole(controller, grid, scalar, failure, threads, &scalar_name);
-    this->UpdateProgress(0.2);
     // The properties as a request, as `mpirun hoct tree` makes it (the exact method only; the
     // arcs drawn straight: their paths need the whole graph on one process).
     hoct::TreeRequest rq = this->MakeRequest();
     rq.arcs = hoct::ArcGeometry::None;
-    hoct::DistributedOutcome d = hoct::distributed_tree(whole, rq, comm);
+    // Each process keeps its own piece, joined with the others' as `mpirun hoct tree` joins a
+    // .pvtu's pieces; where the processes cannot join them alone (or one failed), every process
+    // gathers the whole mesh, which reports what is wrong as one process would.
+    std::vector<hoct::FilePiece> own;
+    if (failure.empty()) {
+      try {
+        own = hoct::paraview::own_piece(grid, scalar, rank);
+      } catch (const std::exception &e) {
+        failure = e.what();
+      }
+    }
+    hoct::ReadLimits limits;
+    limits.threads = threads;
+    hoct::RankRead read =
+        hoct::join_rank_pieces(std::move(own), failure, "the input's pieces", limits, comm);
+    this->UpdateProgress(0.2);
+    hoct::DistributedOutcome d;
+    // How the mesh was spread (field data "Distribution" of rank 0's outputs).
+    std::string distribution;
+    if (read.input) {
+      distribution = "each process its own piece";
+      scalar_name = read.input->field_name;
+      // The whole on rank 0 (a mesh the pieces found a problem in): the pieces again, joined
+      // there.
+      read.input->read_whole = [grid, scalar, rank, threads, comm] {
+        return hoct::join_pieces_on_root(hoct::paraview::own_piece(grid, scalar, rank),
+                                         "the input's pieces", threads, comm);
+      };
+      d = hoct::distributed_tree(std::move(*read.input), rq, comm);
+    } else {
+      distribution = "the whole mesh on every process (" + read.fallback + ")";
+      const hoct::MeshInput whole =
+          hoct::paraview::gather_whole(controller, grid, scalar, failure, threads, &scalar_name);
+      d = hoct::distributed_tree(whole, rq, comm);
+    }
     collectives_done = true;
     if (rank != 0)
       return 1;
     for (const auto &why : d.outcome.warnings)
       vtkWarningMacro("Higher-Order Contour Tree: Force: " << why);
     tree_outputs(d.outcome, scalar_name, points, arcs, simplified);
+    if (!d.whole_check.empty())
+      distribution += "; checks: the whole mesh on process 0 (" + d.whole_check + ")";
+    if (!d.whole_tree.empty())
+      distribution += "; tree: the whole mesh on process 0 (" + d.whole_tree + ")";
+    add_string(points, "Distribution", distribution);
+    add_string(arcs, "Distribution", distribution);
+    if (simplified_output)
+      add_string(simplified, "Distribution", distribution);
   } catch (const hoct::AgreedError &e) {
     // Every process has it: reported once, by rank 0.
     if (rank == 0)
