@@ -1,6 +1,7 @@
 // Python bindings (pybind11): a thin layer over the library, exposing meshes and trees as
 // numpy arrays. The Python package `hoct` (python/hoct/__init__.py) adds the conveniences.
 #include "argument_checks.hpp"
+#include "array_input.hpp"
 #include "datasets/datasets.hpp"
 #include "io/read_mesh.hpp"
 #include "io/tree_json.hpp"
@@ -10,7 +11,9 @@
 #include "mesh/duplicate_points.hpp"
 #include "mesh/gll_nodes.hpp"
 #include "mesh/mesh.hpp"
+#include "mpi_bindings.hpp"
 #include "pipeline/compute_tree.hpp"
+#include "py_types.hpp"
 #ifdef HOCT_WITH_VTK
 #include "vtkio/vtk_file_reader.hpp"
 #endif
@@ -38,16 +41,11 @@ namespace py = pybind11;
 using namespace hoct;
 using py_checks::no_nul;
 
+using python::PyMesh;
+using python::PyTree;
+using python::tree_request;
+
 namespace {
-
-struct PyMesh {
-  MeshInput input;
-  std::shared_ptr<Mesh> mesh;
-};
-
-struct PyTree {
-  TreeResult tree;
-};
 
 template <class T> py::array_t<T> array_1d(const std::vector<T> &v) {
   py::array_t<T> a(static_cast<py::ssize_t>(v.size()));
@@ -76,91 +74,18 @@ PyMesh make_mesh(MeshInput in, int threads = 0) {
   return m;
 }
 
-// Cells convert only safely (no forcecast): a float or uint64 array is refused, not truncated
-// or wrapped (hoct.from_arrays converts the arrays a .vtu file could hold, with messages).
-// `blocks`: one (cells, nodes per cell) array per node count or per block of a meshio mesh,
-// nodes in VTK order, with each cell's VTK type in `types` (one array per block; 0: a complete
-// Lagrange triangle of the node count). With merge_tolerance >= 0, points at the same position are
-// merged first
-// (--merge-duplicates).
+// hoct.from_arrays: the arrays as an input (python/array_input), built.
 PyMesh from_arrays(py::array_t<double, py::array::c_style | py::array::forcecast> points,
                    const std::vector<py::array_t<int64_t, py::array::c_style>> &blocks,
                    const std::vector<py::array_t<int64_t, py::array::c_style>> &types,
                    py::array_t<double, py::array::c_style | py::array::forcecast> values,
                    double merge_tolerance, const std::string &field_name, bool float32_points,
                    bool float32_values) {
-  if (points.ndim() != 2 || (points.shape(1) != 2 && points.shape(1) != 3))
-    throw Error("from_arrays: points must have shape (n, 2) or (n, 3)");
-  if (values.ndim() != 1 || values.shape(0) != points.shape(0))
-    throw Error("from_arrays: values must have one entry per point");
-  if (types.size() != blocks.size())
-    throw Error("from_arrays: one cell type per block of cells");
-  MeshInput in;
-  const auto p = points.unchecked<2>();
-  for (py::ssize_t i = 0; i < points.shape(0); ++i)
-    in.points.push_back({p(i, 0), p(i, 1), points.shape(1) == 3 ? p(i, 2) : 0.0});
-  in.values.assign(values.data(), values.data() + values.shape(0));
-  if (float32_points)
-    in.coordinate_precision = 0x1p-24;
-  if (float32_values)
-    in.value_precision = 0x1p-24;
-  int64_t first = 0; // the cell index of the block's first cell, for messages
-  for (std::size_t b = 0; b < blocks.size(); ++b) {
-    const auto &cells = blocks[b];
-    if (cells.ndim() != 2)
-      throw Error("from_arrays: cells must have shape (cells, nodes per cell), nodes in VTK order");
-    const int64_t n = cells.shape(1);
-    if (types[b].ndim() != 1 || types[b].shape(0) != cells.shape(0))
-      throw Error("from_arrays: one cell type per cell");
-    const auto t = types[b].unchecked<1>();
-    const auto c = cells.unchecked<2>();
-    std::vector<int64_t> ids(static_cast<std::size_t>(n));
-    std::string problem;
-    for (py::ssize_t k = 0; k < cells.shape(0); ++k) {
-      int64_t type = t(k);
-      if (type == 0) {
-        if (degree_from_node_count(n) < 1)
-          throw Error("from_arrays: " + std::to_string(n) +
-                      " nodes per cell is not a complete triangle (3, 6, 10, 15, ...)");
-        type = n == 3 ? 5 : 69;
-      }
-      for (int64_t i = 0; i < n; ++i)
-        ids[static_cast<std::size_t>(i)] = c(k, static_cast<py::ssize_t>(i));
-      if (add_vtk_cell(in, type, ids.data(), n, points.shape(0), 0, &problem) !=
-          VtkCellResult::Added)
-        throw Error("from_arrays: cell " + std::to_string(first + k) + problem);
-    }
-    first += cells.shape(0);
-  }
-  in.source = "arrays";
-  in.field_name = field_name;
+  MeshInput in = python::input_from_arrays(points, blocks, types, values, field_name,
+                                           float32_points, float32_values);
   if (merge_tolerance >= 0)
     merge_duplicate_points(in, merge_tolerance, thread_count(0));
   return make_mesh(std::move(in));
-}
-
-// contour_tree(mesh, ...): the keyword arguments as a library request (the same one `hoct tree`
-// makes of its flags). Arcs are drawn on request (Tree.arc_paths), from the kept graph.
-// contour_tree's arguments as a library request (the arcs' paths left to the caller).
-TreeRequest tree_request(const std::string &method, int refine, int threads, bool keep_flat,
-                         bool force, bool augmented, const std::string &simplify) {
-  TreeRequest rq;
-  if (method == "exact")
-    rq.method = TreeMethod::Exact;
-  else if (method == "linear")
-    rq.method = TreeMethod::Linear;
-  else if (method == "refine")
-    rq.method = TreeMethod::Refine;
-  else
-    throw Error("contour_tree: method must be 'exact', 'linear' or 'refine'");
-  rq.refine = refine;
-  rq.threads = threads;
-  rq.keep_flat = keep_flat;
-  rq.force = force;
-  rq.augmented = augmented;
-  if (!simplify.empty())
-    rq.simplify = parse_threshold(simplify, "contour_tree: simplify");
-  return rq;
 }
 
 PyTree py_contour_tree(const PyMesh &m, const std::string &method, int refine, int threads,
@@ -169,56 +94,6 @@ PyTree py_contour_tree(const PyMesh &m, const std::string &method, int refine, i
   rq.arcs = ArcGeometry::Graph;
   TreeOutcome out = compute_tree(*m.mesh, rq, &m.input);
   return {out.simplified ? std::move(*out.simplified) : std::move(out.tree)};
-}
-
-// The exact tree over the ranks of an MPI communicator (mpi4py's, by its Fortran handle): every
-// rank holds the whole mesh and calls this; rank 0 gets the tree, the others None.
-py::object py_contour_tree_mpi(const PyMesh &m, long long fortran_comm, int threads, bool keep_flat,
-                               bool force, bool augmented, const std::string &simplify) {
-#ifdef HOCT_WITH_MPI
-  int initialized = 0, finalized = 0;
-  MPI_Initialized(&initialized);
-  MPI_Finalized(&finalized);
-  if (!initialized || finalized)
-    throw Error("contour_tree: comm given but MPI is not running in this process (import "
-                "mpi4py.MPI first)");
-  const MPI_Comm comm = MPI_Comm_f2c(static_cast<MPI_Fint>(fortran_comm));
-  TreeRequest rq = tree_request("exact", 4, threads, keep_flat, force, augmented, simplify);
-  rq.arcs = ArcGeometry::None; // the arcs' paths need the whole graph on one rank
-  std::optional<DistributedOutcome> d;
-  {
-    py::gil_scoped_release release;
-    try {
-      d = distributed_tree(m.input, rq, comm);
-    } catch (const AgreedError &) {
-      throw; // every rank raises it
-    } catch (const std::exception &e) {
-      // This rank's alone: the others would wait for it at their next collective step.
-      int ranks = 1, rank = 0;
-      MPI_Comm_size(comm, &ranks);
-      MPI_Comm_rank(comm, &rank);
-      if (ranks > 1) {
-        std::fprintf(stderr, "hoct: error (MPI rank %d): %s\n", rank, e.what());
-        MPI_Abort(comm, 1);
-      }
-      throw;
-    }
-  }
-  if (d->rank != 0)
-    return py::none();
-  TreeOutcome &out = d->outcome;
-  return py::cast(PyTree{out.simplified ? std::move(*out.simplified) : std::move(out.tree)});
-#else
-  (void)m;
-  (void)fortran_comm;
-  (void)threads;
-  (void)keep_flat;
-  (void)force;
-  (void)augmented;
-  (void)simplify;
-  throw Error("contour_tree: this hoct was built without MPI (Debian: libopenmpi-dev), so it "
-              "cannot use comm");
-#endif
 }
 
 py::dict merge_tree_dict(const PyTree &t, bool join) {
@@ -524,7 +399,7 @@ PYBIND11_MODULE(_hoct, m) {
   m.def("from_arrays", &from_arrays);
   m.def("is_bookkeeping_array", &is_bookkeeping_array);
   m.def("contour_tree", &py_contour_tree, py::call_guard<py::gil_scoped_release>());
-  m.def("contour_tree_mpi", &py_contour_tree_mpi);
+  python::bind_mpi(m);
   m.def(
       "generate",
       [](const std::string &name, int degree, long long cells, uint64_t seed, double frequency,
@@ -543,3 +418,28 @@ PYBIND11_MODULE(_hoct, m) {
       py::call_guard<py::gil_scoped_release>());
   m.def("dataset_names", &dataset_names);
 }
+
+namespace hoct::python {
+
+TreeRequest tree_request(const std::string &method, int refine, int threads, bool keep_flat,
+                         bool force, bool augmented, const std::string &simplify) {
+  TreeRequest rq;
+  if (method == "exact")
+    rq.method = TreeMethod::Exact;
+  else if (method == "linear")
+    rq.method = TreeMethod::Linear;
+  else if (method == "refine")
+    rq.method = TreeMethod::Refine;
+  else
+    throw Error("contour_tree: method must be 'exact', 'linear' or 'refine'");
+  rq.refine = refine;
+  rq.threads = threads;
+  rq.keep_flat = keep_flat;
+  rq.force = force;
+  rq.augmented = augmented;
+  if (!simplify.empty())
+    rq.simplify = parse_threshold(simplify, "contour_tree: simplify");
+  return rq;
+}
+
+} // namespace hoct::python

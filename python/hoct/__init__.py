@@ -7,6 +7,9 @@
     tree.to_networkx()
     tree.input == {"points": ..., "cells": ..., "field": ..., "fingerprint": mesh.fingerprint}
 
+Under MPI (mpi4py): `contour_tree(mesh, comm=comm)` with the whole mesh on every rank, or with
+each rank's own piece (`read_pieces`, `piece_from_arrays`) where no rank holds the whole.
+
 The same library computes what the `hoct` command line prints: the results are identical.
 """
 import math
@@ -17,7 +20,7 @@ import warnings
 
 from . import _arguments as _args
 from . import _hoct
-from ._hoct import HoctError, Mesh, Tree
+from ._hoct import HoctError, Mesh, Piece, Tree
 
 __all__ = ["read", "from_arrays", "from_meshio", "generate", "contour_tree", "Mesh", "Tree",
            "HoctError", "HoctWarning"]
@@ -133,6 +136,78 @@ def from_arrays(points, cells, values, degree=None, cell_types=None, merge_dupli
                         _args.merge_tolerance(merge_duplicates, "from_arrays"))
 
 
+def read_pieces(path, comm, scalar=None, max_memory=None, threads=None):
+    """This rank's pieces of a partitioned .pvtu, under mpi4py (`comm`, e.g. MPI.COMM_WORLD;
+    every rank of it calls this): rank r of R reads pieces [r P / R, (r + 1) P / R) of the P the
+    file lists and the ranks join them together (ghost cells dropped, shared points merged by
+    global ids, else by position), as `mpirun -np R hoct tree FILE.pvtu` does: no rank holds
+    the whole mesh. Returns a Piece for `contour_tree(piece, comm=comm)`.
+
+    Where the ranks cannot be sure to join the pieces alone (fields that differ, copies of a
+    point that disagree), every rank reads the whole file instead: `piece.whole_on_every_rank`
+    says why (None otherwise). `scalar`, `max_memory`, `threads` as for `read`. Errors are
+    raised on every rank alike."""
+    what = "read_pieces"
+    path = _args.path(path, what + ": path")
+    if not os.fsdecode(path).lower().endswith(".pvtu"):
+        raise HoctError(what + ": %s is not a partitioned .pvtu file (read other files with "
+                        "hoct.read and pass comm= to contour_tree)" % os.fsdecode(path))
+    scalar = "" if scalar is None else _args.text(scalar, what + ": scalar")
+    budget = "" if max_memory is None else _args.text(str(max_memory), what + ": max_memory")
+    return _hoct.read_pieces(os.fsdecode(path), scalar, budget, _args.threads(threads, what),
+                             _comm_handle(comm, what))
+
+
+def piece_from_arrays(points, cells, values, comm, global_ids=None, ghost_cells=None,
+                      degree=None, cell_types=None):
+    """This rank's piece of a mesh spread over the ranks of `comm` (an mpi4py communicator;
+    every rank of it calls this), in situ: each rank passes its own cells as `from_arrays`
+    takes them (an empty `cells` for a rank without any), and the ranks join the pieces in rank
+    order without any rank holding the whole mesh. Returns a Piece for
+    `contour_tree(piece, comm=comm)`.
+
+    global_ids   one integer per point, the same for every copy of a point on several ranks
+                 (VTK's GlobalIds; DOLFINx's original input indices): copies are merged by id
+                 (their positions must agree). Without ids, copies are merged by position
+                 (within 1e-9 of the bounding-box diagonal), as hoct joins a .pvtu's pieces.
+    ghost_cells  one flag per cell, true for a copy of a cell another rank owns (VTK's
+                 vtkGhostType DUPLICATECELL): dropped, with the points only they use.
+
+    A rank's bad arrays are raised as HoctError on every rank ("rank r: ..."). Where the ranks
+    cannot be sure to join the pieces alone, every rank gets every piece and joins the whole
+    (`piece.whole_on_every_rank` says why); a mesh that does not join is raised on every rank.
+    The piece keeps a copy of this rank's arrays as given, for a report on the whole mesh."""
+    import numpy as np
+
+    what = "piece_from_arrays"
+    handle = _comm_handle(comm, what)
+    failure = ""
+    try:
+        args = _cell_arrays(points, cells, values, degree, cell_types, what)
+        ids = np.zeros(0, dtype=np.int64)
+        if global_ids is not None:
+            ids = _args.index_array(global_ids, what + ": global_ids").ravel()
+        ghosts = np.zeros(0, dtype=np.int64)
+        if ghost_cells is not None:
+            ghosts = np.asarray(ghost_cells).astype(bool).astype(np.int64).ravel()
+            if ghosts.size == 0 and len(args[1][0]) > 0:
+                raise HoctError(what + ": ghost_cells must have one entry per cell")
+        float32 = _float32s(points, values)
+    except HoctError as e:  # raised on every rank, from the native side, with this rank's number
+        failure = str(e) or what + ": bad arrays"
+        args = (np.zeros((0, 3)), [np.zeros((0, 3), dtype=np.int64)],
+                [np.zeros(0, dtype=np.int64)], np.zeros(0))
+        ids = ghosts = np.zeros(0, dtype=np.int64)
+        float32 = (False, False)
+    return _hoct.piece_from_arrays(*args, "f", *float32, ids, ghosts, failure, 0, handle)
+
+
+def _comm_handle(comm, what):
+    if not callable(getattr(comm, "py2f", None)):
+        raise HoctError(what + ": comm must be an mpi4py communicator (mpi4py.MPI.Comm)")
+    return comm.py2f()
+
+
 def _float32(a):
     import numpy as np
 
@@ -140,9 +215,18 @@ def _float32(a):
 
 
 def _from_arrays(points, cells, values, degree, cell_types, what, tolerance=-1.0, field="f"):
+    return _hoct.from_arrays(*_cell_arrays(points, cells, values, degree, cell_types, what),
+                             tolerance, field, *_float32s(points, values))
+
+
+def _float32s(points, values):
+    return _float32(points), _float32(values)
+
+
+def _cell_arrays(points, cells, values, degree, cell_types, what):
+    """The arrays from_arrays takes, checked: points, [cells], [types], values."""
     import numpy as np
 
-    float32 = _float32(points), _float32(values)
     points = _args.real_array(points, what + ": points")
     values = _args.real_array(values, what + ": values")
     cells = _args.index_array(cells, what + ": cells")
@@ -178,8 +262,7 @@ def _from_arrays(points, cells, values, degree, cell_types, what, tolerance=-1.0
         if d is None or _CELL_NODES[t](d) != n:
             raise HoctError("%s: cell %d has VTK type %d, which does not match %d-node cells%s"
                             % (what, i, t, n, "" if degree is None else " of degree %d" % degree))
-    return _hoct.from_arrays(points, [cells], [types.astype(np.int64)], values, tolerance, field,
-                             *float32)
+    return points, [cells], [types.astype(np.int64)], values
 
 
 def generate(name, degree=0, cells=0, seed=1, frequency=1.0, plateau=0.0, scale=1.0, offset=0.0,
@@ -324,18 +407,23 @@ def contour_tree(mesh, simplify=None, threads=None, method="exact", refine=4, ke
                every rank; one that only one rank meets ends the job (MPI_Abort), as the others
                would wait for it. A domain with holes or handles gets its Reeb graph (each
                rank's pieces cut into disks, glued on rank 0). Not over MPI: method "linear"
-               and "refine".
+               and "refine". `mesh` may also be this rank's Piece (read_pieces,
+               piece_from_arrays): then no rank holds the whole mesh; comm must be the
+               communicator the piece was made on.
 
     The arguments follow the flags' rules: simplify a finite number >= 0 or "N%" with N such a
     number (nan, -1, "-5%" are refused), refine an integer 1..1024, threads 1..1024, the
     switches True or False."""
     what = "contour_tree"
+    if isinstance(mesh, Piece) and comm is None:
+        raise HoctError(what + ": a Piece is one rank's share: pass the communicator it was "
+                        "made on (comm=)")
     if comm is not None:
-        if not callable(getattr(comm, "py2f", None)):
-            raise HoctError(what + ": comm must be an mpi4py communicator (mpi4py.MPI.Comm)")
+        handle = _comm_handle(comm, what)
         if _args.text(method, what + ": method") != "exact":
             raise HoctError(what + ": over MPI only the exact tree is computed (method='exact')")
-        return _hoct.contour_tree_mpi(mesh, comm.py2f(), _args.threads(threads, what),
+        native = _hoct.contour_tree_piece if isinstance(mesh, Piece) else _hoct.contour_tree_mpi
+        return native(mesh, handle, _args.threads(threads, what),
                                       _args.flag(keep_flat, what + ": keep_flat"),
                                       _args.flag(force, what + ": force"),
                                       _args.flag(augmented, what + ": augmented"),
