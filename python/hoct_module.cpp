@@ -56,15 +56,6 @@ template <class T> py::array_t<T> array_1d(const std::vector<T> &v) {
 // The mesh built on `threads` threads (0 = every hardware thread, as the command line's default;
 // the same mesh for any number). Problems a forced tree can go past (inverted cells, duplicate
 // vertices) are left to contour_tree, as `hoct tree` does; any other makes it throw here.
-PyMesh make_mesh_from_samples(MeshInput in, const std::vector<CellSamples> &samples, int threads) {
-  PyMesh m;
-  m.input = std::move(in);
-  m.mesh = std::make_shared<Mesh>(build_mesh_from_samples(
-      m.input, samples, {.throw_on_error = false, .threads = thread_count(threads)}));
-  require_valid_mesh(*m.mesh, /*allow_forceable=*/true);
-  return m;
-}
-
 PyMesh make_mesh(MeshInput in, int threads = 0) {
   PyMesh m;
   m.input = std::move(in);
@@ -382,15 +373,12 @@ PYBIND11_MODULE(_hoct, m) {
                           " quadrilateral(s) have their nodes at Gauss-Lobatto-Legendre points "
                           "(as DOLFINx writes order >= 3), though VTK's Lagrange cells label "
                           "them as equispaced: read as the polynomial through those points");
-        if (gll.cells > 0) {
+        if (gll.cells > 0)
           notes.push_back(std::to_string(gll.cells) +
                           " cell(s) have their nodes at Gauss-Lobatto-Legendre points (as "
                           "DOLFINx writes degree >= 3), though VTK's Lagrange cells label them "
-                          "as equispaced: their values are read as samples at the nodes' true "
-                          "positions");
-          return std::make_pair(make_mesh_from_samples(std::move(input), gll.samples, threads),
-                                notes);
-        }
+                          "as equispaced: read as the polynomial through their values at those "
+                          "points");
         return std::make_pair(make_mesh(std::move(input), threads), notes);
       },
       py::arg("path"), py::arg("scalar"), py::arg("max_memory"), py::arg("threads"),

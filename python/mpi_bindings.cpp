@@ -10,6 +10,7 @@
 #include "distributed/distributed_tree.hpp"
 #include "distributed/rank_join.hpp"
 #include "io/read_mesh.hpp"
+#include "mesh/gll_nodes.hpp"
 
 #include <mpi.h>
 #endif
@@ -125,6 +126,20 @@ PyPiece read_pieces(const std::string &path, const std::string &scalar,
     PyPiece p;
     RankRead read = read_pvtu_by_ranks(path, field, limits, comm);
     if (read.input) {
+      // DOLFINx's degree >= 3 nodes at GLL points, resampled piece by piece as hoct.read
+      // resamples the whole (and so the whole where rank 0 needs it).
+      std::string failure;
+      try {
+        resample_gll_cells(read.input->piece.input);
+      } catch (const std::exception &e) {
+        failure = e.what();
+      }
+      agree_on_failure(failure, comm);
+      read.input->read_whole = [read_whole = std::move(read.input->read_whole)] {
+        MeshInput whole = read_whole();
+        resample_gll_cells(whole);
+        return whole;
+      };
       p.cells = static_cast<int64_t>(read.input->piece.input.num_cells());
       p.whole_cells = read.input->whole_cells;
       p.whole_points = read.input->whole_points;
@@ -134,6 +149,7 @@ PyPiece read_pieces(const std::string &path, const std::string &scalar,
       std::string failure;
       try {
         p.whole = read_mesh(path, field, limits);
+        resample_gll_cells(*p.whole);
       } catch (const std::exception &e) {
         failure = e.what();
       }

@@ -30,27 +30,28 @@ LoadedMesh load_mesh(const std::string &path, const FieldSelection &field, bool 
                    static_cast<long long>(m.merged_points), path.c_str(), merge_tolerance);
   }
   const GllResampling gll = resample_gll_cells(r.input);
-  if (gll.cells > 0)
+  print_gll_notes(path, gll.cells, gll.quadrilaterals);
+  r.read_seconds = clock.lap();
+  const MeshBuildOptions build{.throw_on_error = strict, .threads = thread_count(threads)};
+  r.mesh = keep_input ? build_mesh(r.input, build) : build_mesh(std::move(r.input), build);
+  r.build_seconds = clock.lap();
+  return r;
+}
+
+void print_gll_notes(const std::string &path, int64_t triangles, int64_t quadrilaterals) {
+  if (triangles > 0)
     std::fprintf(stderr,
                  "hoct: note: %lld cell(s) of %s have their nodes at Gauss-Lobatto-Legendre "
                  "points (as DOLFINx writes degree >= 3), though VTK's Lagrange cells label them "
-                 "as equispaced: their values are read as samples at the nodes' true positions\n",
-                 static_cast<long long>(gll.cells), path.c_str());
-  if (gll.quadrilaterals > 0)
+                 "as equispaced: read as the polynomial through their values at those points\n",
+                 static_cast<long long>(triangles), path.c_str());
+  if (quadrilaterals > 0)
     std::fprintf(stderr,
                  "hoct: note: %lld quadrilateral(s) of %s have their nodes at "
                  "Gauss-Lobatto-Legendre points (as DOLFINx writes order >= 3), though VTK's "
                  "Lagrange cells label them as equispaced: read as the polynomial through those "
                  "points\n",
-                 static_cast<long long>(gll.quadrilaterals), path.c_str());
-  r.read_seconds = clock.lap();
-  const MeshBuildOptions build{.throw_on_error = strict, .threads = thread_count(threads)};
-  if (gll.cells > 0)
-    r.mesh = build_mesh_from_samples(r.input, gll.samples, build);
-  else
-    r.mesh = keep_input ? build_mesh(r.input, build) : build_mesh(std::move(r.input), build);
-  r.build_seconds = clock.lap();
-  return r;
+                 static_cast<long long>(quadrilaterals), path.c_str());
 }
 
 void add_merge_option(CLI::App *sub, MergeOption &merge) {

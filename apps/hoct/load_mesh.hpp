@@ -30,6 +30,10 @@ struct LoadedMesh {
 LoadedMesh load_mesh(const std::string &path, const FieldSelection &field, bool strict,
                      double merge_tolerance = -1, int threads = 1, bool keep_input = false);
 
+// The notes on cells read with their nodes at Gauss-Lobatto-Legendre points (mesh/gll_nodes:
+// `triangles` and `quadrilaterals` resampled), on stderr.
+void print_gll_notes(const std::string &path, int64_t triangles, int64_t quadrilaterals);
+
 // --merge-duplicates[=TOL] of a command.
 struct MergeOption {
   std::string text;

@@ -4,6 +4,7 @@
 #include "io/read_mesh.hpp"
 #include "io/tree_json.hpp"
 #include "io/tree_svg_writer.hpp"
+#include "load_mesh.hpp"
 #include "memory_guard.hpp"
 #include "mesh/duplicate_points.hpp"
 #include "mesh/gll_nodes.hpp"
@@ -80,15 +81,27 @@ void run_ranks(const DistributedTreeRun &run, TreeRequest rq, bool root, bool &c
       throw Error(run.file + ": " + e.what());
     }
     if (read.input) {
+      // DOLFINx's degree >= 3 nodes at GLL points: each rank resamples its piece (an edge's
+      // nodes get the same bits in every piece), as one process resamples the whole.
       std::string failure;
+      int64_t gll[2] = {0, 0};
       try {
-        if (resample_gll_cells(read.input->piece.input).cells > 0)
-          failure = run.file + ": cells with nodes at Gauss-Lobatto-Legendre points (DOLFINx, "
-                               "degree >= 3) are not read over MPI yet (run hoct without mpirun)";
+        const GllResampling g = resample_gll_cells(read.input->piece.input);
+        gll[0] = g.cells;
+        gll[1] = g.quadrilaterals;
       } catch (const std::exception &e) {
         failure = e.what();
       }
       agree_on_failure(failure);
+      MPI_Allreduce(MPI_IN_PLACE, gll, 2, MPI_INT64_T, MPI_SUM, MPI_COMM_WORLD);
+      if (root)
+        print_gll_notes(run.file, gll[0], gll[1]);
+      // The whole, where rank 0 needs it, resampled as the pieces are.
+      read.input->read_whole = [read_whole = std::move(read.input->read_whole)] {
+        MeshInput whole = read_whole();
+        resample_gll_cells(whole);
+        return whole;
+      };
       const std::string field_name = read.input->field_name;
       const int64_t cells = read.input->whole_cells;
       rq.read_seconds = total.seconds();
@@ -110,9 +123,9 @@ void run_ranks(const DistributedTreeRun &run, TreeRequest rq, bool root, bool &c
     input = read_mesh(run.file, run.field, limits);
     if (run.merge_tolerance >= 0)
       merge_duplicate_points(input, run.merge_tolerance, limits.threads);
-    if (resample_gll_cells(input).cells > 0)
-      throw Error(run.file + ": cells with nodes at Gauss-Lobatto-Legendre points (DOLFINx, "
-                             "degree >= 3) are not read over MPI yet (run hoct without mpirun)");
+    const GllResampling g = resample_gll_cells(input);
+    if (root)
+      print_gll_notes(run.file, g.cells, g.quadrilaterals);
   } catch (const std::exception &e) {
     failure = e.what();
   }

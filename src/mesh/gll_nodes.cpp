@@ -1,10 +1,15 @@
 #include "mesh/gll_nodes.hpp"
 
+#include "mesh/mesh_fingerprint.hpp"
 #include "poly/lagrange_to_bernstein.hpp"
 #include "poly/lattice.hpp"
 #include "poly/quad_basis.hpp"
+#include "poly/sample_fit.hpp"
+#include "util/error.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <string>
 #include <utility>
 
 namespace hoct {
@@ -64,15 +69,75 @@ bool reference_position(const Vec3 &p0, const Vec3 &p1, const Vec3 &p2, const Ve
   return true;
 }
 
-} // namespace
+// M[i (p + 1) + a] = L_a(i / p), L_a the Lagrange basis of the GLL points g of degree p: values
+// at the GLL points to values at the equispaced ones (the ends exactly).
+std::vector<double> gll_to_equispaced(const std::vector<double> &g) {
+  const int p = static_cast<int>(g.size()) - 1;
+  std::vector<double> m(static_cast<std::size_t>((p + 1) * (p + 1)), 0.0);
+  for (int i = 0; i <= p; ++i)
+    for (int a = 0; a <= p; ++a) {
+      long double w = 1.0L;
+      for (int k = 0; k <= p; ++k)
+        if (k != a)
+          w *= (static_cast<long double>(i) / p - g[k]) / (static_cast<long double>(g[a]) - g[k]);
+      m[static_cast<std::size_t>(i * (p + 1) + a)] = static_cast<double>(w);
+    }
+  for (int i = 0; i <= p; i += p)
+    for (int a = 0; a <= p; ++a)
+      m[static_cast<std::size_t>(i * (p + 1) + a)] = (i == 0 ? a == 0 : a == p) ? 1.0 : 0.0;
+  return m;
+}
 
-namespace {
+// A node's new value and position, written once every one is computed from the old values.
+struct NodeUpdate {
+  int64_t id;
+  double value;
+  Vec3 x;
+};
+
+// An edge's inner nodes (`ids`: its p + 1 nodes from one end to the other) at the equispaced
+// points: their values interpolated through the GLL nodes; their positions on the straight edge
+// between its ends (`straight`), else interpolated too. Computed from the end of lower point id
+// whichever cell or process asks: every cell around the edge, in any piece of a partitioned
+// mesh, gives the same bits.
+void resample_edge(const MeshInput &in, std::vector<int64_t> ids, const std::vector<double> &m,
+                   bool straight, std::vector<NodeUpdate> &out) {
+  if (ids.front() > ids.back())
+    std::reverse(ids.begin(), ids.end());
+  const int p = static_cast<int>(ids.size()) - 1;
+  const Vec3 &x0 = in.points[static_cast<std::size_t>(ids.front())],
+             &x1 = in.points[static_cast<std::size_t>(ids.back())];
+  for (int t = 1; t < p; ++t) {
+    double f = 0;
+    Vec3 x{0, 0, 0};
+    for (int a = 0; a <= p; ++a) {
+      const double w = m[static_cast<std::size_t>(t * (p + 1) + a)];
+      const auto id = static_cast<std::size_t>(ids[static_cast<std::size_t>(a)]);
+      f += w * in.values[id];
+      if (!straight)
+        for (int k = 0; k < 3; ++k)
+          x[k] += w * in.points[id][k];
+    }
+    if (straight) {
+      const double s = double(t) / p;
+      for (int k = 0; k < 3; ++k)
+        x[k] = (1 - s) * x0[k] + s * x1[k];
+    }
+    out.push_back({ids[static_cast<std::size_t>(t)], f, x});
+  }
+}
+
+void apply_updates(MeshInput &in, const std::vector<NodeUpdate> &updates) {
+  for (const NodeUpdate &u : updates) {
+    in.values[static_cast<std::size_t>(u.id)] = u.value;
+    in.points[static_cast<std::size_t>(u.id)] = u.x;
+  }
+}
 
 // Quadrilaterals of order p >= 3 whose edge nodes sit at the GLL points of their straight edges:
 // their node values and positions replaced by those of their tensor interpolant (1D Lagrange
-// through the GLL points, in each direction) at the equispaced nodes. An edge node's new value
-// depends on its edge's nodes alone, so two such cells agree on it; all are computed from the
-// old values before any is written.
+// through the GLL points, in each direction) at the equispaced nodes. An edge node's depend on
+// its edge's nodes alone (resample_edge).
 int64_t resample_gll_quadrilaterals(MeshInput &in) {
   constexpr double kTol = 1e-6;
   const std::size_t nc = in.num_cells();
@@ -117,35 +182,26 @@ int64_t resample_gll_quadrilaterals(MeshInput &in) {
   }
   if (cells.empty())
     return 0;
-  // M[i (p+1) + a] = L_a(i / p), L_a the Lagrange basis of the GLL points.
-  for (int p = 3; p <= kMaxQuadDegree; ++p) {
-    if (gll_of[p].empty())
-      continue;
-    const std::vector<double> &g = gll_of[p];
-    std::vector<double> &m = to_equi[p];
-    m.assign(static_cast<std::size_t>((p + 1) * (p + 1)), 0.0);
-    for (int i = 0; i <= p; ++i)
-      for (int a = 0; a <= p; ++a) {
-        long double w = 1.0L;
-        for (int k = 0; k <= p; ++k)
-          if (k != a)
-            w *= (static_cast<long double>(i) / p - g[k]) / (static_cast<long double>(g[a]) - g[k]);
-        m[static_cast<std::size_t>(i * (p + 1) + a)] = static_cast<double>(w);
-      }
-    for (int i = 0; i <= p; i += p) // the ends exactly
-      for (int a = 0; a <= p; ++a)
-        m[static_cast<std::size_t>(i * (p + 1) + a)] = (i == 0 ? a == 0 : a == p) ? 1.0 : 0.0;
-  }
-  std::vector<std::pair<int64_t, std::pair<double, Vec3>>> updates;
+  for (int p = 3; p <= kMaxQuadDegree; ++p)
+    if (!gll_of[p].empty())
+      to_equi[p] = gll_to_equispaced(gll_of[p]);
+  std::vector<NodeUpdate> updates;
+  std::vector<int64_t> edge;
   for (const std::size_t c : cells) {
     const int p = in.cell_degree[c], n = p + 1;
     const std::vector<double> &m = to_equi[p];
     const int64_t *nodes = &in.cell_nodes[in.cell_offsets[c]];
-    for (int j = 0; j <= p; ++j)
-      for (int i = 0; i <= p; ++i) {
-        const bool corner = (i == 0 || i == p) && (j == 0 || j == p);
-        if (corner)
-          continue;
+    for (int e = 0; e < 4; ++e) {
+      edge.clear();
+      for (int k = 0; k <= p; ++k)
+        edge.push_back(e == 0   ? nodes[k]
+                       : e == 1 ? nodes[p + n * k]
+                       : e == 2 ? nodes[k + n * p]
+                                : nodes[n * k]);
+      resample_edge(in, edge, m, /*straight=*/false, updates);
+    }
+    for (int j = 1; j < p; ++j)
+      for (int i = 1; i < p; ++i) {
         double f = 0;
         Vec3 x{0, 0, 0};
         for (int b = 0; b <= p; ++b)
@@ -159,13 +215,12 @@ int64_t resample_gll_quadrilaterals(MeshInput &in) {
             for (int k = 0; k < 3; ++k)
               x[k] += w * in.points[id][k];
           }
-        updates.push_back({nodes[i + n * j], {f, x}});
+        updates.push_back({nodes[i + n * j], f, x});
       }
   }
-  for (const auto &[id, fx] : updates) {
-    in.values[static_cast<std::size_t>(id)] = fx.first;
-    in.points[static_cast<std::size_t>(id)] = fx.second;
-  }
+  if (!in.read_fingerprint)
+    in.read_fingerprint = mesh_fingerprint(in);
+  apply_updates(in, updates);
   return static_cast<int64_t>(cells.size());
 }
 
@@ -233,42 +288,53 @@ GllResampling resample_gll_cells(MeshInput &in) {
   }
   if (r.cells == 0)
     return r;
-  r.samples.resize(nc);
-  for (std::size_t c = 0; c < nc; ++c) {
-    const int d = in.cell_degree[c];
-    const int n = lattice_size(d);
-    const int64_t *nodes = &in.cell_nodes[in.cell_offsets[c]];
-    CellSamples &s = r.samples[c];
-    s.degree = d;
-    s.values.resize(static_cast<std::size_t>(n));
-    for (int i = 0; i < n; ++i)
-      s.values[i] = in.values[nodes[i]];
-    if (gll[c]) {
-      s.positions = std::move(positions[c]);
-    } else {
-      s.positions.resize(static_cast<std::size_t>(n));
-      for (int i = 0; i < n; ++i) {
-        const auto [a, b] = lattice_point(d, i);
-        s.positions[i] = {double(a) / d, double(b) / d};
-      }
-    }
-  }
-  // The GLL cells' nodes onto the equispaced lattice of their straight triangles (a node shared
-  // by two such cells lands on the same point from both: the lattice of an edge is symmetric).
+  // Each GLL cell at its equispaced lattice: the edges' nodes by resample_edge (on the straight
+  // edges), the inner ones from the polynomial through all its samples (their values at their
+  // reference positions), on the straight triangle's lattice.
+  std::vector<std::vector<double>> to_equi(kMaxDegree + 1);
+  std::vector<NodeUpdate> updates;
+  std::vector<int64_t> edge;
+  std::vector<double> values;
   for (std::size_t c = 0; c < nc; ++c) {
     if (!gll[c])
       continue;
     const int d = in.cell_degree[c];
+    if (to_equi[d].empty())
+      to_equi[d] = gll_to_equispaced(gll_of[d]);
     const int64_t *nodes = &in.cell_nodes[in.cell_offsets[c]];
+    for (int k = 0; k < 3; ++k) {
+      edge.clear();
+      for (int t = 0; t <= d; ++t)
+        edge.push_back(nodes[edge_lattice_index(d, k, t)]);
+      resample_edge(in, edge, to_equi[d], /*straight=*/true, updates);
+    }
+    const int n = lattice_size(d);
+    values.resize(static_cast<std::size_t>(n));
+    for (int i = 0; i < n; ++i)
+      values[i] = in.values[nodes[i]];
+    BernsteinTriangle poly;
+    try {
+      poly = bernstein_from_samples(positions[c], values, d);
+    } catch (const Error &e) {
+      throw Error(in.source + ": cell " + std::to_string(c) +
+                  ": its nodes at Gauss-Lobatto-Legendre points give no polynomial: " + e.what());
+    }
     const Vec3 p0 = in.points[nodes[corner_index(d, 0)]], p1 = in.points[nodes[corner_index(d, 1)]],
                p2 = in.points[nodes[corner_index(d, 2)]];
-    for (int i = 0; i < lattice_size(d); ++i) {
+    for (int i = 0; i < n; ++i) {
       const auto [a, b] = lattice_point(d, i);
+      if (a == 0 || b == 0 || a + b == d)
+        continue; // a corner or an edge node
       const double u = double(a) / d, v = double(b) / d;
+      Vec3 x;
       for (int k = 0; k < 3; ++k)
-        in.points[nodes[i]][k] = (1 - u - v) * p0[k] + u * p1[k] + v * p2[k];
+        x[k] = (1 - u - v) * p0[k] + u * p1[k] + v * p2[k];
+      updates.push_back({nodes[i], poly(u, v), x});
     }
   }
+  if (!in.read_fingerprint)
+    in.read_fingerprint = mesh_fingerprint(in);
+  apply_updates(in, updates);
   return r;
 }
 

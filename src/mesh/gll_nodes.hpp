@@ -17,19 +17,23 @@ namespace hoct {
 std::vector<double> gll_points(int d);
 
 struct GllResampling {
-  int64_t cells = 0;                // cells found with GLL-placed nodes (0: nothing changed)
-  std::vector<CellSamples> samples; // when cells > 0: every cell's node values at their positions
-  // Quadrilaterals of order >= 3 found with GLL-placed nodes: resampled in place (exactly: their
-  // tensor interpolant at the equispaced nodes, values and positions; no samples needed).
+  // Triangles found with GLL-placed nodes, resampled in place: their nodes moved onto the
+  // equispaced lattice of their straight triangle, with the values there of the polynomial
+  // through their samples (its values at the nodes' true positions).
+  int64_t cells = 0;
+  // Quadrilaterals of order >= 3 found with GLL-placed nodes, resampled in place: their tensor
+  // interpolant at the equispaced nodes, values and positions.
   int64_t quadrilaterals = 0;
 };
 
-// Finds the straight cells of degree >= 3 whose edge nodes sit at the GLL points of their edges
-// (within 1e-6 of the edge: float32 files pass) and whose other nodes lie inside. If there are
-// any, returns every cell's samples (a GLL cell's node values at the reference positions of its
-// nodes; any other cell's at its lattice) and moves the GLL cells' nodes onto the equispaced
-// lattice of their straight triangle, so that the geometry is the straight cell it is; else
-// changes nothing. Build the mesh with build_mesh_from_samples(input, r.samples).
+// Finds the straight triangles of degree >= 3 whose edge nodes sit at the GLL points of their
+// edges (within 1e-6 of the edge: float32 files pass) and whose other nodes lie inside, and the
+// quadrilaterals of order >= 3 whose edge nodes sit at the GLL points of their straight edges,
+// and resamples them in place (see GllResampling); changes nothing else. An edge's nodes get
+// the same bits from every cell around it, computed from the edge's own nodes (so that the pieces
+// of a partitioned mesh, each resampled alone, agree with the whole resampled at once). Throws
+// hoct::Error naming the cell whose samples give no polynomial (ill-conditioned). Mesh's
+// fingerprint: of the data as read, when the input records it (MeshInput::read_fingerprint).
 GllResampling resample_gll_cells(MeshInput &input);
 
 } // namespace hoct

@@ -60,6 +60,8 @@ uint64_t fingerprint_value(const FingerprintState &s) {
 }
 
 InputFingerprint mesh_fingerprint(const MeshInput &input) {
+  if (input.read_fingerprint)
+    return *input.read_fingerprint;
   FingerprintState s = fingerprint_start();
   fingerprint_count(s, input.points.size());
   fingerprint_words(s, input.points.data(), 3 * input.points.size());

@@ -13,7 +13,8 @@
 
 namespace hoct {
 
-// One pass over the input's arrays: about 1 ns per 8-byte word on one core.
+// One pass over the input's arrays: about 1 ns per 8-byte word on one core. An input changed
+// since it was read gives the fingerprint of the data as read (MeshInput::read_fingerprint).
 InputFingerprint mesh_fingerprint(const MeshInput &input);
 
 // The same hash of an input held in consecutive parts (one per process, in order), section by

@@ -8,11 +8,13 @@
 // Lagrange triangles carrying the same polynomials before anything else looks at the cells.
 #pragma once
 
+#include "util/fingerprint.hpp"
 #include "util/uninitialized_vector.hpp"
 #include "util/vec.hpp"
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -64,6 +66,9 @@ struct MeshInput {
   // The same for the stored values: 2^-24 for float32 arrays, 0 for doubles (and integers, and
   // text whose digits cannot be known). The field's precision (Field::precision) counts it.
   double value_precision = 0;
+  // The fingerprint of the data as read, where they were changed since (GLL nodes resampled,
+  // mesh/gll_nodes): mesh_fingerprint gives it, so that a tree records the file's data.
+  std::optional<InputFingerprint> read_fingerprint;
 
   // Cells in compressed-row form: the nodes of cell c are
   // cell_nodes[cell_offsets[c] .. cell_offsets[c+1]), cell_node_count(kind(c), d) of them for

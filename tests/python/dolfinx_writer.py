@@ -10,7 +10,8 @@ into Lagrange spaces: exact in P2 and P3, whose trees are therefore known analyt
   p2curved.xdmf / .pvd        XDMFFile and VTKFile of a P2 function on a second-order (Gmsh)
                                mesh of a disk
   p1_points.npz                the P1 function's values at DOLFINx's geometry nodes (in memory)
-  part<N>.pvd                  VTKFile of the P2 function written by N ranks (--partitioned)"""
+  part<N>.pvd, part<N>p3.pvd   VTKFile of the P2 and P3 functions written by N ranks
+                               (--partitioned)"""
 import os
 import sys
 
@@ -63,9 +64,10 @@ def main():
     out = sys.argv[1]
     comm = MPI.COMM_WORLD
     if "--partitioned" in sys.argv:
-        u = function(square(comm), 2)
-        with io.VTKFile(comm, os.path.join(out, f"part{comm.size}.pvd"), "w") as vf:
-            vf.write_function(u, 0.0)
+        msh = square(comm)
+        for degree, name in ((2, f"part{comm.size}"), (3, f"part{comm.size}p3")):
+            with io.VTKFile(comm, os.path.join(out, f"{name}.pvd"), "w") as vf:
+                vf.write_function(function(msh, degree), 0.0)
         return
     msh = square(comm)
     for degree in (1, 2, 3):

@@ -3,17 +3,19 @@ f = (x - 0.4)^2 (y + 0.1) - 0.6 (y - 0.55)^2 (x + 0.2), which lies in Q2 and Q3 
 interior critical point, a saddle at (0.4, 0.55) of value 0. Q3's nodes are at Gauss-Lobatto-
 Legendre points though VTK labels them equispaced (read as equispaced, the same function gave 59
 tree nodes instead of 5): hoct notes it and reads the polynomial through them, so Q2 and Q3 give
-the same tree, with the analytic saddle; every tree passes `hoct check`. Each tree is also within
+the same tree, with the analytic saddle; every tree passes `hoct check`. Q3 written by DOLFINx
+on 2 ranks, read by `mpirun -np 1-3 hoct tree` piece by piece: one process's JSON. Each tree is also within
 the stability bound of the PL tree of f on 400 x 400 squares (bottleneck distance <= sup |f - f_h|
 + M h^2 / 4; f_h = f for Q2 and Q3, Q1's bilinear interpolant sampled here in numpy)."""
 import os
+import shutil
 import subprocess
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import numpy as np  # noqa: E402
-from hoct_testing import (Results, bottleneck, compare_trees, run, tempdir, tree_json,  # noqa: E402
-                          write_pl_reference)
+from hoct_testing import (HOCT, Results, bottleneck, compare_trees, run, tempdir,  # noqa: E402
+                          tree_json, write_pl_reference)
 
 WRITER = """
 import sys
@@ -97,4 +99,35 @@ with tempdir() as d:
             abs(inside[0]["position"][0] - 0.4) < 1e-7 and \
             abs(inside[0]["position"][1] - 0.55) < 1e-7 and abs(inside[0]["value"]) < 1e-9
         r.check(ok, f"Q{deg}: interior nodes {inside}, expected the saddle at (0.4, 0.55)")
+
+    # Q3 written by DOLFINx on 2 ranks (a .pvtu of 2 pieces with ghosts), read by
+    # `mpirun -np N hoct tree` (N = 1, 2, 3): each rank resamples its pieces' GLL cells, the JSON
+    # is one process's byte for byte, and the tree is the serial file's.
+    mpirun = shutil.which("mpirun")
+    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
+               OMP_NUM_THREADS="1")
+    part = os.path.join(d, "part")
+    os.makedirs(part)
+    w = subprocess.run([mpirun, "--oversubscribe", "-np", "2", sys.executable, "-c", WRITER,
+                        part], capture_output=True, text=True, env=env) if mpirun else None
+    if w is not None and w.returncode == 0:
+        pvtu = os.path.join(part, "q3000000.pvtu")
+        j, _ = tree_json(pvtu)
+        compare_trees(r, "Q3 written on 2 ranks vs serial", j, trees[3], tol=1e-12)
+        want = os.path.join(part, "plain.json")
+        run("tree", pvtu, "--json", want, "--no-timings", "-q")
+        for m in (1, 2, 3):
+            got = os.path.join(part, f"mpi{m}.json")
+            p = subprocess.run([mpirun, "--oversubscribe", "-np", str(m), HOCT, "tree", pvtu,
+                                "--json", got, "--no-timings"], capture_output=True, text=True,
+                               env=dict(env, HOCT_MPI="1"))
+            same = p.returncode == 0 and open(got, "rb").read() == open(want, "rb").read()
+            r.check(same and "reads the whole" not in p.stderr
+                    and "quadrilateral(s)" in p.stderr,
+                    f"Q3 on 2 pieces, hoct on {m} ranks: the plain JSON, each rank its pieces: "
+                    f"{p.stdout[-400:]}{p.stderr[-800:]}")
+        print("DOLFINx Q3 in 2 pieces: 1-3 ranks checked", flush=True)
+    else:
+        r.check(w is None or w.returncode == 0,
+                f"DOLFINx on 2 ranks failed:\n{w.stderr[-2000:] if w else ''}")
 r.finish()
