@@ -205,6 +205,30 @@ def main():
     tp.check(got.startswith("each process its own piece; checks: the whole mesh on process 0"),
              f"{label}: process 0 checks the joined whole, not {got!r}")
     pv.Delete(f)
+
+    # DOLFINx's P3 (nodes at Gauss-Lobatto-Legendre points) in 2 pieces with ghosts, one per
+    # process: each resamples its piece as `hoct tree` resamples the whole; the CLI's tree, with
+    # the note. (Not RedistributeDataSet: on these cells ParaView 5.11's vtkExtractCells inside
+    # it crashes now and then.)
+    p3 = tp.dolfinx_p3()
+    if p3:
+        p3 = os.path.join(os.path.dirname(p3), "p3_p0_000000.vtu")
+        pieces = os.path.join(tp.OUT, "dolfinx_p3_pieces.pvtu")
+        write_pieces(p3, pieces, 2, 1)
+        p3 = pieces
+        f = pv.HigherOrderContourTree(
+            Input=pv.XMLPartitionedUnstructuredGridReader(FileName=[p3]))
+        errors = catch(f, vtkCommand.ErrorEvent)
+        f.UpdatePipeline()
+        label = "DOLFINx P3 over two processes"
+        tp.check(not errors, f"{label}: errors {errors}")
+        compare_whole(label, local_output(f, 0), local_output(f, 1), tp.cli_tree(p3))
+        tp.check(distribution(f) == "each process its own piece",
+                 f"{label}: each process keeps its piece, not {distribution(f)!r}")
+        notes = local_output(f, 0).GetFieldData().GetAbstractArray("Notes")
+        tp.check(notes is not None and "Gauss-Lobatto-Legendre" in notes.GetValue(0),
+                 f"{label}: the field data Notes say the nodes were resampled")
+        pv.Delete(f)
     print(f"{tp.passed} passed, {tp.failed} failed", flush=True)
     # Success: the script ends normally (no sys.exit, no os._exit as in test_plugin.py), so
     # that pvbatch's rank 0 releases the other ranks and all exit 0. Failure: exit 1 at once.

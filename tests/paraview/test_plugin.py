@@ -328,6 +328,20 @@ def check_screenshot(png):
           f"screenshot: {background} of {len(rgb)} pixels are background")
 
 
+def dolfinx_p3():
+    """DOLFINx's P3 .pvtu (tests/python/dolfinx_writer.py, in a process of its own), or None
+    where DOLFINx is not installed."""
+    env = {k: v for k, v in os.environ.items() if not k.startswith(("OMPI_", "PMIX_"))}
+    writer = os.path.join(ROOT, "tests", "python", "dolfinx_writer.py")
+    out = os.path.join(OUT, "dolfinx")
+    os.makedirs(out, exist_ok=True)
+    w = subprocess.run(["/usr/bin/python3", writer, out], capture_output=True, text=True, env=env)
+    if w.returncode != 0:
+        print(f"DOLFINx P3 skipped (no DOLFINx?): {w.stderr[-300:]}", flush=True)
+        return None
+    return os.path.join(out, "p3000000.pvtu")
+
+
 def main():
     os.makedirs(OUT, exist_ok=True)
     render_tree.load_plugin()
@@ -348,6 +362,19 @@ def main():
         if p in (1, 2):
             check_dataset(f"random Q{p} as type {9 if p == 1 else 28}", path,
                           with_cell_type(source, 9 if p == 1 else 28))
+
+    # DOLFINx's P3 (nodes at Gauss-Lobatto-Legendre points, labelled equispaced): resampled as
+    # `hoct tree` reads it (else spurious nodes), with a note in the field data.
+    p3 = dolfinx_p3()
+    if p3:
+        f = apply_filter(pv.XMLPartitionedUnstructuredGridReader(FileName=[p3]))
+        tree = cli_tree(p3)
+        compare_nodes("DOLFINx P3", fetch(f, 0), tree)
+        compare_arcs("DOLFINx P3", fetch(f, 1), tree)
+        notes = fetch(f, 0).GetFieldData().GetAbstractArray("Notes")
+        check(notes is not None and "Gauss-Lobatto-Legendre" in notes.GetValue(0),
+              "DOLFINx P3: the field data Notes say the nodes were resampled")
+        pv.Delete(f)
 
     # The same quadratic cells as VTK_QUADRATIC_TRIANGLE (22) instead of VTK_LAGRANGE_TRIANGLE.
     path, source = data["gauss"]

@@ -3,6 +3,7 @@
 #include "hoct_vtk_convert.h"
 #include "hoct_vtk_gather.h"
 #include "io/tree_polydata.hpp"
+#include "mesh/gll_nodes.hpp"
 #include "mesh/mesh.hpp"
 #include "pipeline/compute_tree.hpp"
 #include "util/parallel_for.hpp"
@@ -83,6 +84,32 @@ void add_string(vtkPolyData *out, const char *name, const std::string &value) {
   a->SetName(name);
   a->InsertNextValue(value);
   out->GetFieldData()->AddArray(a);
+}
+
+// What `hoct tree` says of cells read with their nodes at Gauss-Lobatto-Legendre points (empty
+// for none).
+std::string gll_notes(const hoct::GllResampling &g) {
+  std::string notes;
+  if (g.cells > 0)
+    notes = std::to_string(g.cells) +
+            " cell(s) have their nodes at Gauss-Lobatto-Legendre points (as DOLFINx writes "
+            "degree >= 3), though VTK's Lagrange cells label them as equispaced: read as the "
+            "polynomial through their values at those points";
+  if (g.quadrilaterals > 0)
+    notes = std::to_string(g.quadrilaterals) +
+            " quadrilateral(s) have their nodes at Gauss-Lobatto-Legendre points (as DOLFINx "
+            "writes order >= 3), though VTK's Lagrange cells label them as equispaced: read as "
+            "the polynomial through those points";
+  return notes;
+}
+
+// The notes as field data "Notes" of the outputs (none without notes).
+void add_notes(const std::string &notes, vtkPolyData *points, vtkPolyData *arcs,
+               vtkPolyData *simplified) {
+  if (notes.empty())
+    return;
+  for (vtkPolyData *out : {points, arcs, simplified})
+    add_string(out, "Notes", notes);
 }
 
 // How the input is spread over the processes (pvbatch, pvserver under MPI): this process's rank,
@@ -197,6 +224,8 @@ int vtkHoctContourTree::RequestData(vtkInformation *, vtkInformationVector **inp
     vtkDebugMacro("Higher-Order Contour Tree: the tree of point array '"
                   << scalar_name << "'" << (by_default ? " (the default: none was named)" : ""));
     hoct::MeshInput input = hoct::paraview::mesh_input_from_grid(grid, scalar);
+    // DOLFINx's degree >= 3 nodes at GLL points, resampled as `hoct tree` reads them.
+    const std::string notes = gll_notes(hoct::resample_gll_cells(input));
     this->UpdateProgress(0.1);
     // Only the linear method reads the input's nodes again; else the build consumes them.
     const hoct::MeshBuildOptions build{.throw_on_error = false,
@@ -209,6 +238,7 @@ int vtkHoctContourTree::RequestData(vtkInformation *, vtkInformationVector **inp
       vtkWarningMacro("Higher-Order Contour Tree: Force: " << why);
     this->UpdateProgress(0.8);
     tree_outputs(out, scalar_name, points, arcs, simplified);
+    add_notes(notes, points, arcs, simplified);
   } catch (const std::exception &e) {
     points->Initialize();
     arcs->Initialize();
@@ -299,20 +329,38 @@ int vtkHoctContourTree::RequestDistributed(vtkInformationVector **inputVector,
     hoct::DistributedOutcome d;
     // How the mesh was spread (field data "Distribution" of rank 0's outputs).
     std::string distribution;
+    std::string notes;
     if (read.input) {
       distribution = "each process its own piece";
+      // DOLFINx's degree >= 3 nodes at GLL points: each process resamples its piece (an edge's
+      // nodes get the same bits in every piece), as one process resamples the whole.
+      std::string problem;
+      int64_t gll[2] = {0, 0};
+      try {
+        const hoct::GllResampling g = hoct::resample_gll_cells(read.input->piece.input);
+        gll[0] = g.cells;
+        gll[1] = g.quadrilaterals;
+      } catch (const std::exception &e) {
+        problem = e.what();
+      }
+      hoct::agree_on_failure(problem, comm);
+      MPI_Allreduce(MPI_IN_PLACE, gll, 2, MPI_INT64_T, MPI_SUM, comm);
+      notes = gll_notes({gll[0], gll[1]});
       scalar_name = read.input->field_name;
       // The whole on rank 0 (a mesh the pieces found a problem in): the pieces again, joined
       // there.
       read.input->read_whole = [grid, scalar, rank, threads, comm] {
-        return hoct::join_pieces_on_root(hoct::paraview::own_piece(grid, scalar, rank),
-                                         "the input's pieces", threads, comm);
+        hoct::MeshInput whole = hoct::join_pieces_on_root(
+            hoct::paraview::own_piece(grid, scalar, rank), "the input's pieces", threads, comm);
+        hoct::resample_gll_cells(whole);
+        return whole;
       };
       d = hoct::distributed_tree(std::move(*read.input), rq, comm);
     } else {
       distribution = "the whole mesh on every process (" + read.fallback + ")";
-      const hoct::MeshInput whole =
+      hoct::MeshInput whole =
           hoct::paraview::gather_whole(controller, grid, scalar, failure, threads, &scalar_name);
+      notes = gll_notes(hoct::resample_gll_cells(whole));
       d = hoct::distributed_tree(whole, rq, comm);
     }
     collectives_done = true;
@@ -329,6 +377,7 @@ int vtkHoctContourTree::RequestDistributed(vtkInformationVector **inputVector,
     add_string(arcs, "Distribution", distribution);
     if (simplified_output)
       add_string(simplified, "Distribution", distribution);
+    add_notes(notes, points, arcs, simplified);
   } catch (const hoct::AgreedError &e) {
     // Every process has it: reported once, by rank 0.
     if (rank == 0)
