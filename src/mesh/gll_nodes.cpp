@@ -234,8 +234,11 @@ GllResampling resample_gll_cells(MeshInput &in) {
     return r;
   }
   const std::size_t nc = in.num_cells();
-  std::vector<char> gll(nc, 0);
-  std::vector<std::vector<Vec2>> positions(nc);
+  // Most meshes have no cell of degree 3 or more: nothing to look at (and no per-cell arrays).
+  if (std::none_of(in.cell_degree.begin(), in.cell_degree.end(), [](uint8_t d) { return d >= 3; }))
+    return r;
+  // The GLL cells and their nodes' reference positions.
+  std::vector<std::pair<std::size_t, std::vector<Vec2>>> found;
   std::vector<std::vector<double>> gll_of(kMaxDegree + 1);
   constexpr double kTol = 1e-6;
   for (std::size_t c = 0; c < nc; ++c) {
@@ -281,8 +284,7 @@ GllResampling resample_gll_cells(MeshInput &in) {
       }
     }
     if (ok && !equispaced) {
-      gll[c] = 1;
-      positions[c] = std::move(uv);
+      found.emplace_back(c, std::move(uv));
       ++r.cells;
     }
   }
@@ -295,9 +297,7 @@ GllResampling resample_gll_cells(MeshInput &in) {
   std::vector<NodeUpdate> updates;
   std::vector<int64_t> edge;
   std::vector<double> values;
-  for (std::size_t c = 0; c < nc; ++c) {
-    if (!gll[c])
-      continue;
+  for (const auto &[c, positions] : found) {
     const int d = in.cell_degree[c];
     if (to_equi[d].empty())
       to_equi[d] = gll_to_equispaced(gll_of[d]);
@@ -314,7 +314,7 @@ GllResampling resample_gll_cells(MeshInput &in) {
       values[i] = in.values[nodes[i]];
     BernsteinTriangle poly;
     try {
-      poly = bernstein_from_samples(positions[c], values, d);
+      poly = bernstein_from_samples(positions, values, d);
     } catch (const Error &e) {
       throw Error(in.source + ": cell " + std::to_string(c) +
                   ": its nodes at Gauss-Lobatto-Legendre points give no polynomial: " + e.what());
