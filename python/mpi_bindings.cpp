@@ -77,10 +77,18 @@ template <class F> auto collective(MPI_Comm comm, F &&f) {
   }
 }
 
-py::object tree_on_rank_0(DistributedOutcome &d) {
-  if (d.rank != 0)
+// The exact tree over `comm` for contour_tree's request, by `compute` (a distributed_tree
+// call, the GIL released): the Tree on rank 0, None on the others.
+template <class F> py::object tree_over(MPI_Comm comm, TreeRequest rq, F compute) {
+  rq.arcs = ArcGeometry::None; // the arcs' paths need the whole graph on one rank
+  std::optional<DistributedOutcome> d;
+  {
+    py::gil_scoped_release release;
+    d = collective(comm, [&] { return compute(rq); });
+  }
+  if (d->rank != 0)
     return py::none();
-  TreeOutcome &out = d.outcome;
+  TreeOutcome &out = d->outcome;
   return py::cast(PyTree{out.simplified ? std::move(*out.simplified) : std::move(out.tree)});
 }
 
@@ -252,14 +260,8 @@ py::object contour_tree_mpi(const PyMesh &m, long long fortran_comm, int threads
                             bool force, bool augmented, const std::string &simplify) {
 #ifdef HOCT_WITH_MPI
   const MPI_Comm comm = running_comm(fortran_comm, "contour_tree");
-  TreeRequest rq = tree_request("exact", 4, threads, keep_flat, force, augmented, simplify);
-  rq.arcs = ArcGeometry::None; // the arcs' paths need the whole graph on one rank
-  std::optional<DistributedOutcome> d;
-  {
-    py::gil_scoped_release release;
-    d = collective(comm, [&] { return distributed_tree(m.input, rq, comm); });
-  }
-  return tree_on_rank_0(*d);
+  return tree_over(comm, tree_request("exact", 4, threads, keep_flat, force, augmented, simplify),
+                   [&](const TreeRequest &rq) { return distributed_tree(m.input, rq, comm); });
 #else
   (void)m, (void)fortran_comm, (void)threads, (void)keep_flat, (void)force, (void)augmented,
       (void)simplify;
@@ -277,17 +279,11 @@ py::object contour_tree_piece(const PyPiece &p, long long fortran_comm, int thre
   MPI_Comm_compare(comm, p.comm, &same);
   if (same != MPI_IDENT && same != MPI_CONGRUENT)
     throw Error("contour_tree: comm is not the communicator the piece was made on");
-  TreeRequest rq = tree_request("exact", 4, threads, keep_flat, force, augmented, simplify);
-  rq.arcs = ArcGeometry::None;
-  std::optional<DistributedOutcome> d;
-  {
-    py::gil_scoped_release release;
-    d = collective(comm, [&] {
-      return p.share ? distributed_tree(RankInput(*p.share), rq, comm)
-                     : distributed_tree(*p.whole, rq, comm);
-    });
-  }
-  return tree_on_rank_0(*d);
+  return tree_over(comm, tree_request("exact", 4, threads, keep_flat, force, augmented, simplify),
+                   [&](const TreeRequest &rq) {
+                     return p.share ? distributed_tree(RankInput(*p.share), rq, comm)
+                                    : distributed_tree(*p.whole, rq, comm);
+                   });
 #else
   (void)p, (void)fortran_comm, (void)threads, (void)keep_flat, (void)force, (void)augmented,
       (void)simplify;

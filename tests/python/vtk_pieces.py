@@ -61,23 +61,7 @@ def write_hand_cut(grid, directory, name="hand"):
     for i in range(grid.GetNumberOfPoints()):
         plain.InsertNextValue(5 + 3 * i)
     grid.GetPointData().AddArray(plain)
-    files = []
-    for k, (lo, hi) in enumerate([(0, n // 3), (n // 3, n // 3), (n // 3, n)]):
-        cells = vtk.vtkIdList()
-        for c in range(lo, hi):
-            cells.InsertNextId(c)
-        ex = vtk.vtkExtractCells()
-        ex.SetInputData(grid)
-        ex.SetCellList(cells)
-        ex.Update()
-        w = vtk.vtkXMLUnstructuredGridWriter()
-        w.SetInputData(ex.GetOutput())
-        files.append(f"{name}_{k}.vtu")
-        w.SetFileName(os.path.join(directory, files[-1]))
-        w.Write()
-    path = os.path.join(directory, f"{name}.pvtu")
-    write_listing(path, files)
-    return path
+    return write_cell_ranges(grid, directory, name, [(0, n // 3), (n // 3, n // 3), (n // 3, n)])
 
 
 def write_consecutive(grid, directory, name, pieces):
@@ -90,17 +74,27 @@ def write_consecutive(grid, directory, name, pieces):
     for i in range(grid.GetNumberOfPoints()):
         ids.InsertNextValue(i)
     grid.GetPointData().SetGlobalIds(ids)
+    return write_cell_ranges(grid, directory, name,
+                             [(k * n // pieces, (k + 1) * n // pieces) for k in range(pieces)],
+                             attribute="GlobalIds")
+
+
+def write_cell_ranges(grid, directory, name, ranges, attribute=None):
+    """Piece k: the grid's cells [lo, hi) of ranges[k], as directory/name_k.vtu (its array
+    `attribute`, if given, declared the GlobalIds attribute again: extracting drops it), listed
+    by directory/name.pvtu; returns that path."""
     files = []
-    for k in range(pieces):
+    for k, (lo, hi) in enumerate(ranges):
         cells = vtk.vtkIdList()
-        for c in range(k * n // pieces, (k + 1) * n // pieces):
+        for c in range(lo, hi):
             cells.InsertNextId(c)
         ex = vtk.vtkExtractCells()
         ex.SetInputData(grid)
         ex.SetCellList(cells)
         ex.Update()
         piece = ex.GetOutput()
-        piece.GetPointData().SetGlobalIds(piece.GetPointData().GetArray("GlobalIds"))
+        if attribute:
+            piece.GetPointData().SetGlobalIds(piece.GetPointData().GetArray(attribute))
         w = vtk.vtkXMLUnstructuredGridWriter()
         w.SetInputData(piece)
         files.append(f"{name}_{k}.vtu")
