@@ -8,6 +8,7 @@
 #ifdef HOCT_WITH_MPI
 #include "distributed/distributed_read.hpp"
 #include "distributed/distributed_tree.hpp"
+#include "distributed/pieces_gather.hpp"
 #include "distributed/rank_join.hpp"
 #include "io/read_mesh.hpp"
 #include "mesh/gll_nodes.hpp"
@@ -294,7 +295,12 @@ py::object contour_tree_piece(const PyPiece &p, long long fortran_comm, int thre
 } // namespace
 
 void bind_mpi(py::module_ &m) {
-  py::class_<PyPiece>(m, "Piece")
+  py::class_<PyPiece>(m, "Piece",
+                      "One rank's piece of a mesh spread over the ranks of an MPI communicator "
+                      "(read_pieces, piece_from_arrays), for contour_tree(piece, comm=...): "
+                      "num_cells (this rank's share of the input cells), whole_cells, "
+                      "whole_points, field_name, source, and whole_on_every_rank (None, or why "
+                      "every rank holds the whole mesh instead)")
       .def_property_readonly("num_cells", [](const PyPiece &p) { return p.cells; })
       .def_property_readonly("whole_cells", [](const PyPiece &p) { return p.whole_cells; })
       .def_property_readonly("whole_points", [](const PyPiece &p) { return p.whole_points; })

@@ -22,8 +22,8 @@ from . import _arguments as _args
 from . import _hoct
 from ._hoct import HoctError, Mesh, Piece, Tree
 
-__all__ = ["read", "from_arrays", "from_meshio", "generate", "contour_tree", "Mesh", "Tree",
-           "HoctError", "HoctWarning"]
+__all__ = ["read", "from_arrays", "from_meshio", "generate", "contour_tree", "read_pieces",
+           "piece_from_arrays", "Mesh", "Piece", "Tree", "HoctError", "HoctWarning"]
 
 
 class HoctWarning(UserWarning):

@@ -6,7 +6,6 @@
 #include "mesh/duplicate_points.hpp"
 #include "mesh/mesh_fingerprint.hpp"
 #include "mesh/mesh_partition.hpp"
-#include "util/byte_codec.hpp"
 #include "util/uninitialized_vector.hpp"
 
 #include <algorithm>
@@ -457,97 +456,6 @@ RankRead join_rank_pieces(std::vector<FilePiece> pieces, const std::string &fail
     in.fingerprint = InputFingerprint{whole_points, whole_cells, field_name, fingerprint_value(fp)};
   result.input = std::move(in);
   return result;
-}
-
-namespace {
-
-void put_text(ByteWriter &w, const std::string &s) {
-  w.array(std::vector<char>(s.begin(), s.end()));
-}
-
-std::string take_text(ByteReader &r) {
-  const std::vector<char> v = r.array<char>();
-  return std::string(v.begin(), v.end());
-}
-
-// A piece as it travels to rank 0: what join_pieces reads of it.
-void encode_piece(ByteWriter &w, const FilePiece &p) {
-  const MeshInput &m = p.input;
-  w.array(m.points);
-  w.array(m.values);
-  w.array(m.cell_offsets);
-  w.array(m.cell_nodes);
-  w.array(m.cell_degree);
-  w.array(m.cell_kind);
-  w.value(m.coordinate_precision);
-  w.value(m.value_precision);
-  put_text(w, m.field_name);
-  put_text(w, m.source);
-  w.array(p.arrays.cell_ghost);
-  w.array(p.arrays.point_ghost);
-  w.array(p.arrays.global_ids);
-  put_text(w, p.arrays.global_ids_name);
-  w.value(p.arrays.ghost_cells);
-  w.value(p.arrays.ghost_points);
-  put_text(w, p.file);
-}
-
-FilePiece decode_piece(ByteReader &r) {
-  FilePiece p;
-  MeshInput &m = p.input;
-  m.points = r.array<Vec3, PooledAllocator<Vec3>>();
-  m.values = r.array<double, PooledAllocator<double>>();
-  m.cell_offsets = r.array<int64_t, PooledAllocator<int64_t>>();
-  m.cell_nodes = r.array<int64_t, PooledAllocator<int64_t>>();
-  m.cell_degree = r.array<uint8_t, PooledAllocator<uint8_t>>();
-  m.cell_kind = r.array<uint8_t, PooledAllocator<uint8_t>>();
-  m.coordinate_precision = r.value<double>();
-  m.value_precision = r.value<double>();
-  m.field_name = take_text(r);
-  m.source = take_text(r);
-  p.arrays.cell_ghost = r.array<uint8_t>();
-  p.arrays.point_ghost = r.array<uint8_t>();
-  p.arrays.global_ids = r.array<int64_t>();
-  p.arrays.global_ids_name = take_text(r);
-  p.arrays.ghost_cells = r.value<int64_t>();
-  p.arrays.ghost_points = r.value<int64_t>();
-  p.file = take_text(r);
-  return p;
-}
-
-std::vector<std::byte> encode_pieces(const std::vector<FilePiece> &pieces) {
-  ByteWriter w;
-  w.value<uint64_t>(pieces.size());
-  for (const FilePiece &p : pieces)
-    encode_piece(w, p);
-  return std::move(w.out);
-}
-
-MeshInput join_gathered(std::vector<std::vector<std::byte>> all, const std::string &where,
-                        int threads) {
-  std::vector<FilePiece> joined;
-  for (std::size_t r = 0; r < all.size(); ++r) {
-    ByteReader in(all[r], "the pieces of rank " + std::to_string(r));
-    for (uint64_t k = in.value<uint64_t>(); k > 0; --k)
-      joined.push_back(decode_piece(in));
-    std::vector<std::byte>().swap(all[r]);
-  }
-  return join_pieces(std::move(joined), where, /*by_ids=*/true, threads);
-}
-
-} // namespace
-
-MeshInput join_pieces_on_root(const std::vector<FilePiece> &pieces, const std::string &where,
-                              int threads, MPI_Comm comm) {
-  int rank = 0;
-  MPI_Comm_rank(comm, &rank);
-  std::vector<std::vector<std::byte>> all = gather_bytes(comm, encode_pieces(pieces));
-  return rank == 0 ? join_gathered(std::move(all), where, threads) : MeshInput{};
-}
-
-MeshInput join_pieces_everywhere(const std::vector<FilePiece> &pieces, const std::string &where,
-                                 int threads, MPI_Comm comm) {
-  return join_gathered(all_gather_bytes(comm, encode_pieces(pieces)), where, threads);
 }
 
 } // namespace hoct

@@ -5,7 +5,7 @@
 // (by their global ids, or without ids by position) and numbered as the whole join numbers
 // them, each point's span over the ranks, the whole's cell and triangle offsets and its
 // fingerprint (passed from rank to rank). What crosses between ranks is the points the pieces
-// may share, not the mesh.
+// may share, not the mesh (the whole, where needed: distributed/pieces_gather).
 #pragma once
 
 #include "distributed/distributed_tree.hpp"
@@ -33,15 +33,5 @@ struct RankRead {
 // pieces' content. The input's read_whole is left for the caller to set.
 RankRead join_rank_pieces(std::vector<FilePiece> pieces, const std::string &failure,
                           const std::string &source, const ReadLimits &limits, MPI_Comm comm);
-
-// Collective over `comm`: every rank's pieces to rank 0, joined there by join_pieces (in rank
-// order; its errors thrown on rank 0). The other ranks get an empty mesh.
-MeshInput join_pieces_on_root(const std::vector<FilePiece> &pieces, const std::string &where,
-                              int threads, MPI_Comm comm);
-
-// Collective over `comm`: every rank's pieces on every rank, joined there by join_pieces (the same
-// mesh, or the same InputError, on every rank).
-MeshInput join_pieces_everywhere(const std::vector<FilePiece> &pieces, const std::string &where,
-                                 int threads, MPI_Comm comm);
 
 } // namespace hoct

@@ -12,7 +12,9 @@ must be byte-identical to it, and the other ranks get None.
   (points, cells in VTK order, values, with and without global ids; with ghost cells flagged):
   cubic triangles on 2 and 3 ranks, a plate with 100 holes (the Reeb graph) on 3, a plateau on 2.
 - Errors: a rank's bad arrays are raised on every rank naming that rank; comm missing for a
-  Piece; a piece used on another communicator; a file that is no .pvtu.
+  Piece; a piece used on another communicator; a file that is no .pvtu; copies of a point (one
+  global id) at different positions: the ranks cannot join alone, every rank joins the whole and
+  raises its refusal.
 
 Skipped (exit 77) without mpirun, mpi4py, VTK's Python module or an MPI build of hoct."""
 import json
@@ -91,6 +93,14 @@ SCRIPT = textwrap.dedent('''
             elif options["case"] == "no comm":
                 pts, cells, f, types, ids, ghost = arrays(options["files"][world.rank])
                 hoct.contour_tree(hoct.piece_from_arrays(pts, cells, f, world, global_ids=ids))
+            elif options["case"] == "ids disagree":
+                # Rank 1's points moved: its copies of the shared points (same ids) are
+                # elsewhere. The ranks cannot join alone; every rank joins the whole, which
+                # refuses the ids.
+                pts, cells, f, types, ids, ghost = arrays(options["files"][world.rank])
+                if world.rank == 1:
+                    pts = pts + 0.25
+                hoct.piece_from_arrays(pts, cells, f, world, global_ids=ids)
             elif options["case"] == "other comm":
                 pts, cells, f, types, ids, ghost = arrays(options["files"][world.rank])
                 piece = hoct.piece_from_arrays(pts, cells, f, world, global_ids=ids)
@@ -209,6 +219,8 @@ with tempdir() as d:
         ("no comm for a piece", {"case": "no comm", "files": files3}, "pass the communicator"),
         ("another communicator", {"case": "other comm", "files": files3},
          "not the communicator the piece was made on"),
+        ("ids that disagree", {"case": "ids disagree", "files": files3},
+         "the ids are not the same points"),
         ("not a .pvtu", {"case": "vtu", "path": gauss}, "not a partitioned .pvtu"),
     ]:
         p = mpi(3, "raises", options)

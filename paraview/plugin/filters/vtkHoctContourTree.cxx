@@ -18,6 +18,7 @@
 #include <vtkMultiProcessController.h>
 #ifdef HOCT_WITH_MPI
 #include "distributed/distributed_tree.hpp"
+#include "distributed/pieces_gather.hpp"
 #include "distributed/rank_join.hpp"
 
 #include <vtkMPI.h>
