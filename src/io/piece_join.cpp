@@ -52,6 +52,24 @@ PieceParts concatenate_pieces(std::vector<FilePiece> &pieces, const std::string 
   // The kept cells and points, piece after piece.
   std::vector<uint32_t> &piece_of = parts.piece_of; // each point's piece
   std::vector<int64_t> &global = parts.global;      // each point's global id (when merging by ids)
+  // Several pieces: the arrays reserved once for all of them (ghosts included: a bound), as
+  // arrays reserved piece by piece to the size they reach would be copied again for each piece.
+  if (filled > 1) {
+    std::size_t points = 0, nodes = 0, cells = 0;
+    for (const FilePiece &p : pieces) {
+      points += p.input.points.size();
+      nodes += p.input.cell_nodes.size();
+      cells += p.input.num_cells();
+    }
+    out.points.reserve(points);
+    out.values.reserve(points);
+    out.cell_nodes.reserve(nodes);
+    out.cell_offsets.reserve(cells + 1);
+    out.cell_degree.reserve(cells);
+    piece_of.reserve(points);
+    if (ids)
+      global.reserve(points);
+  }
   for (std::size_t k = 0; k < pieces.size(); ++k) {
     MeshInput &in = pieces[k].input;
     const VtuPieceArrays &a = pieces[k].arrays;
@@ -73,7 +91,7 @@ PieceParts concatenate_pieces(std::vector<FilePiece> &pieces, const std::string 
       if (ids)
         global.insert(global.end(), a.global_ids.begin(), a.global_ids.end());
       const bool kinds = !in.lagrange_triangles_only() || !out.cell_kind.empty();
-      if (base == 0 && out.num_cells() == 0) {
+      if (filled == 1) { // the only piece: its arrays are the mesh's
         out.points = std::move(in.points);
         out.values = std::move(in.values);
         out.cell_nodes = std::move(in.cell_nodes);
@@ -85,10 +103,8 @@ PieceParts concatenate_pieces(std::vector<FilePiece> &pieces, const std::string 
         const std::size_t first_cell = out.num_cells();
         out.points.insert(out.points.end(), in.points.begin(), in.points.end());
         out.values.insert(out.values.end(), in.values.begin(), in.values.end());
-        out.cell_nodes.reserve(out.cell_nodes.size() + in.cell_nodes.size());
         for (const int64_t q : in.cell_nodes)
           out.cell_nodes.push_back(q + base);
-        out.cell_offsets.reserve(out.cell_offsets.size() + nc);
         for (std::size_t c = 1; c <= nc; ++c)
           out.cell_offsets.push_back(in.cell_offsets[c] + node_base);
         out.cell_degree.insert(out.cell_degree.end(), in.cell_degree.begin(), in.cell_degree.end());
@@ -107,11 +123,6 @@ PieceParts concatenate_pieces(std::vector<FilePiece> &pieces, const std::string 
         use[static_cast<std::size_t>(in.cell_nodes[i])] |= bit;
     }
     const int64_t base = static_cast<int64_t>(out.points.size());
-    out.points.reserve(out.points.size() + np);
-    out.values.reserve(out.values.size() + np);
-    out.cell_nodes.reserve(out.cell_nodes.size() + in.cell_nodes.size());
-    out.cell_offsets.reserve(out.cell_offsets.size() + nc);
-    out.cell_degree.reserve(out.cell_degree.size() + nc);
     std::vector<int64_t> renumber(np, -1);
     int64_t next = base;
     for (std::size_t i = 0; i < np; ++i) {
