@@ -367,18 +367,8 @@ PYBIND11_MODULE(_hoct, m) {
         std::vector<std::string> notes = input.warnings;
         if (merge_tolerance >= 0) // as `hoct tree --merge-duplicates=TOL`
           merge_duplicate_points(input, merge_tolerance, thread_count(threads));
-        GllResampling gll = resample_gll_cells(input); // as the command line reads
-        if (gll.quadrilaterals > 0)
-          notes.push_back(std::to_string(gll.quadrilaterals) +
-                          " quadrilateral(s) have their nodes at Gauss-Lobatto-Legendre points "
-                          "(as DOLFINx writes order >= 3), though VTK's Lagrange cells label "
-                          "them as equispaced: read as the polynomial through those points");
-        if (gll.cells > 0)
-          notes.push_back(std::to_string(gll.cells) +
-                          " cell(s) have their nodes at Gauss-Lobatto-Legendre points (as "
-                          "DOLFINx writes degree >= 3), though VTK's Lagrange cells label them "
-                          "as equispaced: read as the polynomial through their values at those "
-                          "points");
+        for (std::string &note : gll_notes(resample_gll_cells(input))) // as `hoct tree` reads
+          notes.push_back(std::move(note));
         return std::make_pair(make_mesh(std::move(input), threads), notes);
       },
       py::arg("path"), py::arg("scalar"), py::arg("max_memory"), py::arg("threads"),

@@ -93,6 +93,33 @@ template <class F> py::object tree_over(MPI_Comm comm, TreeRequest rq, F compute
   return py::cast(PyTree{out.simplified ? std::move(*out.simplified) : std::move(out.tree)});
 }
 
+// A piece of this rank's share.
+PyPiece share_piece(RankInput share, const std::string &source, MPI_Comm comm) {
+  PyPiece p;
+  p.cells = static_cast<int64_t>(share.piece.input.num_cells());
+  p.whole_cells = share.whole_cells;
+  p.whole_points = share.whole_points;
+  p.field_name = share.field_name;
+  p.share = std::move(share);
+  p.source = source;
+  p.comm = comm;
+  return p;
+}
+
+// A piece that is the whole mesh (on every rank), and why.
+PyPiece whole_piece(MeshInput whole, const std::string &why, const std::string &source,
+                    MPI_Comm comm) {
+  PyPiece p;
+  p.whole_why = why;
+  p.cells = p.whole_cells = static_cast<int64_t>(whole.num_cells());
+  p.whole_points = static_cast<int64_t>(whole.num_points());
+  p.field_name = whole.field_name;
+  p.whole = std::move(whole);
+  p.source = source;
+  p.comm = comm;
+  return p;
+}
+
 // The piece from this rank's pieces (`failure`: why it has none), joined with the other ranks'.
 PyPiece joined_piece(std::vector<FilePiece> pieces, const std::string &failure,
                      const std::string &source, int threads, MPI_Comm comm,
@@ -101,24 +128,10 @@ PyPiece joined_piece(std::vector<FilePiece> pieces, const std::string &failure,
   ReadLimits limits;
   limits.threads = threads;
   RankRead read = join_rank_pieces(std::move(pieces), failure, source, limits, comm);
-  PyPiece p;
-  p.comm = comm;
-  if (read.input) {
-    read.input->read_whole = whole_on_root;
-    p.cells = static_cast<int64_t>(read.input->piece.input.num_cells());
-    p.whole_cells = read.input->whole_cells;
-    p.whole_points = read.input->whole_points;
-    p.field_name = read.input->field_name;
-    p.share = std::move(read.input);
-  } else {
-    p.whole_why = read.fallback;
-    p.whole = whole_everywhere();
-    p.cells = p.whole_cells = static_cast<int64_t>(p.whole->num_cells());
-    p.whole_points = static_cast<int64_t>(p.whole->num_points());
-    p.field_name = p.whole->field_name;
-  }
-  p.source = source;
-  return p;
+  if (!read.input)
+    return whole_piece(whole_everywhere(), read.fallback, source, comm);
+  read.input->read_whole = whole_on_root;
+  return share_piece(std::move(*read.input), source, comm);
 }
 #endif
 
@@ -132,45 +145,24 @@ PyPiece read_pieces(const std::string &path, const std::string &scalar,
   const FieldSelection field(py_checks::no_nul(scalar, "read_pieces: scalar"));
   py_checks::no_nul(path, "read_pieces: path");
   return collective(comm, [&] {
-    PyPiece p;
     RankRead read = read_pvtu_by_ranks(path, field, limits, comm);
     if (read.input) {
       // DOLFINx's degree >= 3 nodes at GLL points, resampled piece by piece as hoct.read
-      // resamples the whole (and so the whole where rank 0 needs it).
-      std::string failure;
-      try {
-        resample_gll_cells(read.input->piece.input);
-      } catch (const std::exception &e) {
-        failure = e.what();
-      }
-      agree_on_failure(failure, comm);
-      read.input->read_whole = [read_whole = std::move(read.input->read_whole)] {
-        MeshInput whole = read_whole();
-        resample_gll_cells(whole);
-        return whole;
-      };
-      p.cells = static_cast<int64_t>(read.input->piece.input.num_cells());
-      p.whole_cells = read.input->whole_cells;
-      p.whole_points = read.input->whole_points;
-      p.field_name = read.input->field_name;
-      p.share = std::move(read.input);
-    } else { // every rank reads the whole file, which reports what is wrong
-      std::string failure;
-      try {
-        p.whole = read_mesh(path, field, limits);
-        resample_gll_cells(*p.whole);
-      } catch (const std::exception &e) {
-        failure = e.what();
-      }
-      agree_on_failure(failure, comm);
-      p.whole_why = read.fallback;
-      p.cells = p.whole_cells = static_cast<int64_t>(p.whole->num_cells());
-      p.whole_points = static_cast<int64_t>(p.whole->num_points());
-      p.field_name = p.whole->field_name;
+      // resamples the whole.
+      resample_gll_share(*read.input, comm);
+      return share_piece(std::move(*read.input), path, comm);
     }
-    p.comm = comm;
-    p.source = path;
-    return p;
+    // Every rank reads the whole file, which reports what is wrong.
+    std::string failure;
+    MeshInput whole;
+    try {
+      whole = read_mesh(path, field, limits);
+      resample_gll_cells(whole);
+    } catch (const std::exception &e) {
+      failure = e.what();
+    }
+    agree_on_failure(failure, comm);
+    return whole_piece(std::move(whole), read.fallback, path, comm);
   });
 #else
   (void)path, (void)scalar, (void)max_memory, (void)threads, (void)fortran_comm;

@@ -30,7 +30,7 @@ LoadedMesh load_mesh(const std::string &path, const FieldSelection &field, bool 
                    static_cast<long long>(m.merged_points), path.c_str(), merge_tolerance);
   }
   const GllResampling gll = resample_gll_cells(r.input);
-  print_gll_notes(path, gll.cells, gll.quadrilaterals);
+  print_gll_notes(path, gll);
   r.read_seconds = clock.lap();
   const MeshBuildOptions build{.throw_on_error = strict, .threads = thread_count(threads)};
   r.mesh = keep_input ? build_mesh(r.input, build) : build_mesh(std::move(r.input), build);
@@ -38,20 +38,9 @@ LoadedMesh load_mesh(const std::string &path, const FieldSelection &field, bool 
   return r;
 }
 
-void print_gll_notes(const std::string &path, int64_t triangles, int64_t quadrilaterals) {
-  if (triangles > 0)
-    std::fprintf(stderr,
-                 "hoct: note: %lld cell(s) of %s have their nodes at Gauss-Lobatto-Legendre "
-                 "points (as DOLFINx writes degree >= 3), though VTK's Lagrange cells label them "
-                 "as equispaced: read as the polynomial through their values at those points\n",
-                 static_cast<long long>(triangles), path.c_str());
-  if (quadrilaterals > 0)
-    std::fprintf(stderr,
-                 "hoct: note: %lld quadrilateral(s) of %s have their nodes at "
-                 "Gauss-Lobatto-Legendre points (as DOLFINx writes order >= 3), though VTK's "
-                 "Lagrange cells label them as equispaced: read as the polynomial through those "
-                 "points\n",
-                 static_cast<long long>(quadrilaterals), path.c_str());
+void print_gll_notes(const std::string &path, const GllResampling &resampled) {
+  for (const std::string &note : gll_notes(resampled))
+    std::fprintf(stderr, "hoct: note: %s: %s\n", path.c_str(), note.c_str());
 }
 
 void add_merge_option(CLI::App *sub, MergeOption &merge) {

@@ -3,6 +3,7 @@
 
 #include "io/field_selection.hpp"
 #include "io/file_contents.hpp"
+#include "mesh/gll_nodes.hpp"
 #include "mesh/mesh.hpp"
 
 #include <CLI/CLI.hpp>
@@ -30,9 +31,9 @@ struct LoadedMesh {
 LoadedMesh load_mesh(const std::string &path, const FieldSelection &field, bool strict,
                      double merge_tolerance = -1, int threads = 1, bool keep_input = false);
 
-// The notes on cells read with their nodes at Gauss-Lobatto-Legendre points (mesh/gll_nodes:
-// `triangles` and `quadrilaterals` resampled), on stderr.
-void print_gll_notes(const std::string &path, int64_t triangles, int64_t quadrilaterals);
+// The notes on cells read with their nodes at Gauss-Lobatto-Legendre points (mesh/gll_nodes),
+// on stderr: "hoct: note: PATH: N cell(s) ...".
+void print_gll_notes(const std::string &path, const GllResampling &resampled);
 
 // --merge-duplicates[=TOL] of a command.
 struct MergeOption {

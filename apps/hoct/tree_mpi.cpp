@@ -17,6 +17,7 @@
 #include "distributed/distributed_read.hpp"
 #include "distributed/distributed_tree.hpp"
 #include "distributed/mpi_session.hpp"
+#include "distributed/rank_join.hpp"
 
 #include <mpi.h>
 #endif
@@ -81,27 +82,11 @@ void run_ranks(const DistributedTreeRun &run, TreeRequest rq, bool root, bool &c
       throw Error(run.file + ": " + e.what());
     }
     if (read.input) {
-      // DOLFINx's degree >= 3 nodes at GLL points: each rank resamples its piece (an edge's
-      // nodes get the same bits in every piece), as one process resamples the whole.
-      std::string failure;
-      int64_t gll[2] = {0, 0};
-      try {
-        const GllResampling g = resample_gll_cells(read.input->piece.input);
-        gll[0] = g.cells;
-        gll[1] = g.quadrilaterals;
-      } catch (const std::exception &e) {
-        failure = e.what();
-      }
-      agree_on_failure(failure);
-      MPI_Allreduce(MPI_IN_PLACE, gll, 2, MPI_INT64_T, MPI_SUM, MPI_COMM_WORLD);
+      // DOLFINx's degree >= 3 nodes at GLL points: each rank resamples its piece, as one
+      // process resamples the whole.
+      const GllResampling gll = resample_gll_share(*read.input, MPI_COMM_WORLD);
       if (root)
-        print_gll_notes(run.file, gll[0], gll[1]);
-      // The whole, where rank 0 needs it, resampled as the pieces are.
-      read.input->read_whole = [read_whole = std::move(read.input->read_whole)] {
-        MeshInput whole = read_whole();
-        resample_gll_cells(whole);
-        return whole;
-      };
+        print_gll_notes(run.file, gll);
       const std::string field_name = read.input->field_name;
       const int64_t cells = read.input->whole_cells;
       rq.read_seconds = total.seconds();
@@ -125,7 +110,7 @@ void run_ranks(const DistributedTreeRun &run, TreeRequest rq, bool root, bool &c
       merge_duplicate_points(input, run.merge_tolerance, limits.threads);
     const GllResampling g = resample_gll_cells(input);
     if (root)
-      print_gll_notes(run.file, g.cells, g.quadrilaterals);
+      print_gll_notes(run.file, g);
   } catch (const std::exception &e) {
     failure = e.what();
   }

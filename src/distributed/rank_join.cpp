@@ -458,4 +458,24 @@ RankRead join_rank_pieces(std::vector<FilePiece> pieces, const std::string &fail
   return result;
 }
 
+GllResampling resample_gll_share(RankInput &in, MPI_Comm comm) {
+  std::string failure;
+  int64_t counts[2] = {0, 0};
+  try {
+    const GllResampling g = resample_gll_cells(in.piece.input);
+    counts[0] = g.cells;
+    counts[1] = g.quadrilaterals;
+  } catch (const std::exception &e) {
+    failure = e.what();
+  }
+  agree_on_failure(failure, comm);
+  MPI_Allreduce(MPI_IN_PLACE, counts, 2, MPI_INT64_T, MPI_SUM, comm);
+  in.read_whole = [read_whole = std::move(in.read_whole)] {
+    MeshInput whole = read_whole();
+    resample_gll_cells(whole);
+    return whole;
+  };
+  return GllResampling{counts[0], counts[1]};
+}
+
 } // namespace hoct

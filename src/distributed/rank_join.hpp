@@ -11,6 +11,7 @@
 #include "distributed/distributed_tree.hpp"
 #include "io/piece_join.hpp"
 #include "io/read_limits.hpp"
+#include "mesh/gll_nodes.hpp"
 
 #include <mpi.h>
 
@@ -33,5 +34,11 @@ struct RankRead {
 // pieces' content. The input's read_whole is left for the caller to set.
 RankRead join_rank_pieces(std::vector<FilePiece> pieces, const std::string &failure,
                           const std::string &source, const ReadLimits &limits, MPI_Comm comm);
+
+// Collective over `comm`: DOLFINx's degree >= 3 nodes at GLL points resampled in each rank's
+// share (resample_gll_cells: an edge's nodes get the same bits in every piece, as in the whole
+// resampled at once) and in the whole that read_whole brings to rank 0. A rank's failure is
+// every rank's (AgreedError). Returns the counts summed over the ranks.
+GllResampling resample_gll_share(RankInput &input, MPI_Comm comm);
 
 } // namespace hoct

@@ -338,4 +338,19 @@ GllResampling resample_gll_cells(MeshInput &in) {
   return r;
 }
 
+std::vector<std::string> gll_notes(const GllResampling &g) {
+  std::vector<std::string> notes;
+  if (g.cells > 0)
+    notes.push_back(std::to_string(g.cells) +
+                    " cell(s) have their nodes at Gauss-Lobatto-Legendre points (as DOLFINx "
+                    "writes degree >= 3), though VTK's Lagrange cells label them as equispaced: "
+                    "read as the polynomial through their values at those points");
+  if (g.quadrilaterals > 0)
+    notes.push_back(std::to_string(g.quadrilaterals) +
+                    " quadrilateral(s) have their nodes at Gauss-Lobatto-Legendre points (as "
+                    "DOLFINx writes order >= 3), though VTK's Lagrange cells label them as "
+                    "equispaced: read as the polynomial through those points");
+  return notes;
+}
+
 } // namespace hoct

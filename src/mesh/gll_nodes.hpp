@@ -9,6 +9,7 @@
 #include "mesh/mesh_input.hpp"
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 namespace hoct {
@@ -35,5 +36,9 @@ struct GllResampling {
 // hoct::Error naming the cell whose samples give no polynomial (ill-conditioned). Mesh's
 // fingerprint: of the data as read, when the input records it (MeshInput::read_fingerprint).
 GllResampling resample_gll_cells(MeshInput &input);
+
+// What the front ends tell the user of a resampling (none for nothing resampled): "N cell(s)
+// have their nodes at Gauss-Lobatto-Legendre points ...", one sentence per kind of cell.
+std::vector<std::string> gll_notes(const GllResampling &resampled);
 
 } // namespace hoct

@@ -1,5 +1,6 @@
 """What the tests of hoct under mpirun share: the launcher (skip, exit 77, without one), its
-environment and `mpi(n, ...)`, which runs the hoct CLI on n ranks."""
+environment and `mpi(n, ...)`, which runs the hoct CLI on n ranks; the Python interpreter for
+scripts under mpirun and `require_modules` (skip without its modules)."""
 import json
 import os
 import re
@@ -13,6 +14,18 @@ MPIRUN = shutil.which("mpirun")
 if not MPIRUN:
     print("SKIPPED: no mpirun (Debian: openmpi-bin)")
     sys.exit(77)
+# Debian's interpreter, for scripts run under mpirun (its python3-mpi4py).
+PYTHON = "/usr/bin/python3"
+
+
+def require_modules(*modules):
+    """Skip (exit 77) unless PYTHON imports each (module, Debian package) given."""
+    for module, package in modules:
+        if subprocess.run([PYTHON, "-c", f"import {module}"], capture_output=True).returncode:
+            print(f"SKIPPED: no {module} (Debian: {package})")
+            sys.exit(77)
+
+
 # The plain runs (one process, the truth) must not take the distributed code from the caller's
 # environment; under mpirun, HOCT_MPI=1: `mpirun -np 1` too runs it (one piece).
 os.environ.pop("HOCT_MPI", None)

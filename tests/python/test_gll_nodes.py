@@ -74,7 +74,7 @@ with tempdir() as tmp:
         write(lobatto, d, gll(d))
         (te, note_e), (tg, note_g) = tree(eq, d), tree(lobatto, d)
         R.check("Gauss-Lobatto-Legendre" not in note_e, f"d={d}: a note on the equispaced file")
-        R.check("72 cell(s) of" in note_g and "Gauss-Lobatto-Legendre" in note_g,
+        R.check("72 cell(s) have" in note_g and "Gauss-Lobatto-Legendre" in note_g,
                 f"d={d}: the GLL note: {note_g!r}")
         ve = sorted(nd["value"] for nd in te["nodes"])
         vg = sorted(nd["value"] for nd in tg["nodes"])

@@ -14,22 +14,15 @@ its own file's. Refusals are raised on every rank as HoctError with one message
 Skipped (exit 77) without mpirun, mpi4py or an MPI build of hoct."""
 import os
 import re
-import shutil
 import subprocess
 import sys
 import textwrap
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from hoct_testing import Results, run, tempdir  # noqa: E402
+from mpi_testing import MPIRUN, PYTHON, require_modules  # noqa: E402  (skips without mpirun)
 
-MPIRUN = shutil.which("mpirun")
-if not MPIRUN:
-    print("SKIPPED: no mpirun (Debian: openmpi-bin)")
-    sys.exit(77)
-PYTHON = "/usr/bin/python3"
-if subprocess.run([PYTHON, "-c", "import mpi4py.MPI"], capture_output=True).returncode != 0:
-    print("SKIPPED: no mpi4py (Debian: python3-mpi4py)")
-    sys.exit(77)
+require_modules(("mpi4py.MPI", "python3-mpi4py"))
 ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
            OMPI_MCA_rmaps_base_oversubscribe="1")
 r = Results()

@@ -20,28 +20,19 @@ Skipped (exit 77) without mpirun, mpi4py, VTK's Python module or an MPI build of
 import json
 import os
 import re
-import shutil
 import subprocess
 import sys
 import textwrap
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from hoct_testing import Results, run, tempdir  # noqa: E402
+from mpi_testing import MPIRUN, PYTHON, require_modules  # noqa: E402  (skips without mpirun)
 
-MPIRUN = shutil.which("mpirun")
-if not MPIRUN:
-    print("SKIPPED: no mpirun (Debian: openmpi-bin)")
-    sys.exit(77)
-PYTHON = "/usr/bin/python3"
-for module, package in (("mpi4py.MPI", "python3-mpi4py"), ("vtk", "python3-paraview")):
-    if subprocess.run([PYTHON, "-c", f"import {module}"], capture_output=True).returncode != 0:
-        print(f"SKIPPED: no {module} (Debian: {package})")
-        sys.exit(77)
+require_modules(("mpi4py.MPI", "python3-mpi4py"), ("vtk", "python3-paraview"))
 from vtk_pieces import read_grid, with_ids, write_consecutive, write_pieces  # noqa: E402
 
 ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
            OMPI_MCA_rmaps_base_oversubscribe="1")
-ENV.pop("HOCT_MPI", None)
 r = Results()
 
 SCRIPT = textwrap.dedent('''

@@ -87,20 +87,12 @@ void add_string(vtkPolyData *out, const char *name, const std::string &value) {
   out->GetFieldData()->AddArray(a);
 }
 
-// What `hoct tree` says of cells read with their nodes at Gauss-Lobatto-Legendre points (empty
-// for none).
-std::string gll_notes(const hoct::GllResampling &g) {
+// What `hoct tree` says of cells read with their nodes at Gauss-Lobatto-Legendre points, in
+// one string (empty for none).
+std::string gll_note_text(const hoct::GllResampling &g) {
   std::string notes;
-  if (g.cells > 0)
-    notes = std::to_string(g.cells) +
-            " cell(s) have their nodes at Gauss-Lobatto-Legendre points (as DOLFINx writes "
-            "degree >= 3), though VTK's Lagrange cells label them as equispaced: read as the "
-            "polynomial through their values at those points";
-  if (g.quadrilaterals > 0)
-    notes = std::to_string(g.quadrilaterals) +
-            " quadrilateral(s) have their nodes at Gauss-Lobatto-Legendre points (as DOLFINx "
-            "writes order >= 3), though VTK's Lagrange cells label them as equispaced: read as "
-            "the polynomial through those points";
+  for (const std::string &note : hoct::gll_notes(g))
+    notes += (notes.empty() ? "" : "; ") + note;
   return notes;
 }
 
@@ -226,7 +218,7 @@ int vtkHoctContourTree::RequestData(vtkInformation *, vtkInformationVector **inp
                   << scalar_name << "'" << (by_default ? " (the default: none was named)" : ""));
     hoct::MeshInput input = hoct::paraview::mesh_input_from_grid(grid, scalar);
     // DOLFINx's degree >= 3 nodes at GLL points, resampled as `hoct tree` reads them.
-    const std::string notes = gll_notes(hoct::resample_gll_cells(input));
+    const std::string notes = gll_note_text(hoct::resample_gll_cells(input));
     this->UpdateProgress(0.1);
     // Only the linear method reads the input's nodes again; else the build consumes them.
     const hoct::MeshBuildOptions build{.throw_on_error = false,
@@ -333,35 +325,22 @@ int vtkHoctContourTree::RequestDistributed(vtkInformationVector **inputVector,
     std::string notes;
     if (read.input) {
       distribution = "each process its own piece";
-      // DOLFINx's degree >= 3 nodes at GLL points: each process resamples its piece (an edge's
-      // nodes get the same bits in every piece), as one process resamples the whole.
-      std::string problem;
-      int64_t gll[2] = {0, 0};
-      try {
-        const hoct::GllResampling g = hoct::resample_gll_cells(read.input->piece.input);
-        gll[0] = g.cells;
-        gll[1] = g.quadrilaterals;
-      } catch (const std::exception &e) {
-        problem = e.what();
-      }
-      hoct::agree_on_failure(problem, comm);
-      MPI_Allreduce(MPI_IN_PLACE, gll, 2, MPI_INT64_T, MPI_SUM, comm);
-      notes = gll_notes({gll[0], gll[1]});
       scalar_name = read.input->field_name;
       // The whole on rank 0 (a mesh the pieces found a problem in): the pieces again, joined
       // there.
       read.input->read_whole = [grid, scalar, rank, threads, comm] {
-        hoct::MeshInput whole = hoct::join_pieces_on_root(
-            hoct::paraview::own_piece(grid, scalar, rank), "the input's pieces", threads, comm);
-        hoct::resample_gll_cells(whole);
-        return whole;
+        return hoct::join_pieces_on_root(hoct::paraview::own_piece(grid, scalar, rank),
+                                         "the input's pieces", threads, comm);
       };
+      // DOLFINx's degree >= 3 nodes at GLL points: each process resamples its piece, as one
+      // process resamples the whole (and the whole where rank 0 needs it).
+      notes = gll_note_text(hoct::resample_gll_share(*read.input, comm));
       d = hoct::distributed_tree(std::move(*read.input), rq, comm);
     } else {
       distribution = "the whole mesh on every process (" + read.fallback + ")";
       hoct::MeshInput whole =
           hoct::paraview::gather_whole(controller, grid, scalar, failure, threads, &scalar_name);
-      notes = gll_notes(hoct::resample_gll_cells(whole));
+      notes = gll_note_text(hoct::resample_gll_cells(whole));
       d = hoct::distributed_tree(whole, rq, comm);
     }
     collectives_done = true;
