@@ -78,7 +78,7 @@ template <class F> auto collective(MPI_Comm comm, F &&f) {
   }
 }
 
-// The exact tree over `comm` for contour_tree's request, by `compute` (a distributed_tree
+// The tree over `comm` for contour_tree's request, by `compute` (a distributed_tree
 // call, the GIL released): the Tree on rank 0, None on the others.
 template <class F> py::object tree_over(MPI_Comm comm, TreeRequest rq, F compute) {
   rq.arcs = ArcGeometry::None; // the arcs' paths need the whole graph on one rank
@@ -247,39 +247,43 @@ PyPiece piece_from_arrays(const DoubleArray &points, const std::vector<IndexArra
 #endif
 }
 
-// The exact tree over the ranks of an MPI communicator (mpi4py's, by its Fortran handle): every
+// The tree (by any method) over the ranks of an MPI communicator (mpi4py's, by its Fortran
 // rank holds the whole mesh and calls this; rank 0 gets the tree, the others None.
-py::object contour_tree_mpi(const PyMesh &m, long long fortran_comm, int threads, bool keep_flat,
-                            bool force, bool augmented, const std::string &simplify) {
+py::object contour_tree_mpi(const PyMesh &m, long long fortran_comm, const std::string &method,
+                            int refine, int threads, bool keep_flat, bool force, bool augmented,
+                            const std::string &simplify) {
 #ifdef HOCT_WITH_MPI
   const MPI_Comm comm = running_comm(fortran_comm, "contour_tree");
-  return tree_over(comm, tree_request("exact", 4, threads, keep_flat, force, augmented, simplify),
+  return tree_over(comm,
+                   tree_request(method, refine, threads, keep_flat, force, augmented, simplify),
                    [&](const TreeRequest &rq) { return distributed_tree(m.input, rq, comm); });
 #else
-  (void)m, (void)fortran_comm, (void)threads, (void)keep_flat, (void)force, (void)augmented,
-      (void)simplify;
+  (void)m, (void)fortran_comm, (void)method, (void)refine, (void)threads, (void)keep_flat,
+      (void)force, (void)augmented, (void)simplify;
   no_mpi("contour_tree");
 #endif
 }
 
 // The same from each rank's piece (over the communicator the piece was joined on, or one
 // congruent with it).
-py::object contour_tree_piece(const PyPiece &p, long long fortran_comm, int threads, bool keep_flat,
-                              bool force, bool augmented, const std::string &simplify) {
+py::object contour_tree_piece(const PyPiece &p, long long fortran_comm, const std::string &method,
+                              int refine, int threads, bool keep_flat, bool force, bool augmented,
+                              const std::string &simplify) {
 #ifdef HOCT_WITH_MPI
   const MPI_Comm comm = running_comm(fortran_comm, "contour_tree");
   int same = MPI_UNEQUAL;
   MPI_Comm_compare(comm, p.comm, &same);
   if (same != MPI_IDENT && same != MPI_CONGRUENT)
     throw Error("contour_tree: comm is not the communicator the piece was made on");
-  return tree_over(comm, tree_request("exact", 4, threads, keep_flat, force, augmented, simplify),
+  return tree_over(comm,
+                   tree_request(method, refine, threads, keep_flat, force, augmented, simplify),
                    [&](const TreeRequest &rq) {
                      return p.share ? distributed_tree(RankInput(*p.share), rq, comm)
                                     : distributed_tree(*p.whole, rq, comm);
                    });
 #else
-  (void)p, (void)fortran_comm, (void)threads, (void)keep_flat, (void)force, (void)augmented,
-      (void)simplify;
+  (void)p, (void)fortran_comm, (void)method, (void)refine, (void)threads, (void)keep_flat,
+      (void)force, (void)augmented, (void)simplify;
   no_mpi("contour_tree");
 #endif
 }

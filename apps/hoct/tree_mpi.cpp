@@ -142,8 +142,8 @@ void report(const DistributedTreeRun &run, const DistributedOutcome &d,
                        (tree.reeb_graph ? " Reeb graph, " : " contour tree, ") +
                        std::to_string(tree.nodes.size()) + " nodes");
   if (!run.quiet) {
-    std::printf("%s: field '%s', %lld cells, exact %s over %d MPI ranks\n", run.file.c_str(),
-                field_name.c_str(), static_cast<long long>(cells),
+    std::printf("%s: field '%s', %lld cells, %s %s over %d MPI ranks\n", run.file.c_str(),
+                field_name.c_str(), static_cast<long long>(cells), tree.method.c_str(),
                 tree.reeb_graph ? graph_kind(tree).c_str() : "contour tree", d.ranks);
     print_tree_body(tree, total.seconds());
     if (!d.whole_tree.empty())
@@ -153,7 +153,8 @@ void report(const DistributedTreeRun &run, const DistributedOutcome &d,
     else
       std::printf("  checks: the whole mesh on rank 0 (the pieces found: %s)\n",
                   d.whole_check.c_str());
-    std::printf("  ranks (cells, kept nodes, bytes sent / received, peak memory, piece time):\n");
+    if (!d.reports.empty())
+      std::printf("  ranks (cells, kept nodes, bytes sent / received, peak memory, piece time):\n");
     for (std::size_t k = 0; k < d.reports.size(); ++k) {
       const RankReport &q = d.reports[k];
       std::printf("    %zu: %lld cells, %lld kept, %.1f / %.1f KiB, %.0f MiB, %.3f s\n", k,

@@ -399,15 +399,16 @@ def contour_tree(mesh, simplify=None, threads=None, method="exact", refine=4, ke
                duplicate vertices (`--force`); without it such a mesh raises HoctError
 
     comm       an mpi4py communicator (`from mpi4py import MPI; comm=MPI.COMM_WORLD`): the
-               exact tree computed over its ranks, as `mpirun -np N hoct tree` does. Every rank
+               tree computed over its ranks, as `mpirun -np N hoct tree` does. Every rank
                calls this with the same whole mesh (each reads the file); each computes the tree
                of its share of the cells and the ranks merge their join and split trees. Rank 0
                gets the tree (the same as without comm, and its arcs not drawn on the surface:
                `write_vtp` draws them straight); the other ranks get None. Errors are raised on
                every rank; one that only one rank meets ends the job (MPI_Abort), as the others
                would wait for it. A domain with holes or handles gets its Reeb graph (each
-               rank's pieces cut into disks, glued on rank 0). Not over MPI: method "linear"
-               and "refine". `mesh` may also be this rank's Piece (read_pieces,
+               rank's pieces cut into disks, glued on rank 0; by methods "linear" and
+               "refine", rank 0 computes it from the whole mesh). `mesh` may also be this
+               rank's Piece (read_pieces,
                piece_from_arrays): then no rank holds the whole mesh; comm must be the
                communicator the piece was made on.
 
@@ -420,14 +421,13 @@ def contour_tree(mesh, simplify=None, threads=None, method="exact", refine=4, ke
                         "made on (comm=)")
     if comm is not None:
         handle = _comm_handle(comm, what)
-        if _args.text(method, what + ": method") != "exact":
-            raise HoctError(what + ": over MPI only the exact tree is computed (method='exact')")
         native = _hoct.contour_tree_piece if isinstance(mesh, Piece) else _hoct.contour_tree_mpi
-        return native(mesh, handle, _args.threads(threads, what),
-                                      _args.flag(keep_flat, what + ": keep_flat"),
-                                      _args.flag(force, what + ": force"),
-                                      _args.flag(augmented, what + ": augmented"),
-                                      _args.threshold(simplify, what + ": simplify"))
+        return native(mesh, handle, _args.text(method, what + ": method"),
+                      _args.integer(refine, what + ": refine", 1, _args.MAX_REFINE),
+                      _args.threads(threads, what), _args.flag(keep_flat, what + ": keep_flat"),
+                      _args.flag(force, what + ": force"),
+                      _args.flag(augmented, what + ": augmented"),
+                      _args.threshold(simplify, what + ": simplify"))
     return _hoct.contour_tree(mesh, _args.text(method, what + ": method"),
                               _args.integer(refine, what + ": refine", 1, _args.MAX_REFINE),
                               _args.threads(threads, what), _args.flag(keep_flat, what + ": keep_flat"),

@@ -5,6 +5,7 @@
 
 #include "exact/piece_codec.hpp"
 #include "exact/piece_trees.hpp"
+#include "exact/pl_piece_trees.hpp"
 #include "exact/reeb_pieces.hpp"
 #include "mesh/duplicate_points.hpp"
 #include "mesh/mesh.hpp"
@@ -13,6 +14,7 @@
 #include "mesh/piece_surface.hpp"
 #include "pipeline/compute_tree.hpp"
 #include "pipeline/domain_check.hpp"
+#include "pl/pl_mesh.hpp"
 #include "util/error.hpp"
 #include "util/parallel_for.hpp"
 #include "util/stopwatch.hpp"
@@ -228,14 +230,15 @@ DistributedOutcome distributed_tree_on(RankInput in, const MeshInput *whole, con
   MPI_Comm_rank(comm, &d.rank);
   MPI_Comm_size(comm, &d.ranks);
   const int rank = d.rank, ranks = d.ranks;
-  if (rq.method != TreeMethod::Exact)
-    throw Error("over MPI only the exact tree is computed (drop --linear and --refine, or run "
-                "hoct without mpirun)");
+  // The request is every rank's: its errors are thrown on every rank together.
+  const bool linear = rq.method == TreeMethod::Linear, refined = rq.method == TreeMethod::Refine;
+  if (refined && (rq.refine < 1 || rq.refine > 1024))
+    throw AgreedError("refine: K must be between 1 and 1024, not " + std::to_string(rq.refine));
   if (rq.arcs != ArcGeometry::None)
-    throw Error("over MPI the arcs are not drawn on the surface (their paths need the whole "
-                "graph): ask for straight arcs");
+    throw AgreedError("over MPI the arcs are not drawn on the surface (their paths need the whole "
+                      "graph): ask for straight arcs");
   if (rq.simplify && rq.augmented)
-    throw Error("simplification works on the reduced tree (drop --augmented)");
+    throw AgreedError("simplification works on the reduced tree (drop --augmented)");
   const int threads = thread_count(rq.threads);
   Stopwatch clock;
 
@@ -369,20 +372,59 @@ DistributedOutcome distributed_tree_on(RankInput in, const MeshInput *whole, con
   MPI_Allreduce(MPI_IN_PLACE, &source, 1, MPI_INT, MPI_MIN, comm);
   double field_scale[2] = {mesh.field.reference(), mesh.field.precision()};
   MPI_Bcast(field_scale, 2, MPI_DOUBLE, source, comm);
+  // The PL methods' pieces (pl_piece_trees): their Reeb graph, the linear method's Bezier or
+  // serendipity cells (whose PL mesh has points of its own) and the refine method's mesh the
+  // pieces did not check (its PL vertices are counted with the whole's Euler characteristic
+  // from their check) are computed by rank 0 from the whole mesh.
+  std::string pl_whole;
+  if (linear || refined) {
+    int other_cells = linear && !empty_piece && !nodal_lagrange_cells(piece.input) ? 1 : 0;
+    MPI_Allreduce(MPI_IN_PLACE, &other_cells, 1, MPI_INT, MPI_MAX, comm);
+    const std::string method = linear ? "the linear method's" : "the refine method's";
+    if (rank == 0 && reeb)
+      pl_whole = method + " Reeb graph is not computed by pieces";
+    else if (rank == 0 && other_cells)
+      pl_whole = method + " PL mesh of Bezier or serendipity cells has points of its own";
+    else if (rank == 0 && refined && !d.whole_check.empty())
+      pl_whole = method + " pieces need the mesh checked by them";
+    broadcast_string(comm, pl_whole, 0);
+  }
+  if (!pl_whole.empty()) {
+    d.whole_tree = pl_whole;
+    const bool read = !whole && !check_whole; // rank 0 may hold the whole for the checks
+    if (rank != 0) {
+      if (read)
+        in.read_whole();
+      return d;
+    }
+    if (read)
+      loaded = in.read_whole();
+    const MeshInput &all = whole ? *whole : loaded;
+    MeshBuildOptions bo;
+    bo.throw_on_error = false; // checked already (or forced past)
+    bo.threads = threads;
+    d.outcome = compute_tree(build_mesh(all, bo), rq, &all);
+    return d;
+  }
 
   // 3. The piece's kept trees, 4. merged in a binary tree of ranks (a Reeb graph's pieces: glued
   // on rank 0).
   PieceTrees trees;
   TreeTimings time;
+  PlPieceTrees pl; // the PL methods' counts: this piece's, then the whole's on rank 0
   try {
     const PiecePlace place{rank, piece.global_point, begin, in.first_triangle, spans};
     ExactTreeOptions eo;
     eo.augmented = rq.augmented;
     eo.threads = threads;
     eo.fallback_refinement = rq.fallback_refinement;
-    if (empty_piece)
+    if (empty_piece) {
       trees.first_piece = trees.last_piece = rank;
-    else if (reeb)
+    } else if (linear || refined) {
+      pl = linear ? pl_piece_trees(piece.input, place, rq.augmented, threads)
+                  : refined_piece_trees(mesh, place, rq.refine, rq.augmented, threads);
+      trees = std::move(pl.trees);
+    } else if (reeb)
       trees = reeb_piece(mesh, place, eo, time);
     else
       trees = piece_trees(mesh, place, eo, time);
@@ -424,6 +466,13 @@ DistributedOutcome distributed_tree_on(RankInput in, const MeshInput *whole, con
       trees = merge_piece_trees(trees, decode_piece_trees(bytes), rq.augmented, threads);
     }
   }
+  PlCounts pl_counts;
+  if (linear || refined) {
+    int64_t counts[3] = {pl.triangles, pl.own_points, pl.cell_points};
+    MPI_Reduce(rank == 0 ? MPI_IN_PLACE : counts, counts, 3, MPI_INT64_T, MPI_SUM, 0, comm);
+    pl_counts = whole_pl_counts(counts[0], counts[1], counts[2], refined ? rq.refine : 0,
+                                surface.euler_characteristic);
+  }
   // Every rank's report on rank 0.
   struct rusage usage {};
   getrusage(RUSAGE_SELF, &usage);
@@ -454,7 +503,10 @@ DistributedOutcome distributed_tree_on(RankInput in, const MeshInput *whole, con
 
   // 5. Rank 0: the whole tree, finished as compute_tree finishes it.
   TreeResult tree = reeb ? reeb_graph_of_pieces(reeb_pieces, rq.augmented, field_scale[0])
-                         : tree_of_pieces(trees, rq.augmented, field_scale[0]);
+                    : linear || refined
+                        ? pl_tree_of_pieces(trees, rq.augmented, method_name(rq), pl_counts,
+                                            linear ? 0.0 : field_scale[0])
+                        : tree_of_pieces(trees, rq.augmented, field_scale[0]);
   const int64_t ties = tree.stats.seam_paths_nonmonotone.value_or(0);
   if (joined_whole) {
     int need = ties > 0 ? 1 : 0;

@@ -45,10 +45,11 @@ PlMesh split_nodal_cells(const MeshInput &in) {
       // The tensor grid's d^2 squares, each cut along its (i, j)-(i+1, j+1) diagonal.
       auto at = [&](int i, int j) { return nodes[i + (d + 1) * j]; };
       for (int j = 0; j <= d; ++j)
-        for (int i = 0; i <= d; ++i) {
-          m.source_cell[at(i, j)] = static_cast<int64_t>(c);
-          m.source_uv[at(i, j)] = {static_cast<double>(i) / d, static_cast<double>(j) / d};
-        }
+        for (int i = 0; i <= d; ++i)
+          if (m.source_cell[at(i, j)] < 0) {
+            m.source_cell[at(i, j)] = static_cast<int64_t>(c);
+            m.source_uv[at(i, j)] = {static_cast<double>(i) / d, static_cast<double>(j) / d};
+          }
       for (int j = 0; j < d; ++j)
         for (int i = 0; i < d; ++i) {
           m.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
@@ -57,6 +58,8 @@ PlMesh split_nodal_cells(const MeshInput &in) {
       continue;
     }
     for (int i = 0; i < lattice_size(d); ++i) {
+      if (m.source_cell[nodes[i]] >= 0)
+        continue;
       const auto p = lattice_point(d, i);
       m.source_cell[nodes[i]] = static_cast<int64_t>(c);
       m.source_uv[nodes[i]] = {static_cast<double>(p[0]) / d, static_cast<double>(p[1]) / d};
@@ -74,15 +77,55 @@ PlMesh split_nodal_cells(const MeshInput &in) {
   return m;
 }
 
+// Points no cell uses left out (they are no part of the surface: as isolated vertices they
+// would be extrema of a component of their own), the others renumbered in their order.
+void drop_unused_points(PlMesh &m) {
+  const std::size_t n = m.points.size();
+  std::vector<int64_t> to(n, -1);
+  int64_t used = 0;
+  for (std::size_t p = 0; p < n; ++p)
+    if (m.source_cell[p] >= 0)
+      to[p] = used++;
+  if (used == static_cast<int64_t>(n))
+    return;
+  for (std::size_t p = 0; p < n; ++p)
+    if (to[p] >= 0) {
+      m.points[to[p]] = m.points[p];
+      m.values[to[p]] = m.values[p];
+      m.source_cell[to[p]] = m.source_cell[p];
+      m.source_uv[to[p]] = m.source_uv[p];
+    }
+  m.points.resize(used);
+  m.values.resize(used);
+  m.source_cell.resize(used);
+  m.source_uv.resize(used);
+  for (auto &t : m.triangles)
+    for (int64_t &v : t)
+      v = to[v];
+}
+
 } // namespace
 
-PlMesh split_lagrange_cells(const MeshInput &in) {
-  if (in.lagrange_triangles_only())
-    return split_nodal_cells(in);
-  // Bezier cells through their values at the nodes' places, serendipity cells with their
-  // interior nodes interpolated (mesh/cell_split); the build reported any inconsistency.
-  ProblemLog ignored;
-  return split_nodal_cells(nodal_cells(in, ignored));
+bool nodal_lagrange_cells(const MeshInput &in) {
+  for (std::size_t c = 0; c < in.num_cells(); ++c)
+    if (in.kind(c) != CellKind::LagrangeTriangle && in.kind(c) != CellKind::LagrangeQuadrilateral)
+      return false;
+  return true;
+}
+
+PlMesh split_lagrange_cells(const MeshInput &in, bool keep_unused_points) {
+  PlMesh m;
+  if (nodal_lagrange_cells(in)) {
+    m = split_nodal_cells(in);
+  } else {
+    // Bezier cells through their values at the nodes' places, serendipity cells with their
+    // interior nodes interpolated (mesh/cell_split); the build reported any inconsistency.
+    ProblemLog ignored;
+    m = split_nodal_cells(nodal_cells(in, ignored));
+  }
+  if (!keep_unused_points)
+    drop_unused_points(m);
+  return m;
 }
 
 } // namespace hoct

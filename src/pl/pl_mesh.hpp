@@ -36,7 +36,13 @@ MeshInput to_mesh_input(const PlMesh &pl);
 // interpretation" of the input's nodes); a quadrilateral of bidegree (d, d) into 2 d^2, each
 // square of its node grid cut along the diagonal from its (i, j) node to its (i+1, j+1) node
 // (Bezier and serendipity cells through nodal_cells: mesh/cell_split.hpp). Vertices name the
-// input cell and their (u, v) or (s, t) in it.
-PlMesh split_lagrange_cells(const MeshInput &input);
+// first input cell that has them and their (u, v) or (s, t) in it (the cell the exact tree
+// places a vertex node in, on a mesh of linear triangles). Points no cell uses are left out
+// (the others keep their order), unless keep_unused_points (then their source_cell is -1).
+PlMesh split_lagrange_cells(const MeshInput &input, bool keep_unused_points = false);
+
+// Whether every cell is a Lagrange triangle or quadrilateral: split_lagrange_cells then makes no
+// points of its own (the vertices are the input's points, with their values as read).
+bool nodal_lagrange_cells(const MeshInput &input);
 
 } // namespace hoct

@@ -188,6 +188,33 @@ def main():
     tp.check(distribution(f) == "each process its own piece",
              f"{label}: each process keeps its pieces, not {distribution(f)!r}")
     pv.Delete(f)
+    # The linear method by the same pieces: the CLI's --linear tree.
+    want = tp.cli_tree(pvtu, "--linear")
+    f = pv.HigherOrderContourTree(Input=pv.XMLPartitionedUnstructuredGridReader(FileName=[pvtu]),
+                                  Method="Linear (input nodes)")
+    errors = catch(f, vtkCommand.ErrorEvent)
+    f.UpdatePipeline()
+    label = "4 pieces with ghosts, linear"
+    tp.check(not errors, f"{label}: errors {errors}")
+    compare_whole(label, local_output(f, 0), local_output(f, 1), want)
+    places = [sorted(tuple(round(x, 9) for x in n["position"]) for n in t["nodes"])
+              for t in (want, tp.cli_tree(pvtu))]
+    tp.check(places[0] != places[1], f"{label}: the linear tree differs from the exact one here")
+    tp.check(distribution(f) == "each process its own piece",
+             f"{label}: each process keeps its pieces, not {distribution(f)!r}")
+    pv.Delete(f)
+    # And the refine method, K = 2.
+    want = tp.cli_tree(pvtu, "--refine", "2")
+    f = pv.HigherOrderContourTree(Input=pv.XMLPartitionedUnstructuredGridReader(FileName=[pvtu]),
+                                  Method="Refine (K x K per cell)", RefineLevel=2)
+    errors = catch(f, vtkCommand.ErrorEvent)
+    f.UpdatePipeline()
+    label = "4 pieces with ghosts, refine 2"
+    tp.check(not errors, f"{label}: errors {errors}")
+    compare_whole(label, local_output(f, 0), local_output(f, 1), want)
+    tp.check(distribution(f) == "each process its own piece",
+             f"{label}: each process keeps its pieces, not {distribution(f)!r}")
+    pv.Delete(f)
 
     # Duplicate vertices across the pieces (a slit): process 0 checks the whole mesh, which the
     # processes join there from their pieces; forced past them, the CLI's --force tree.

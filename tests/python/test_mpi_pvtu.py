@@ -4,7 +4,8 @@ Partitioned files written by VTK itself (vtkExtractUnstructuredGridPiece and
 vtkXMLPUnstructuredGridWriter, as in test_collections): ghost levels 0, 1 and 2, with global ids
 (the GlobalIds attribute) and without (the pieces' copies of a point joined by position), cubic
 triangles, quadratic quadrilaterals, a plateau (ties ordered by the whole's ids) and a field at
-+1e7 simplified; pieces cut by hand with a plain GlobalIds array and an empty piece. The
++1e7 simplified, and the linear and refine methods on the quadrilaterals and the plateau (2, 3
+and 7 ranks); pieces cut by hand with a plain GlobalIds array and an empty piece. The
 independent truth is one process reading the whole file (`hoct tree FILE.pvtu`, io/piece_join):
 for 1, 2, 3, 4 and 7 ranks (more ranks than pieces: ranks without any) the JSON (--no-timings,
 the input's fingerprint included) is byte-identical, the ranks read their pieces alone (no note
@@ -36,7 +37,9 @@ def same_for_all_ranks(label, pvtu, *extra):
     want = pvtu + ".plain.json"
     plain = run("tree", pvtu, "--json", want, "--no-timings", "-q", *extra, check=False)
     r.check(plain.returncode == 0, f"{label}: one process: {plain.stderr[-800:]}")
-    for n in (1, 2, 3, 4, 7):
+    # The PL methods on 2, 3 and 7 ranks (more ranks than pieces: ranks without any).
+    ranks = (2, 3, 7) if "--linear" in extra or "--refine" in extra else (1, 2, 3, 4, 7)
+    for n in ranks:
         got = f"{pvtu}.{n}.json"
         p = mpi(n, "tree", pvtu, "--json", got, "--no-timings", *extra)
         ok = p.returncode == 0 and os.path.exists(got) and read(got) == read(want)
@@ -50,7 +53,7 @@ def same_for_all_ranks(label, pvtu, *extra):
         m = re.search(r"field '[^']*', (\d+) cells", p.stdout)
         r.check(m and len(rows) == n and sum(int(row[1]) for row in rows) == int(m.group(1)),
                 f"{label}, {n} ranks: per-rank cells add up:\n{p.stdout[-1500:]}")
-    print(f"{label}: 1-7 ranks checked", flush=True)
+    print(f"{label}: {ranks} ranks checked", flush=True)
 
 
 with tempdir() as d:
@@ -68,17 +71,23 @@ with tempdir() as d:
              ("gauss", "no_ghosts", 4, 0, None, []), ("gauss", "no_ghosts_ids", 3, 0, "gid", []),
              ("gauss", "ghosts2", 4, 2, None, []), ("quads", "ghosts", 3, 1, None, []),
              ("plateau", "ghosts", 5, 1, None, []),
-             ("offset", "ghosts_ids", 3, 1, "gid", ["--simplify", "1%"])]
+             ("offset", "ghosts_ids", 3, 1, "gid", ["--simplify", "1%"]),
+             # The linear method's pieces (exact/pl_piece_trees).
+             ("quads", "ghosts", 3, 1, None, ["--linear"]),
+             ("plateau", "ghosts", 5, 1, None, ["--linear"]),
+             ("quads", "ghosts", 3, 1, None, ["--refine", "2"]),
+             ("plateau", "ghosts", 5, 1, None, ["--refine", "2"])]
     for source, name, pieces, level, ids, extra in cases:
         pvtu = os.path.join(d, f"{source}_{name}.pvtu")
         grid = read_grid(os.path.join(d, f"{source}.vtu"))
         write_pieces(with_ids(grid, ids) if ids else grid, pvtu, pieces, level, ids)
-        same_for_all_ranks(f"{source} {name} ({pieces} pieces)", pvtu, *extra)
+        same_for_all_ranks(f"{source} {name} ({pieces} pieces) {' '.join(extra)}", pvtu, *extra)
 
     # Pieces cut by hand: a plain GlobalIds array (no attribute) and an empty piece.
     hand_pvtu = write_hand_cut(read_grid(os.path.join(d, "gauss.vtu")), d)
     hand = [f"hand_{k}.vtu" for k in range(3)]
     same_for_all_ranks("hand-cut, an empty piece", hand_pvtu)
+    same_for_all_ranks("hand-cut, an empty piece, linear", hand_pvtu, "--linear")
 
     # A plate with 100 holes in pieces: its Reeb graph, with the whole's loops.
     run("generate", "plate", "--cells", "2000", "-o", os.path.join(d, "plate.vtu"))

@@ -3,13 +3,13 @@
 
 The independent truth is the command line's single-process tree, computed without MPI: on
 generated genus-0 datasets (plateaus, quadrilaterals, a field at +1e7 with --simplify,
---augmented) and a plate with 100 holes (its Reeb graph) the JSON rank 0 writes
+--augmented, the linear and the refine method on a plateau) and a plate with 100 holes (its Reeb graph) the JSON rank 0 writes
 (`write_json(timings=False)`) must be byte-identical to `hoct tree --json --no-timings` for 1,
 2 and 3 ranks (the command line's test takes 1, 2, 3, 4 and 7 through the same library call),
 and the other ranks get None. The communicator is the one given: four ranks
 split into two groups of two compute two different trees at once, each group's rank 0 matching
 its own file's. Refusals are raised on every rank as HoctError with one message
-(method="linear", a comm that is no mpi4py communicator), and no rank is left waiting.
+(a method that is none, a comm that is no mpi4py communicator), and no rank is left waiting.
 
 Skipped (exit 77) without mpirun, mpi4py or an MPI build of hoct."""
 import os
@@ -78,6 +78,10 @@ def flags(kwargs):
         out += ["--simplify", kwargs["simplify"]]
     if kwargs.get("augmented"):
         out.append("--augmented")
+    if kwargs.get("method") == "linear":
+        out.append("--linear")
+    if kwargs.get("method") == "refine":
+        out += ["--refine", str(kwargs.get("refine", 4))]
     return out
 
 
@@ -102,6 +106,8 @@ with tempdir() as d:
         ("random", ["--cells", "2000", "--degree", "5", "--offset", "1e7"], {"simplify": "1%"}),
         ("random", ["--cells", "1500", "--quads", "--degree", "3"], {}),
         ("plate", ["--cells", "2000", "--degree", "2"], {}),  # 100 holes: a Reeb graph
+        ("random", ["--cells", "3000", "--plateau", "30"], {"method": "linear"}),
+        ("random", ["--cells", "1000", "--plateau", "30"], {"method": "refine", "refine": 2}),
     ]
     wants = []
     for k, (name, gen, kwargs) in enumerate(cases):
@@ -132,7 +138,7 @@ with tempdir() as d:
 
     # Refusals: raised on every rank, with one message, and the job ends normally.
     for label, path, kwargs, text in [
-        ("linear", heater, {"method": "linear"}, "only the exact tree"),
+        ("no such method", heater, {"method": "cubic"}, "method must be"),
         ("not a communicator", heater, {"world": False}, "mpi4py communicator"),
     ]:
         p = mpi(3, "raises", json.dumps(kwargs), path)

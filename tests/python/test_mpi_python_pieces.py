@@ -189,6 +189,17 @@ with tempdir() as d:
                 same_tree(f"piece_from_arrays, {label}, ids {ids}", n, "arrays",
                           {"files": files, "ids": ids, "ghosts": False}, want, cells)
         print(f"piece_from_arrays, {label}: {counts} ranks checked", flush=True)
+    # The PL methods by the pieces (exact/pl_piece_trees): the CLI's --linear and --refine trees.
+    pvtu = write_consecutive(read_grid(plateau), d, "plateau_linear", 3)
+    files = [os.path.join(d, f"plateau_linear_{k}.vtu") for k in range(3)]
+    want, cells = cli_tree("linear", pvtu, "--linear")
+    same_tree("piece_from_arrays, linear, a plateau", 3, "arrays",
+              {"files": files, "ids": False, "ghosts": False, "tree": {"method": "linear"}},
+              want, cells)
+    want, cells = cli_tree("refine", pvtu, "--refine", "2")
+    same_tree("piece_from_arrays, refine 2, a plateau", 3, "arrays",
+              {"files": files, "ids": False, "ghosts": False,
+               "tree": {"method": "refine", "refine": 2}}, want, cells)
     # Ghost cells flagged: VTK's pieces with a ghost level, each rank its piece's arrays.
     pvtu = os.path.join(d, "gauss_ghost3.pvtu")
     write_pieces(with_ids(read_grid(gauss), "gid"), pvtu, 3, 1, "gid")

@@ -5,8 +5,10 @@ and the ranks merge their kept join and split trees (exact/piece_trees, distribu
 independent truth is hoct's own single-process tree, computed without MPI at all: for every
 generated genus-0 dataset, with plateaus and fallback cells, quadrilaterals, a field at +1e7,
 --augmented and --simplify, the JSON (--no-timings) must be byte-identical to it for 1, 2, 3, 4
-and 7 ranks (--oversubscribe: this machine has 2 cores). Also checked: what is not distributed yet
-(--linear, --vtp) is refused on every rank with one clear message, a non-zero exit and no output,
+and 7 ranks (--oversubscribe: this machine has 2 cores); the same for the linear and the refine
+method (PL trees, by pieces too), whose Reeb graphs (and the linear method's serendipity cells)
+rank 0 computes from the whole mesh, saying so. Also checked: what is not distributed yet
+(--vtp) is refused on every rank with one clear message, a non-zero exit and no output,
 a broken file is reported as without MPI, and rank 0 alone writes the outputs.
 Bad meshes: inverted cells that a piece finds are named by the whole's cell numbers, as without
 MPI, and --force past them gives the same JSON; a crack between pieces and a slit from the border
@@ -42,6 +44,17 @@ with tempdir() as d:
         ("random", ["--cells", "3000", "--plateau", "30"], ["--augmented"]),
         ("random", ["--cells", "2000", "--degree", "5", "--offset", "1e7"], ["--simplify", "1%"]),
         ("random", ["--cells", "1500", "--quads", "--degree", "3"], []),
+        # The linear method (the PL tree of the nodes, exact/pl_piece_trees).
+        ("sphere", ["--cells", "2000"], ["--linear"]),
+        ("random", ["--cells", "3000", "--plateau", "30"], ["--linear"]),
+        ("random", ["--cells", "3000", "--plateau", "30"], ["--linear", "--augmented"]),
+        ("random", ["--cells", "2000", "--degree", "5", "--offset", "1e7"], ["--linear", "--simplify", "1%"]),
+        ("random", ["--cells", "1500", "--quads", "--degree", "3"], ["--linear"]),
+        # The refine method (the PL tree of the exact field on K x K sub-triangles).
+        ("sphere", ["--cells", "1000"], ["--refine", "3"]),
+        ("random", ["--cells", "1500", "--plateau", "30"], ["--refine", "2"]),
+        ("random", ["--cells", "800", "--quads", "--degree", "3"], ["--refine", "3"]),
+        ("random", ["--cells", "1000", "--degree", "5", "--offset", "1e7"], ["--refine", "2", "--simplify", "1%"]),
     ]
     for k, (name, gen, extra) in enumerate(cases):
         path = os.path.join(d, f"{name}{k}.vtu")
@@ -49,13 +62,15 @@ with tempdir() as d:
         want = os.path.join(d, f"want{k}.json")
         run("tree", path, "--json", want, "--no-timings", "-q", *extra)
         label = f"{name} {' '.join(gen + extra)}"
-        for n in (1, 2, 3, 4, 7):
+        # The PL methods on 2, 3 and 7 ranks (tests/unit/test_pl_piece_trees: 1-16 pieces).
+        ranks = (2, 3, 7) if "--linear" in extra or "--refine" in extra else (1, 2, 3, 4, 7)
+        for n in ranks:
             got = os.path.join(d, f"got{k}_{n}.json")
             p = mpi(n, "tree", path, "--json", got, "--no-timings", "-q", *extra)
             r.check(p.returncode == 0, f"{label}, {n} ranks: exit {p.returncode}: {p.stderr[-1500:]}")
             if p.returncode == 0:
                 r.check(read(got) == read(want), f"{label}, {n} ranks: JSON differs from one process")
-        print(f"{label}: 1-7 ranks checked", flush=True)
+        print(f"{label}: {ranks} ranks checked", flush=True)
 
     # The summary comes from rank 0 alone, and says how many ranks.
     path = os.path.join(d, "heater.vtu")
@@ -71,13 +86,14 @@ with tempdir() as d:
                 f"{n} ranks: per-rank report ({len(rows)} rows, {cells} cells):\n{p.stdout}")
 
     # Not distributed yet: refused with one message, non-zero exit, nothing written.
-    for args, words in [
-        ([path, "--linear", "--json", os.path.join(d, "linear.json")], "only the exact tree"),
-        ([path, "--vtp", os.path.join(d, "x.vtp")], "--vtp"),
-    ]:
-        p = mpi(2, "tree", *args)
-        r.check(p.returncode != 0 and words in p.stderr, f"{args}: refused ({p.returncode}):\n{p.stderr[-1500:]}")
-    r.check(not os.path.exists(os.path.join(d, "linear.json")), "no JSON for a refused run")
+    p = mpi(2, "tree", path, "--vtp", os.path.join(d, "x.vtp"), "--json", os.path.join(d, "x.json"))
+    r.check(p.returncode != 0 and "--vtp" in p.stderr and p.stderr.count("hoct: error:") == 1,
+            f"--vtp: refused ({p.returncode}):\n{p.stderr[-1500:]}")
+    r.check(not os.path.exists(os.path.join(d, "x.json")), "no JSON for a refused run")
+    for flags, words in [(["--linear"], "linear contour tree"), (["--refine", "2"], "refine k=2 contour tree")]:
+        p = mpi(2, "tree", path, *flags)
+        r.check(p.returncode == 0 and f"{words} over 2 MPI ranks" in p.stdout
+                and "tree: the whole mesh" not in p.stdout, f"{flags} by the pieces:\n{p.stdout}")
 
     # The pieces check the whole mesh together (mesh/piece_surface, distributed_checks): a valid
     # mesh is not checked again by rank 0, and the shape they find is the whole mesh's for any
@@ -89,6 +105,40 @@ with tempdir() as d:
     plate = os.path.join(d, "plate.vtu")
     run("generate", "plate", "--cells", "2000", "-o", plate)
     reeb_with_shape(r, "plate", plate)
+
+    # What the linear method's pieces do not compute (a Reeb graph; serendipity cells, whose PL
+    # mesh has points of its own): rank 0 computes it from the whole mesh, says so, and the
+    # JSON is one process's.
+    import meshio
+    import numpy as np
+
+    quad8 = os.path.join(d, "quad8.vtu")
+    n8 = 8
+    grid = {}
+
+    def node(x, y):
+        return grid.setdefault((x, y), len(grid))
+
+    cells8 = [[node(2 * i, 2 * j), node(2 * i + 2, 2 * j), node(2 * i + 2, 2 * j + 2), node(2 * i, 2 * j + 2),
+               node(2 * i + 1, 2 * j), node(2 * i + 2, 2 * j + 1), node(2 * i + 1, 2 * j + 2), node(2 * i, 2 * j + 1)]
+              for j in range(n8) for i in range(n8)]
+    xy = np.array([(x / (2 * n8), y / (2 * n8), 0.0) for (x, y) in sorted(grid, key=grid.get)])
+    meshio.write(quad8, meshio.Mesh(xy, [("quad8", np.array(cells8))],
+                                    point_data={"f": np.sin(5 * xy[:, 0]) * np.cos(4 * xy[:, 1])}))
+    for label, file, flags, why in [
+            ("plate", plate, ["--linear"], "the linear method's Reeb graph"),
+            ("plate", plate, ["--refine", "2"], "the refine method's Reeb graph"),
+            ("serendipity quadrilaterals", quad8, ["--linear"], "Bezier or serendipity")]:
+        want = os.path.join(d, "linear_whole.json")
+        run("tree", file, *flags, "--json", want, "--no-timings", "-q")
+        for n in (2, 3):
+            got = os.path.join(d, f"linear_whole{n}.json")
+            p = mpi(n, "tree", file, *flags, "--json", got, "--no-timings")
+            r.check(p.returncode == 0 and os.path.exists(got) and read(got) == read(want)
+                    and "tree: the whole mesh on rank 0 (" in p.stdout and why in p.stdout
+                    and flags[0][2:] in p.stdout.splitlines()[0],
+                    f"{label} {flags}, {n} ranks: one process's JSON, from the whole on rank 0 "
+                    f"({p.returncode}):\n{p.stdout[-1500:]}{p.stderr[-800:]}")
 
     # A broken file: the same error as without MPI, from every rank's read.
     broken = os.path.join(d, "broken.vtu")
@@ -103,8 +153,6 @@ with tempdir() as d:
 
     # Problems only the whole mesh shows, or that a piece finds: the same message (the whole's
     # cell numbers) as without MPI, and --force past them the same JSON.
-    import meshio
-    import numpy as np
 
     def grid_mesh(path, move=None, crack=False):
         n = 12

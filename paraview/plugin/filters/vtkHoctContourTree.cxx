@@ -276,12 +276,6 @@ int vtkHoctContourTree::RequestDistributed(vtkInformationVector **inputVector,
   }
   const MPI_Comm comm =
       *static_cast<vtkMPICommunicator *>(controller->GetCommunicator())->GetMPIComm()->GetHandle();
-  if (this->Method != EXACT) { // every process has the same property: all return here
-    if (rank == 0)
-      vtkErrorMacro("Higher-Order Contour Tree: over MPI only the exact tree is computed: set "
-                    "Method to exact, or run on one process");
-    return rank == 0 ? 0 : 1;
-  }
   std::string scalar_name;
   bool collectives_done = false;
   try {
