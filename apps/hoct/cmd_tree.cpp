@@ -62,9 +62,8 @@ void run_tree(const TreeOptions &o) {
   TreeRequest rq = request_of(o);
   if (under_mpi()) { // mpirun -np N hoct tree ...
     DistributedTreeRun run{
-        o.file,       o.json,  o.svg,      o.field.selection(), o.merge.tolerance(),
-        o.no_timings, o.quiet, o.branches, !o.vtp.empty()};
-    rq.arcs = ArcGeometry::None;
+        o.file,       o.json,  o.svg,     o.vtp, o.field.selection(), o.merge.tolerance(),
+        o.no_timings, o.quiet, o.branches};
     run_tree_mpi(run, rq);
     return;
   }

@@ -4,6 +4,7 @@
 #include "io/read_mesh.hpp"
 #include "io/tree_json.hpp"
 #include "io/tree_svg_writer.hpp"
+#include "io/tree_vtp_writer.hpp"
 #include "load_mesh.hpp"
 #include "memory_guard.hpp"
 #include "mesh/duplicate_points.hpp"
@@ -68,9 +69,6 @@ void run_ranks(const DistributedTreeRun &run, TreeRequest rq, bool root, bool &c
     rq.threads = 1;
   ReadLimits limits = read_limits();
   limits.threads = thread_count(rq.threads);
-  if (run.vtp_asked)
-    agree_on_failure("--vtp: over MPI the arcs' paths are not drawn yet (they need the whole "
-                     "graph); use --json or --svg, or run hoct without mpirun");
   // A partitioned file: each rank reads its own pieces, where the ranks can join them alone.
   const bool partitioned =
       std::filesystem::path(run.file).extension() == ".pvtu" && run.merge_tolerance < 0;
@@ -136,6 +134,8 @@ void report(const DistributedTreeRun &run, const DistributedOutcome &d,
     throw Error("--svg draws the reduced tree (drop --augmented)");
   if (!run.json.empty())
     write_tree_json(run.json, tree, /*timings=*/!run.no_timings, threads);
+  if (!run.vtp.empty())
+    write_tree_vtp(run.vtp, tree);
   if (!run.svg.empty())
     write_tree_svg(run.svg, tree,
                    std::filesystem::path(run.file).filename().string() + ": " + tree.method +

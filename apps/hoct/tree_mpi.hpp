@@ -1,5 +1,5 @@
-// `mpirun -np N hoct tree FILE ...`: the distributed exact tree (distributed/distributed_tree).
-// Every rank reads the file; rank 0 writes the outputs and the summary.
+// `mpirun -np N hoct tree FILE ...`: the distributed tree (distributed/distributed_tree). Every
+// rank reads the file, or its pieces of a .pvtu; rank 0 writes the outputs and the summary.
 #pragma once
 
 #include "io/field_selection.hpp"
@@ -10,10 +10,10 @@
 namespace hoct::cli {
 
 struct DistributedTreeRun {
-  std::string file, json, svg;
+  std::string file, json, svg, vtp;
   FieldSelection field;
   double merge_tolerance = -1;
-  bool no_timings = false, quiet = false, branches = false, vtp_asked = false;
+  bool no_timings = false, quiet = false, branches = false;
 };
 
 // Whether hoct was started by an MPI launcher and built with MPI (then run_tree_mpi applies).

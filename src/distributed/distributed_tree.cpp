@@ -234,9 +234,6 @@ DistributedOutcome distributed_tree_on(RankInput in, const MeshInput *whole, con
   const bool linear = rq.method == TreeMethod::Linear, refined = rq.method == TreeMethod::Refine;
   if (refined && (rq.refine < 1 || rq.refine > 1024))
     throw AgreedError("refine: K must be between 1 and 1024, not " + std::to_string(rq.refine));
-  if (rq.arcs != ArcGeometry::None)
-    throw AgreedError("over MPI the arcs are not drawn on the surface (their paths need the whole "
-                      "graph): ask for straight arcs");
   if (rq.simplify && rq.augmented)
     throw AgreedError("simplification works on the reduced tree (drop --augmented)");
   const int threads = thread_count(rq.threads);
@@ -372,25 +369,28 @@ DistributedOutcome distributed_tree_on(RankInput in, const MeshInput *whole, con
   MPI_Allreduce(MPI_IN_PLACE, &source, 1, MPI_INT, MPI_MIN, comm);
   double field_scale[2] = {mesh.field.reference(), mesh.field.precision()};
   MPI_Bcast(field_scale, 2, MPI_DOUBLE, source, comm);
-  // The PL methods' pieces (pl_piece_trees): their Reeb graph, the linear method's Bezier or
-  // serendipity cells (whose PL mesh has points of its own) and the refine method's mesh the
-  // pieces did not check (its PL vertices are counted with the whole's Euler characteristic
-  // from their check) are computed by rank 0 from the whole mesh.
-  std::string pl_whole;
-  if (linear || refined) {
+  // What the pieces do not compute, rank 0 computes from the whole mesh: the arcs' paths on the
+  // surface (they search the whole graph), and of the PL methods' pieces (pl_piece_trees) their
+  // Reeb graph, the linear method's Bezier or serendipity cells (whose PL mesh has points of its
+  // own) and the refine method's mesh the pieces did not check (its PL vertices are counted with
+  // the whole's Euler characteristic from their check).
+  std::string whole_reason;
+  if (rq.arcs != ArcGeometry::None) {
+    whole_reason = "the arcs' paths on the surface search the whole graph";
+  } else if (linear || refined) {
     int other_cells = linear && !empty_piece && !nodal_lagrange_cells(piece.input) ? 1 : 0;
     MPI_Allreduce(MPI_IN_PLACE, &other_cells, 1, MPI_INT, MPI_MAX, comm);
     const std::string method = linear ? "the linear method's" : "the refine method's";
     if (rank == 0 && reeb)
-      pl_whole = method + " Reeb graph is not computed by pieces";
+      whole_reason = method + " Reeb graph is not computed by pieces";
     else if (rank == 0 && other_cells)
-      pl_whole = method + " PL mesh of Bezier or serendipity cells has points of its own";
+      whole_reason = method + " PL mesh of Bezier or serendipity cells has points of its own";
     else if (rank == 0 && refined && !d.whole_check.empty())
-      pl_whole = method + " pieces need the mesh checked by them";
-    broadcast_string(comm, pl_whole, 0);
+      whole_reason = method + " pieces need the mesh checked by them";
+    broadcast_string(comm, whole_reason, 0);
   }
-  if (!pl_whole.empty()) {
-    d.whole_tree = pl_whole;
+  if (!whole_reason.empty()) {
+    d.whole_tree = whole_reason;
     const bool read = !whole && !check_whole; // rank 0 may hold the whole for the checks
     if (rank != 0) {
       if (read)

@@ -43,7 +43,8 @@ struct DistributedOutcome {
   // without MPI gives).
   std::string whole_check;
   // On rank 0: empty when the pieces computed the tree; else why rank 0 computed it from the
-  // whole mesh alone (a Reeb graph whose seams between pieces the gluing could not follow).
+  // whole mesh alone (a Reeb graph whose seams between pieces the gluing could not follow; the
+  // arcs' paths on the surface; what the PL methods' pieces do not compute).
   std::string whole_tree;
 };
 

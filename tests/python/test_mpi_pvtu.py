@@ -88,6 +88,17 @@ with tempdir() as d:
     hand = [f"hand_{k}.vtu" for k in range(3)]
     same_for_all_ranks("hand-cut, an empty piece", hand_pvtu)
     same_for_all_ranks("hand-cut, an empty piece, linear", hand_pvtu, "--linear")
+    # --vtp: rank 0 computes the tree from the whole (its arcs' paths search the whole graph),
+    # which the ranks bring it: one process's VTP.
+    run("tree", hand_pvtu, "--vtp", hand_pvtu + ".plain.vtp", "-q")
+    for n in (2, 3):
+        got = f"{hand_pvtu}.{n}.vtp"
+        p = mpi(n, "tree", hand_pvtu, "--vtp", got)
+        r.check(p.returncode == 0 and os.path.exists(got)
+                and read(got) == read(hand_pvtu + ".plain.vtp")
+                and "tree: the whole mesh on rank 0 (the arcs' paths" in p.stdout,
+                f"hand-cut --vtp, {n} ranks: one process's VTP ({p.returncode}):\n"
+                f"{p.stdout[-800:]}{p.stderr[-800:]}")
 
     # A plate with 100 holes in pieces: its Reeb graph, with the whole's loops.
     run("generate", "plate", "--cells", "2000", "-o", os.path.join(d, "plate.vtu"))

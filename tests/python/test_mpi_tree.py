@@ -1,4 +1,4 @@
-"""`mpirun -np N hoct tree FILE`: the distributed exact tree (issue 31's first entry point).
+"""`mpirun -np N hoct tree FILE`: the distributed tree (issue 31's first entry point).
 
 The whole file is read by every rank, each computes the tree of its piece of contiguous cells,
 and the ranks merge their kept join and split trees (exact/piece_trees, distributed/). The
@@ -7,8 +7,8 @@ generated genus-0 dataset, with plateaus and fallback cells, quadrilaterals, a f
 --augmented and --simplify, the JSON (--no-timings) must be byte-identical to it for 1, 2, 3, 4
 and 7 ranks (--oversubscribe: this machine has 2 cores); the same for the linear and the refine
 method (PL trees, by pieces too), whose Reeb graphs (and the linear method's serendipity cells)
-rank 0 computes from the whole mesh, saying so. Also checked: what is not distributed yet
-(--vtp) is refused on every rank with one clear message, a non-zero exit and no output,
+rank 0 computes from the whole mesh, saying so; so it does for --vtp (the arcs' paths search the
+whole graph), the VTP and the JSON one process's. Also checked:
 a broken file is reported as without MPI, and rank 0 alone writes the outputs.
 Bad meshes: inverted cells that a piece finds are named by the whole's cell numbers, as without
 MPI, and --force past them gives the same JSON; a crack between pieces and a slit from the border
@@ -86,10 +86,19 @@ with tempdir() as d:
                 f"{n} ranks: per-rank report ({len(rows)} rows, {cells} cells):\n{p.stdout}")
 
     # Not distributed yet: refused with one message, non-zero exit, nothing written.
-    p = mpi(2, "tree", path, "--vtp", os.path.join(d, "x.vtp"), "--json", os.path.join(d, "x.json"))
-    r.check(p.returncode != 0 and "--vtp" in p.stderr and p.stderr.count("hoct: error:") == 1,
-            f"--vtp: refused ({p.returncode}):\n{p.stderr[-1500:]}")
-    r.check(not os.path.exists(os.path.join(d, "x.json")), "no JSON for a refused run")
+    # --vtp: the arcs' paths search the whole graph: rank 0 computes the tree from the whole mesh,
+    # says so, and writes one process's VTP and JSON.
+    run("tree", path, "--vtp", os.path.join(d, "plain.vtp"), "--json", os.path.join(d, "plain.json"),
+        "--no-timings", "-q")
+    for n in (2, 3):
+        got_vtp, got_json = os.path.join(d, f"x{n}.vtp"), os.path.join(d, f"x{n}.json")
+        p = mpi(n, "tree", path, "--vtp", got_vtp, "--json", got_json, "--no-timings")
+        r.check(p.returncode == 0 and os.path.exists(got_vtp)
+                and read(got_vtp) == read(os.path.join(d, "plain.vtp"))
+                and read(got_json) == read(os.path.join(d, "plain.json"))
+                and "tree: the whole mesh on rank 0 (the arcs' paths" in p.stdout,
+                f"--vtp, {n} ranks: one process's VTP and JSON, from the whole on rank 0 "
+                f"({p.returncode}):\n{p.stdout[-800:]}{p.stderr[-800:]}")
     for flags, words in [(["--linear"], "linear contour tree"), (["--refine", "2"], "refine k=2 contour tree")]:
         p = mpi(2, "tree", path, *flags)
         r.check(p.returncode == 0 and f"{words} over 2 MPI ranks" in p.stdout

@@ -293,8 +293,8 @@ int vtkHoctContourTree::RequestDistributed(vtkInformationVector **inputVector,
       }
     }
     const int threads = hoct::thread_count(this->Threads);
-    // The properties as a request, as `mpirun hoct tree` makes it (the exact method only; the
-    // arcs drawn straight: their paths need the whole graph on one process).
+    // The properties as a request, as `mpirun hoct tree` makes it; the arcs drawn straight
+    // (their paths search the whole graph: distributed_tree would compute the whole on rank 0).
     hoct::TreeRequest rq = this->MakeRequest();
     rq.arcs = hoct::ArcGeometry::None;
     // Each process keeps its own piece, joined with the others' as `mpirun hoct tree` joins a
