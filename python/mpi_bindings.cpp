@@ -170,6 +170,72 @@ PyPiece read_pieces(const std::string &path, const std::string &scalar,
 #endif
 }
 
+#ifdef HOCT_WITH_MPI
+// A rank's arrays as piece_from_arrays got them, held (not copied) for the joins that need the
+// rank's piece again (the whole on rank 0 or on every rank): its FilePiece is made from them
+// when asked, so that the rank holds its joined share alone meanwhile.
+struct RankArrays {
+  // The caller's arrays (Python objects: DoubleArray and IndexArray, not copied).
+  py::object points, values, global_ids, ghost_cells;
+  std::vector<py::object> blocks, types;
+  std::string field_name;
+  bool float32_points = false, float32_values = false;
+  int rank = 0;
+
+  // Released with the GIL, whichever thread drops the last reference (null handles are left
+  // for the members' own destructors).
+  ~RankArrays() {
+    py::gil_scoped_acquire gil;
+    points = values = global_ids = ghost_cells = py::object();
+    blocks.clear();
+    types.clear();
+  }
+
+  // This rank's piece (none if it has no cells); throws what is wrong with the arrays. Takes
+  // the GIL: callers may have released it.
+  std::vector<FilePiece> pieces() const {
+    py::gil_scoped_acquire gil;
+    std::vector<IndexArray> block_arrays, type_arrays;
+    for (const py::object &b : blocks)
+      block_arrays.push_back(py::cast<IndexArray>(b));
+    for (const py::object &t : types)
+      type_arrays.push_back(py::cast<IndexArray>(t));
+    const auto global_ids = py::cast<IndexArray>(this->global_ids);
+    const auto ghost_cells = py::cast<IndexArray>(this->ghost_cells);
+    FilePiece p;
+    p.input = input_from_arrays(py::cast<DoubleArray>(points), block_arrays, type_arrays,
+                                py::cast<DoubleArray>(values), field_name, float32_points,
+                                float32_values);
+    p.input.source = "the arrays of rank " + std::to_string(rank);
+    p.file = p.input.source;
+    const auto n = static_cast<py::ssize_t>(p.input.num_points());
+    if (global_ids.size() > 0) {
+      if (global_ids.ndim() != 1 || global_ids.shape(0) != n)
+        throw Error("piece_from_arrays: global_ids must have one entry per point (" +
+                    std::to_string(n) + "), not " + std::to_string(global_ids.size()));
+      p.arrays.global_ids.assign(global_ids.data(), global_ids.data() + n);
+      p.arrays.global_ids_name = "global_ids";
+    }
+    const auto cells = static_cast<py::ssize_t>(p.input.num_cells());
+    if (ghost_cells.size() > 0) {
+      if (ghost_cells.ndim() != 1 || ghost_cells.shape(0) != cells)
+        throw Error("piece_from_arrays: ghost_cells must have one entry per cell (" +
+                    std::to_string(cells) + "), not " + std::to_string(ghost_cells.size()));
+      p.arrays.cell_ghost.resize(static_cast<std::size_t>(cells));
+      for (py::ssize_t c = 0; c < cells; ++c) {
+        // vtkGhostType's DUPLICATECELL: a copy of a cell another rank owns.
+        p.arrays.cell_ghost[c] = ghost_cells.data()[c] != 0 ? 1 : 0;
+        p.arrays.ghost_cells += p.arrays.cell_ghost[c];
+      }
+    }
+    std::vector<FilePiece> out;
+    if (p.input.num_cells() > 0)
+      out.push_back(std::move(p));
+    return out;
+  }
+};
+#endif
+
 // piece_from_arrays(...): this rank's arrays (`failure`: why it has none, found by the
 // package's checks), with global point ids (empty: none) and ghost cells (empty: none).
 PyPiece piece_from_arrays(const DoubleArray &points, const std::vector<IndexArray> &blocks,
@@ -180,64 +246,46 @@ PyPiece piece_from_arrays(const DoubleArray &points, const std::vector<IndexArra
 #ifdef HOCT_WITH_MPI
   const MPI_Comm comm = running_comm(fortran_comm, "piece_from_arrays");
   std::string problem = failure;
-  auto own = std::make_shared<std::vector<FilePiece>>();
-  int rank = 0;
-  MPI_Comm_rank(comm, &rank);
+  auto arrays = std::make_shared<RankArrays>();
+  MPI_Comm_rank(comm, &arrays->rank);
+  arrays->points = points;
+  arrays->values = values;
+  arrays->blocks.assign(blocks.begin(), blocks.end());
+  arrays->types.assign(types.begin(), types.end());
+  arrays->global_ids = global_ids;
+  arrays->ghost_cells = ghost_cells;
+  arrays->field_name = field_name;
+  arrays->float32_points = float32_points;
+  arrays->float32_values = float32_values;
+  std::vector<FilePiece> own;
   if (problem.empty()) {
     try {
-      FilePiece p;
-      p.input = input_from_arrays(points, blocks, types, values, field_name, float32_points,
-                                  float32_values);
-      p.input.source = "the arrays of rank " + std::to_string(rank);
-      p.file = p.input.source;
-      const auto n = static_cast<py::ssize_t>(p.input.num_points());
-      if (global_ids.size() > 0) {
-        if (global_ids.ndim() != 1 || global_ids.shape(0) != n)
-          throw Error("piece_from_arrays: global_ids must have one entry per point (" +
-                      std::to_string(n) + "), not " + std::to_string(global_ids.size()));
-        p.arrays.global_ids.assign(global_ids.data(), global_ids.data() + n);
-        p.arrays.global_ids_name = "global_ids";
-      }
-      const auto cells = static_cast<py::ssize_t>(p.input.num_cells());
-      if (ghost_cells.size() > 0) {
-        if (ghost_cells.ndim() != 1 || ghost_cells.shape(0) != cells)
-          throw Error("piece_from_arrays: ghost_cells must have one entry per cell (" +
-                      std::to_string(cells) + "), not " + std::to_string(ghost_cells.size()));
-        p.arrays.cell_ghost.resize(static_cast<std::size_t>(cells));
-        for (py::ssize_t c = 0; c < cells; ++c) {
-          // vtkGhostType's DUPLICATECELL: a copy of a cell another rank owns.
-          p.arrays.cell_ghost[c] = ghost_cells.data()[c] != 0 ? 1 : 0;
-          p.arrays.ghost_cells += p.arrays.cell_ghost[c];
-        }
-      }
-      if (p.input.num_cells() > 0)
-        own->push_back(std::move(p));
+      own = arrays->pieces();
     } catch (const std::exception &e) {
       problem = e.what();
     }
   }
   // A rank's own problem is every rank's (with its number), before any join.
-  agree_on_failure(problem.empty() ? problem : "rank " + std::to_string(rank) + ": " + problem,
-                   comm);
+  const std::string rank = std::to_string(arrays->rank);
+  agree_on_failure(problem.empty() ? problem : "rank " + rank + ": " + problem, comm);
   const int t = thread_count(threads);
   const std::string where = "the ranks' arrays";
-  std::vector<FilePiece> copy = *own;
   py::gil_scoped_release release;
   return collective(comm, [&] {
     return joined_piece(
-        std::move(copy), "", where, t, comm,
+        std::move(own), "", where, t, comm,
         [&] {
           std::string why;
           MeshInput whole;
           try {
-            whole = join_pieces_everywhere(*own, where, t, comm);
+            whole = join_pieces_everywhere(arrays->pieces(), where, t, comm);
           } catch (const std::exception &e) {
             why = e.what();
           }
           agree_on_failure(why, comm);
           return whole;
         },
-        [own, where, t, comm] { return join_pieces_on_root(*own, where, t, comm); });
+        [arrays, where, t, comm] { return join_pieces_on_root(arrays->pieces(), where, t, comm); });
   });
 #else
   (void)points, (void)blocks, (void)types, (void)values, (void)field_name, (void)float32_points,

@@ -176,7 +176,9 @@ def piece_from_arrays(points, cells, values, comm, global_ids=None, ghost_cells=
     A rank's bad arrays are raised as HoctError on every rank ("rank r: ..."). Where the ranks
     cannot be sure to join the pieces alone, every rank gets every piece and joins the whole
     (`piece.whole_on_every_rank` says why); a mesh that does not join is raised on every rank.
-    The piece keeps a copy of this rank's arrays as given, for a report on the whole mesh."""
+    The piece holds this rank's arrays as given (references, not a copy: do not change them
+    while it lives), to make this rank's piece again where rank 0 needs the whole mesh (a
+    report on it, a Reeb graph by the linear or refine method)."""
     import numpy as np
 
     what = "piece_from_arrays"

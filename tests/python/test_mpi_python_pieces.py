@@ -196,6 +196,14 @@ with tempdir() as d:
     same_tree("piece_from_arrays, linear, a plateau", 3, "arrays",
               {"files": files, "ids": False, "ghosts": False, "tree": {"method": "linear"}},
               want, cells)
+    # The linear method's Reeb graph is rank 0's from the whole mesh: the ranks make their pieces
+    # again from the arrays they were given (kept, not copied) and send them to rank 0.
+    pvtu_plate = write_consecutive(read_grid(plate), d, "plate_linear", 3)
+    files_plate = [os.path.join(d, f"plate_linear_{k}.vtu") for k in range(3)]
+    want_plate, cells_plate = cli_tree("plate linear", pvtu_plate, "--linear")
+    same_tree("piece_from_arrays, plate, linear (the whole on rank 0)", 3, "arrays",
+              {"files": files_plate, "ids": True, "ghosts": False, "tree": {"method": "linear"}},
+              want_plate, cells_plate)
     want, cells = cli_tree("refine", pvtu, "--refine", "2")
     same_tree("piece_from_arrays, refine 2, a plateau", 3, "arrays",
               {"files": files, "ids": False, "ghosts": False,
