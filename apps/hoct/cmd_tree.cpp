@@ -9,7 +9,6 @@
 #include "memory_guard.hpp"
 #include "output_paths.hpp"
 #include "pipeline/compute_tree.hpp"
-#include "pl/refinement.hpp"
 #include "tree_mpi.hpp"
 #include "tree_summary.hpp"
 #include "util/error.hpp"
@@ -72,17 +71,8 @@ void run_tree(const TreeOptions &o) {
                                   o.merge.tolerance(), o.threads, /*keep_input=*/o.linear);
   rq.read_seconds = lm.read_seconds;
   rq.build_seconds = lm.build_seconds;
-  if (rq.method == TreeMethod::Refine) {
-    const uint64_t budget = read_limits().max_memory_bytes;
-    const int64_t cells = lm.mesh.topology.num_cells();
-    const uint64_t need = refinement_memory_bytes(cells, rq.refine);
-    if (budget > 0 && need > budget)
-      throw Error(o.file + ": --refine " + std::to_string(rq.refine) + ": " +
-                  std::to_string(cells) + " cells of " + std::to_string(rq.refine) + " x " +
-                  std::to_string(rq.refine) + " sub-triangles need ~" + format_bytes(need) +
-                  ", limit " + format_bytes(budget) +
-                  " (lower K, or raise the limit with --max-memory)");
-  }
+  if (rq.method == TreeMethod::Refine)
+    check_refinement_memory(o.file, lm.mesh.topology.num_cells(), rq.refine);
   // Progress on stderr for large meshes (a phase can take seconds there).
   if (!o.quiet && lm.mesh.topology.num_cells() >= 200000)
     rq.progress = [](const std::string &phase, double s) {

@@ -1,5 +1,8 @@
 #include "memory_guard.hpp"
 
+#include "pl/refinement.hpp"
+#include "util/error.hpp"
+
 #include <string>
 
 namespace hoct::cli {
@@ -25,5 +28,16 @@ void add_max_memory_option(CLI::App &app) {
 }
 
 ReadLimits read_limits() { return read_limits_for(max_memory_text()); }
+
+void check_refinement_memory(const std::string &file, int64_t cells, int k,
+                             const std::string &whose) {
+  const uint64_t budget = read_limits().max_memory_bytes;
+  const uint64_t need = refinement_memory_bytes(cells, k);
+  if (budget > 0 && need > budget)
+    throw Error(file + ": --refine " + std::to_string(k) + ": " + std::to_string(cells) + " cells" +
+                whose + " of " + std::to_string(k) + " x " + std::to_string(k) +
+                " sub-triangles need ~" + format_bytes(need) + ", limit " + format_bytes(budget) +
+                " (lower K, or raise the limit with --max-memory)");
+}
 
 } // namespace hoct::cli

@@ -9,6 +9,7 @@
 #include "memory_guard.hpp"
 #include "mesh/duplicate_points.hpp"
 #include "mesh/gll_nodes.hpp"
+#include "mesh/mesh_partition.hpp"
 #include "tree_summary.hpp"
 #include "util/error.hpp"
 #include "util/parallel_for.hpp"
@@ -62,6 +63,23 @@ void run_tree_mpi(const DistributedTreeRun &run, TreeRequest rq) {
 
 namespace {
 
+// --refine K: a rank's share of `cells` (the cells of `input` over `shares` ranks), refined,
+// within the memory budget; refused on every rank if not (every rank's own check, agreed).
+void check_refinement_share(const std::string &file, const TreeRequest &rq, const MeshInput &input,
+                            int shares) {
+  if (rq.method != TreeMethod::Refine)
+    return;
+  std::string failure;
+  try {
+    const int64_t triangles = triangles_before(input, static_cast<int64_t>(input.num_cells()));
+    check_refinement_memory(file, (triangles + shares - 1) / shares, rq.refine,
+                            " (a rank's share)");
+  } catch (const std::exception &e) {
+    failure = e.what();
+  }
+  agree_on_failure(failure);
+}
+
 void run_ranks(const DistributedTreeRun &run, TreeRequest rq, bool root, bool &collectives_done) {
   Stopwatch total;
   // One thread per rank unless asked: the ranks share the machine's cores.
@@ -87,6 +105,7 @@ void run_ranks(const DistributedTreeRun &run, TreeRequest rq, bool root, bool &c
         print_gll_notes(run.file, gll);
       const std::string field_name = read.input->field_name;
       const int64_t cells = read.input->whole_cells;
+      check_refinement_share(run.file, rq, read.input->piece.input, 1);
       rq.read_seconds = total.seconds();
       const DistributedOutcome d = distributed_tree(std::move(*read.input), rq, MPI_COMM_WORLD);
       collectives_done = true;
@@ -113,6 +132,9 @@ void run_ranks(const DistributedTreeRun &run, TreeRequest rq, bool root, bool &c
     failure = e.what();
   }
   agree_on_failure(failure);
+  int ranks = 1;
+  MPI_Comm_size(MPI_COMM_WORLD, &ranks);
+  check_refinement_share(run.file, rq, input, ranks);
   if (root)
     for (const std::string &w : input.warnings)
       std::fprintf(stderr, "hoct: warning: %s\n", w.c_str());

@@ -99,6 +99,12 @@ with tempdir() as d:
                 and "tree: the whole mesh on rank 0 (the arcs' paths" in p.stdout,
                 f"--vtp, {n} ranks: one process's VTP and JSON, from the whole on rank 0 "
                 f"({p.returncode}):\n{p.stdout[-800:]}{p.stderr[-800:]}")
+    # --refine past the memory budget: refused on every rank before refining, once, no output.
+    big = os.path.join(d, "big_refine.json")
+    p = mpi(2, "tree", path, "--refine", "1000", "--max-memory", "1G", "--json", big)
+    r.check(p.returncode != 0 and p.stderr.count("hoct: error:") == 1
+            and "(a rank's share) of 1000 x 1000 sub-triangles need" in p.stderr
+            and not os.path.exists(big), f"--refine over budget ({p.returncode}):\n{p.stderr[-800:]}")
     for flags, words in [(["--linear"], "linear contour tree"), (["--refine", "2"], "refine k=2 contour tree")]:
         p = mpi(2, "tree", path, *flags)
         r.check(p.returncode == 0 and f"{words} over 2 MPI ranks" in p.stdout
