@@ -374,6 +374,14 @@ DistributedOutcome distributed_tree_on(RankInput in, const MeshInput *whole, con
   // Reeb graph, the linear method's Bezier or serendipity cells (whose PL mesh has points of its
   // own) and the refine method's mesh the pieces did not check (its PL vertices are counted with
   // the whole's Euler characteristic from their check).
+  // Rank 0's tree of the whole mesh, as one process computes it (the mesh checked already, or
+  // forced past).
+  auto tree_of_whole = [&](const MeshInput &all) {
+    MeshBuildOptions bo;
+    bo.throw_on_error = false;
+    bo.threads = threads;
+    return compute_tree(build_mesh(all, bo), rq, &all);
+  };
   std::string whole_reason;
   if (rq.arcs != ArcGeometry::None) {
     whole_reason = "the arcs' paths on the surface search the whole graph";
@@ -399,11 +407,7 @@ DistributedOutcome distributed_tree_on(RankInput in, const MeshInput *whole, con
     }
     if (read)
       loaded = in.read_whole();
-    const MeshInput &all = whole ? *whole : loaded;
-    MeshBuildOptions bo;
-    bo.throw_on_error = false; // checked already (or forced past)
-    bo.threads = threads;
-    d.outcome = compute_tree(build_mesh(all, bo), rq, &all);
+    d.outcome = tree_of_whole(whole ? *whole : loaded);
     return d;
   }
 
@@ -525,11 +529,7 @@ DistributedOutcome distributed_tree_on(RankInput in, const MeshInput *whole, con
     }
     if (!whole)
       loaded = in.read_whole();
-    const MeshInput &all = whole ? *whole : loaded;
-    MeshBuildOptions bo;
-    bo.throw_on_error = false; // checked already (or forced past)
-    bo.threads = threads;
-    d.outcome = compute_tree(build_mesh(all, bo), rq, &all);
+    d.outcome = tree_of_whole(whole ? *whole : loaded);
     return d;
   }
   time.tree = clock.seconds() - tree_start + (me.piece_seconds - build_seconds);

@@ -16,6 +16,7 @@
 #include "pl/refinement.hpp"
 
 #include "test_pieces.hpp"
+#include "test_same_tree.hpp"
 
 #include <gtest/gtest.h>
 
@@ -67,24 +68,10 @@ TreeResult refined_tree_by_pieces(const MeshInput &whole, int pieces, int k,
       whole_pl_counts(counts[0], counts[1], counts[2], k, euler_characteristic), reference);
 }
 
+// Nodes, arcs, pairs, the method and the PL mesh's counts.
 void expect_same_pl_tree(const TreeResult &a, const TreeResult &b, const std::string &what) {
   EXPECT_EQ(a.method, b.method) << what;
-  ASSERT_EQ(a.nodes.size(), b.nodes.size()) << what;
-  for (std::size_t i = 0; i < a.nodes.size(); ++i) {
-    const TreeNode &x = a.nodes[i], &y = b.nodes[i];
-    EXPECT_EQ(x.type, y.type) << what << " node " << i;
-    EXPECT_EQ(x.value, y.value) << what << " node " << i;
-    EXPECT_EQ(x.cell, y.cell) << what << " node " << i;
-    EXPECT_EQ(x.uv, y.uv) << what << " node " << i;
-    EXPECT_EQ(x.position, y.position) << what << " node " << i;
-    EXPECT_EQ(x.location, y.location) << what << " node " << i;
-  }
-  EXPECT_EQ(a.arcs, b.arcs) << what;
-  ASSERT_EQ(a.pairs.size(), b.pairs.size()) << what;
-  for (std::size_t i = 0; i < a.pairs.size(); ++i) {
-    EXPECT_EQ(a.pairs[i].birth, b.pairs[i].birth) << what;
-    EXPECT_EQ(a.pairs[i].death, b.pairs[i].death) << what;
-  }
+  testing::expect_same_graph(a, b, what);
   ASSERT_TRUE(a.stats.pl && b.stats.pl) << what;
   EXPECT_EQ(a.stats.pl->vertices, b.stats.pl->vertices) << what;
   EXPECT_EQ(a.stats.pl->triangles, b.stats.pl->triangles) << what;
@@ -126,41 +113,38 @@ void check_refined(const MeshInput &whole, const std::string &name) {
     }
 }
 
-TEST(PlPieceTrees, TheWholeMeshsRefinedTreeForAnyNumberOfPieces) {
+// The datasets both methods are checked on (`scale`: the cells of the triangle meshes).
+std::vector<std::pair<std::string, MeshInput>> datasets(int scale) {
+  std::vector<std::pair<std::string, MeshInput>> out;
   DatasetOptions o;
-  o.cells = 1000;
-  check_refined(generate_dataset("random", o), "cubic random");
-  check_refined(generate_dataset("sphere", o), "sphere");
-  o.plateau = 30; // ties among vertices, edge points and the triangles' own points
-  check_refined(generate_dataset("random", o), "random with a plateau");
+  o.cells = scale;
+  out.emplace_back("cubic random", generate_dataset("random", o));
+  out.emplace_back("sphere", generate_dataset("sphere", o));
+  o.plateau = 30; // ties: ordered by the whole's keys in every piece
+  out.emplace_back("random with a plateau", generate_dataset("random", o));
   DatasetOptions q;
-  q.cells = 400;
+  q.cells = scale / 3;
   q.quadrilaterals = true;
-  check_refined(generate_dataset("random", q), "random quadrilaterals");
+  out.emplace_back("random quadrilaterals", generate_dataset("random", q));
   DatasetOptions d;
-  d.cells = 600;
+  d.cells = scale / 2;
   d.degree = 5;
   d.offset = 1e7;
-  check_refined(generate_dataset("random", d), "random quintic at 1e7");
+  out.emplace_back("random quintic at 1e7", generate_dataset("random", d));
+  return out;
+}
+
+TEST(PlPieceTrees, TheWholeMeshsRefinedTreeForAnyNumberOfPieces) {
+  for (const auto &[name, whole] : datasets(1000))
+    check_refined(whole, name);
 }
 
 TEST(PlPieceTrees, TheWholeMeshsLinearTreeForAnyNumberOfPieces) {
+  for (const auto &[name, whole] : datasets(3000))
+    check_all_piece_counts(whole, name);
   DatasetOptions o;
   o.cells = 3000;
-  check_all_piece_counts(generate_dataset("random", o), "cubic random");
   check_all_piece_counts(generate_dataset("gauss", o), "gauss");
-  check_all_piece_counts(generate_dataset("sphere", o), "sphere");
-  o.plateau = 30; // ties: ordered by the whole's point ids in every piece
-  check_all_piece_counts(generate_dataset("random", o), "random with a plateau");
-  DatasetOptions q;
-  q.cells = 800;
-  q.quadrilaterals = true;
-  check_all_piece_counts(generate_dataset("random", q), "random quadrilaterals");
-  DatasetOptions d;
-  d.cells = 1500;
-  d.degree = 5;
-  d.offset = 1e7;
-  check_all_piece_counts(generate_dataset("random", d), "random quintic at 1e7");
 }
 
 // Two linear triangles sharing the edge 1-2, and a point no cell uses.
