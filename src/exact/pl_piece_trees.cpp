@@ -12,26 +12,30 @@
 namespace hoct {
 namespace {
 
-// The kept trees of a piece's PL mesh over its vertices `point` (indices into pl), which
-// `less` orders as the whole orders them; keep[i]: vertex point[i] is kept whatever it is;
-// node(p, kept) makes the kept node of pl point p.
+// The kept trees of a piece's PL mesh over its vertices `point` (indices into pl; empty: every
+// point of pl, `local` then empty too; else local[p] is point p's index in it), which `less`
+// orders as the whole orders them; keep[i]: vertex i is kept whatever it is; node(p) makes the
+// kept node of pl point p.
 template <class Less, class Node>
 PieceTrees kept_trees(const PlMesh &pl, const std::vector<int64_t> &point,
                       const std::vector<int64_t> &local, const std::vector<uint8_t> &keep,
                       int piece, int threads, Less less, Node node) {
-  const int64_t n = static_cast<int64_t>(point.size());
+  const bool all = point.empty();
+  auto at = [&](int64_t i) { return all ? i : point[i]; };
+  auto index = [&](int64_t p) { return all ? p : local[p]; };
+  const int64_t n = all ? pl.num_vertices() : static_cast<int64_t>(point.size());
   std::vector<double> values(static_cast<std::size_t>(n));
   for (int64_t i = 0; i < n; ++i)
-    values[i] = pl.values[point[i]];
+    values[i] = pl.values[at(i)];
   std::vector<int64_t> order(static_cast<std::size_t>(n));
   std::iota(order.begin(), order.end(), int64_t{0});
   parallel_sort(order.begin(), order.end(), threads, [&](int64_t x, int64_t y) {
-    return values[x] < values[y] || (values[x] == values[y] && less(point[x], point[y]));
+    return values[x] < values[y] || (values[x] == values[y] && less(at(x), at(y)));
   });
   std::vector<GraphEdge> edges(pl.triangles.size() * 3);
   for (std::size_t t = 0; t < pl.triangles.size(); ++t)
     for (int k = 0; k < 3; ++k)
-      edges[3 * t + k] = {local[pl.triangles[t][k]], local[pl.triangles[t][(k + 1) % 3]]};
+      edges[3 * t + k] = {index(pl.triangles[t][k]), index(pl.triangles[t][(k + 1) % 3])};
   const KeptMergeTrees kt = sweep_merge_trees(values, {edges, {}, {}}, keep, threads, order);
   PieceTrees trees;
   trees.first_piece = trees.last_piece = piece;
@@ -40,7 +44,7 @@ PieceTrees kept_trees(const PlMesh &pl, const std::vector<int64_t> &point,
   trees.nodes.resize(kt.nodes.size());
   for (std::size_t k = 0; k < kt.nodes.size(); ++k) {
     PieceNode &m = trees.nodes[k];
-    m = node(point[kt.nodes[k]]);
+    m = node(at(kt.nodes[k]));
     m.value = values[kt.nodes[k]];
     m.shared = !within(m.span, piece, piece);
   }
@@ -128,15 +132,11 @@ PlPieceTrees refined_piece_trees(const Mesh &mesh, const PiecePlace &place, int 
     triangle[p] = c;
   }
   out.cell_points = np - interior;
-  std::vector<int64_t> all(static_cast<std::size_t>(np)), local(all.size());
-  std::iota(all.begin(), all.end(), int64_t{0});
-  std::iota(local.begin(), local.end(), int64_t{0});
-  std::vector<uint8_t> keep(all.size());
+  std::vector<uint8_t> keep(static_cast<std::size_t>(np));
   for (int64_t p = 0; p < np; ++p)
     keep[p] = augmented || !within(span[p], place.piece, place.piece);
   out.trees = kept_trees(
-      pl, all, local, keep, place.piece, threads,
-      [&](int64_t p, int64_t q) { return key[p] < key[q]; },
+      pl, {}, {}, keep, place.piece, threads, [&](int64_t p, int64_t q) { return key[p] < key[q]; },
       [&](int64_t p) {
         PieceNode m;
         m.key = key[p];
