@@ -704,14 +704,17 @@ void pl_section(const Settings &s) {
                 "repository from topology-tool-kit/ttk; TTK = triangulation preconditioning + "
                 "order array + FTMTree::build, reading excluded): cold, a fresh driver process "
                 "per run (`--runs 1`), alternated with hoct's cold runs; warm, the driver's "
-                "median of %d runs in one process. Each ratio compares like with like.",
+                "median of %d runs in one process. Each ratio compares like with like. Peak: "
+                "the maximum resident set of a cold process (hoct: reading the .vtu, the mesh "
+                "checks, the split into triangles, the tree and its JSON; TTK: reading the "
+                "binary mesh, the triangulation and the tree).",
                 s.ttk_ftm.c_str(), s.runs);
   std::printf("\n\n| vertices | triangles | graph (s) | sweeps (s) | merge (s) | hoct warm (s) | "
-              "hoct cold (s) |%s\n|---|---|---|---|---|---|---|%s\n",
-              ttk ? " TTK cold (s) | TTK warm (s) | hoct / TTK, cold | hoct / TTK, warm | same "
-                    "critical points |"
+              "hoct cold (s) | hoct peak (MiB) |%s\n|---|---|---|---|---|---|---|---|%s\n",
+              ttk ? " TTK cold (s) | TTK warm (s) | hoct / TTK, cold | hoct / TTK, warm | TTK "
+                    "peak (MiB) | hoct / TTK, peak | same critical points |"
                   : "",
-              ttk ? "---|---|---|---|---|" : "");
+              ttk ? "---|---|---|---|---|---|---|" : "");
   for (long long cells : s.quick ? std::vector<long long>{500000}
                                  : std::vector<long long>{500000, 2000000, 8000000}) {
     DatasetOptions o;
@@ -728,7 +731,7 @@ void pl_section(const Settings &s) {
     const std::string bin = scratch.file("pl.bin");
     if (ttk)
       write_pl_binary(bin, pl);
-    std::vector<double> g, sw, m, total, cold, ttk_cold, cold_ratio;
+    std::vector<double> g, sw, m, total, cold, ttk_cold, cold_ratio, peak, ttk_peak;
     bool same = true;
     TreeResult r;
     for (int i = 0; i < s.runs; ++i) {
@@ -738,18 +741,21 @@ void pl_section(const Settings &s) {
       g.push_back(r.stats.time.graph.value_or(0));
       sw.push_back(r.stats.time.sweeps.value_or(0));
       m.push_back(r.stats.time.merge.value_or(0) + r.stats.time.pairs.value_or(0));
-      run_process({executable_dir() + "/hoct", "tree", vtu, "--linear", "--json", json, "--threads",
-                   "1", "-q"});
+      peak.push_back(run_process({executable_dir() + "/hoct", "tree", vtu, "--linear", "--json",
+                                  json, "--threads", "1", "-q"})
+                         .max_rss_kib /
+                     1024.0);
       cold.push_back(json_stat(json, "time_tree_s"));
       if (ttk) {
         const std::string out = capture(s.ttk_ftm + " " + bin + " --runs 1 --threads 1");
         ttk_cold.push_back(field(out, "median", "total"));
+        ttk_peak.push_back(field(out, "memory:", "peak_rss_mib"));
         cold_ratio.push_back(cold.back() / ttk_cold.back());
       }
     }
-    std::printf("| %lld | %zu | %.3f | %.3f | %.3f | %.3f | %.3f |",
+    std::printf("| %lld | %zu | %.3f | %.3f | %.3f | %.3f | %.3f | %.0f |",
                 static_cast<long long>(pl.num_vertices()), pl.triangles.size(), median(g),
-                median(sw), median(m), median(total), median(cold));
+                median(sw), median(m), median(total), median(cold), median(peak));
     if (ttk) {
       const std::string out =
           capture(s.ttk_ftm + " " + bin + " --runs " + std::to_string(s.runs) + " --threads 1");
@@ -760,8 +766,9 @@ void pl_section(const Settings &s) {
       same = field(out, "tree:", "minima") == counts[0] &&
              field(out, "tree:", "maxima") == counts[1] &&
              field(out, "tree:", "saddles") == counts[2];
-      std::printf(" %.3f | %.3f | %.2f | %.2f | %s |", median(ttk_cold), warm,
-                  median(std::move(cold_ratio)), median(total) / warm, same ? "yes" : "NO");
+      std::printf(" %.3f | %.3f | %.2f | %.2f | %.0f | %.2f | %s |", median(ttk_cold), warm,
+                  median(std::move(cold_ratio)), median(total) / warm, median(ttk_peak),
+                  median(peak) / median(ttk_peak), same ? "yes" : "NO");
     }
     std::printf("\n");
     std::fflush(stdout);
@@ -790,7 +797,8 @@ int main(int argc, char **argv) {
                  "total=S' and 'graph: ... loops=N') to time side by side in the reeb section");
   app.add_option("--ttk-ftm", s.ttk_ftm,
                  "An external TTK FTM driver (reads the binary PL mesh, prints 'median ... "
-                 "ftm=S total=S' and 'tree: minima=N maxima=N saddles=N') to time side by side");
+                 "ftm=S total=S', 'tree: minima=N maxima=N saddles=N' and 'memory: "
+                 "peak_rss_mib=M') to time side by side");
   CLI11_PARSE(app, argc, argv);
   if (s.quick) {
     s.runs = std::min(s.runs, 3);

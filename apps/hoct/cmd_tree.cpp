@@ -67,8 +67,8 @@ void run_tree(const TreeOptions &o) {
     return;
   }
   // Only --linear reads the input's nodes again: elsewhere the mesh holds all the tree needs.
-  const LoadedMesh lm = load_mesh(o.file, o.field.selection(), /*strict=*/false,
-                                  o.merge.tolerance(), o.threads, /*keep_input=*/o.linear);
+  LoadedMesh lm = load_mesh(o.file, o.field.selection(), /*strict=*/false, o.merge.tolerance(),
+                            o.threads, /*keep_input=*/o.linear);
   rq.read_seconds = lm.read_seconds;
   rq.build_seconds = lm.build_seconds;
   if (rq.method == TreeMethod::Refine)
@@ -78,7 +78,10 @@ void run_tree(const TreeOptions &o) {
     rq.progress = [](const std::string &phase, double s) {
       std::fprintf(stderr, "hoct: %s done (%.2f s)\n", phase.c_str(), s);
     };
-  const TreeOutcome out = compute_tree(lm.mesh, rq, &lm.input);
+  const std::string mesh_line = describe_mesh(o.file, lm.mesh);
+  // The linear method releases the checked mesh before its tree, and the input once split.
+  const TreeOutcome out = o.linear ? compute_tree(std::move(lm.mesh), rq, std::move(lm.input))
+                                   : compute_tree(lm.mesh, rq, &lm.input);
   for (const auto &why : out.warnings)
     std::fprintf(stderr, "hoct: warning: --force: %s\n", why.c_str());
   const TreeResult &tree = out.reported();
@@ -94,7 +97,7 @@ void run_tree(const TreeOptions &o) {
                        (tree.reeb_graph ? " Reeb graph, " : " contour tree, ") +
                        std::to_string(tree.nodes.size()) + " nodes");
   if (!o.quiet)
-    print_tree_summary(o.file, lm.mesh, tree, total.seconds());
+    print_tree_summary(mesh_line, tree, total.seconds());
   if (o.branches)
     print_branches(tree);
 }

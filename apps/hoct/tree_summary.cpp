@@ -12,21 +12,20 @@ std::string graph_kind(const TreeResult &tree) {
   return "Reeb graph (" + std::to_string(tree.loops) + (tree.loops == 1 ? " loop)" : " loops)");
 }
 
-void print_tree_summary(const std::string &file, const Mesh &mesh, const TreeResult &tree,
-                        double total_seconds) {
+std::string describe_mesh(const std::string &file, const Mesh &mesh) {
   const std::string detail = mesh.field_detail.empty() ? "" : " " + mesh.field_detail;
-  const std::string what = graph_kind(tree);
-  if (mesh.origins.identity())
-    std::printf("%s: field '%s'%s, %lld cells (max degree %d), %s %s\n", file.c_str(),
-                mesh.field_name.c_str(), detail.c_str(),
-                static_cast<long long>(mesh.topology.num_cells()), mesh.field.max_degree(),
-                tree.method.c_str(), what.c_str());
-  else
-    std::printf("%s: field '%s'%s, %lld cells (%s; as %lld triangles, max degree %d), %s %s\n",
-                file.c_str(), mesh.field_name.c_str(), detail.c_str(),
-                static_cast<long long>(mesh.num_input_cells()), mesh.describe_input_cells().c_str(),
-                static_cast<long long>(mesh.topology.num_cells()), mesh.field.max_degree(),
-                tree.method.c_str(), what.c_str());
+  const std::string cells = std::to_string(mesh.topology.num_cells());
+  const std::string degree = "max degree " + std::to_string(mesh.field.max_degree());
+  return file + ": field '" + mesh.field_name + "'" + detail + ", " +
+         (mesh.origins.identity()
+              ? cells + " cells (" + degree + ")"
+              : std::to_string(mesh.num_input_cells()) + " cells (" + mesh.describe_input_cells() +
+                    "; as " + cells + " triangles, " + degree + ")");
+}
+
+void print_tree_summary(const std::string &mesh_line, const TreeResult &tree,
+                        double total_seconds) {
+  std::printf("%s, %s %s\n", mesh_line.c_str(), tree.method.c_str(), graph_kind(tree).c_str());
   print_tree_body(tree, total_seconds);
 }
 

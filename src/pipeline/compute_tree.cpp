@@ -26,15 +26,37 @@ void check_request(const TreeRequest &rq, const MeshInput *input) {
     throw Error("threads must be 0 (all cores) or more, not " + std::to_string(rq.threads));
 }
 
+// An augmented tree's arcs join consecutive nodes of a contour-tree arc, which may lie
+// anywhere on its band: a path between them would wander over it. They are drawn straight.
+bool wants_graph(const TreeRequest &rq) { return rq.arcs != ArcGeometry::None && !rq.augmented; }
+
+// The PL tree of the input's own nodes (the linear method). With `release` (the input, owned),
+// the input is released once split.
+TreeResult linear_tree(const MeshInput &input, const TreeRequest &rq, bool reeb, int threads,
+                       MeshInput *release = nullptr) {
+  Stopwatch clock;
+  const PlMesh pl = split_lagrange_cells(input);
+  if (release)
+    *release = MeshInput{};
+  const double pl_seconds = clock.lap();
+  if (rq.progress)
+    rq.progress("piecewise-linear mesh", pl_seconds);
+  TreeResult tree =
+      pl_contour_tree(pl, rq.augmented, method_name(rq), wants_graph(rq), threads, reeb);
+  tree.stats.time.pl_mesh = pl_seconds;
+  tree.stats.time.tree = clock.seconds() + pl_seconds;
+  return tree;
+}
+
 // The tree by the requested method, its phases timed.
 TreeResult method_tree(const Mesh &mesh, const TreeRequest &rq, const MeshInput *input,
                        int threads) {
-  // An augmented tree's arcs join consecutive nodes of a contour-tree arc, which may lie
-  // anywhere on its band: a path between them would wander over it. They are drawn straight.
-  const bool graph = rq.arcs != ArcGeometry::None && !rq.augmented;
+  const bool graph = wants_graph(rq);
   // Not a disk or a sphere: the Reeb graph, from the surface cut open into disks (the PL mesh
   // of the linear and refine methods covers the same surface).
   const bool reeb = !domain_shape(mesh.topology).empty();
+  if (rq.method == TreeMethod::Linear)
+    return linear_tree(*input, rq, reeb, threads);
   Stopwatch clock;
   if (rq.method == TreeMethod::Exact) {
     ExactTreeOptions eo;
@@ -62,8 +84,7 @@ TreeResult method_tree(const Mesh &mesh, const TreeRequest &rq, const MeshInput 
     tree.stats.time.tree = cut_seconds + clock.seconds();
     return tree;
   }
-  const PlMesh pl =
-      rq.method == TreeMethod::Linear ? split_lagrange_cells(*input) : refine(mesh, rq.refine);
+  const PlMesh pl = refine(mesh, rq.refine);
   const double pl_seconds = clock.lap();
   if (rq.progress)
     rq.progress("piecewise-linear mesh", pl_seconds);
@@ -100,11 +121,10 @@ std::string method_name(const TreeRequest &rq) {
   return "?";
 }
 
-TreeOutcome compute_tree(const Mesh &mesh, const TreeRequest &rq, const MeshInput *input) {
-  check_request(rq, input);
-  std::vector<std::string> warnings = check_domain(mesh, rq.force);
-  const int threads = thread_count(rq.threads);
-  TreeResult tree = method_tree(mesh, rq, input, threads);
+namespace {
+
+// What the rest takes from the mesh (the origins by reference: the mesh must outlive their use).
+TreeContext context_of(const Mesh &mesh, const TreeRequest &rq, std::vector<std::string> warnings) {
   TreeContext context;
   context.warnings = std::move(warnings);
   context.fingerprint = mesh.fingerprint;
@@ -115,6 +135,30 @@ TreeOutcome compute_tree(const Mesh &mesh, const TreeRequest &rq, const MeshInpu
   context.precision = mesh.field.precision();
   if (rq.method != TreeMethod::Linear)
     context.origins = &mesh.origins;
+  return context;
+}
+
+} // namespace
+
+TreeOutcome compute_tree(const Mesh &mesh, const TreeRequest &rq, const MeshInput *input) {
+  check_request(rq, input);
+  std::vector<std::string> warnings = check_domain(mesh, rq.force);
+  const int threads = thread_count(rq.threads);
+  TreeResult tree = method_tree(mesh, rq, input, threads);
+  return finish_tree(std::move(tree), rq, context_of(mesh, rq, std::move(warnings)));
+}
+
+TreeOutcome compute_tree(Mesh &&mesh, const TreeRequest &rq, MeshInput &&input) {
+  if (rq.method != TreeMethod::Linear) {
+    const Mesh owned = std::move(mesh);
+    const MeshInput nodes = std::move(input);
+    return compute_tree(owned, rq, &nodes);
+  }
+  check_request(rq, &input);
+  TreeContext context = context_of(mesh, rq, check_domain(mesh, rq.force));
+  const bool reeb = !domain_shape(mesh.topology).empty();
+  mesh = Mesh{};
+  TreeResult tree = linear_tree(input, rq, reeb, thread_count(rq.threads), &input);
   return finish_tree(std::move(tree), rq, context);
 }
 

@@ -14,6 +14,13 @@ namespace hoct {
 TreeOutcome compute_tree(const Mesh &mesh, const TreeRequest &request,
                          const MeshInput *input = nullptr);
 
+// The same, consuming the mesh and the input: by TreeMethod::Linear, whose tree needs the input's
+// nodes and not the checked mesh, the mesh is released once checked and the input once split into
+// linear triangles (the mesh's topology, maps and Bernstein field are most of the memory; the
+// peak is then the larger of the mesh build's and the PL tree's, not their sum). Other methods
+// release them at the end.
+TreeOutcome compute_tree(Mesh &&mesh, const TreeRequest &request, MeshInput &&input);
+
 // What the rest of the pipeline takes from the mesh a tree was computed on (a whole mesh, or
 // the pieces of a distributed one: pipeline/distributed_tree).
 struct TreeContext {
