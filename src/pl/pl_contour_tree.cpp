@@ -55,7 +55,7 @@ TreeResult pl_contour_tree(const PlMesh &m, bool augmented, const std::string &m
           n.location = classify_location(n.uv[0], n.uv[1]);
         }
       },
-      &pairs_seconds);
+      &pairs_seconds, sweep_threads);
   offset_values(r, m.reference);
   // The persistence pairs, and the rest of the result (its nodes, placed; the graph for the
   // arcs' paths) as output.

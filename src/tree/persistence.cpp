@@ -1,6 +1,7 @@
 #include "tree/persistence.hpp"
 
 #include "tree/union_find.hpp"
+#include "util/parallel_for.hpp"
 
 #include <algorithm>
 #include <array>
@@ -135,37 +136,43 @@ void global_pairs(const std::vector<int64_t> &global_min, const std::vector<int6
 } // namespace
 
 PersistenceDiagram persistence_diagram_ascending(std::span<const double> values,
-                                                 std::span<const std::array<int64_t, 2>> edges) {
+                                                 std::span<const std::array<int64_t, 2>> edges,
+                                                 int threads) {
   const int64_t n = static_cast<int64_t>(values.size());
-  // Lower neighbours per node (for the join sweep) and upper ones (for the split sweep).
-  std::vector<int64_t> lo_offset(n + 1, 0), hi_offset(n + 1, 0);
-  for (const auto &e : edges)
-    if (e[0] != e[1]) {
-      ++lo_offset[std::max(e[0], e[1]) + 1];
-      ++hi_offset[std::min(e[0], e[1]) + 1];
-    }
-  for (int64_t v = 0; v < n; ++v) {
-    lo_offset[v + 1] += lo_offset[v];
-    hi_offset[v + 1] += hi_offset[v];
-  }
-  std::vector<int64_t> lower(static_cast<std::size_t>(lo_offset[n])),
-      upper(static_cast<std::size_t>(hi_offset[n]));
-  {
-    std::vector<int64_t> lo_fill(lo_offset.begin(), lo_offset.end() - 1),
-        hi_fill(hi_offset.begin(), hi_offset.end() - 1);
+  // The join sweep's lower neighbours per node, or the split sweep's upper ones (a CSR).
+  auto neighbours = [&](bool below, std::vector<int64_t> &offset, std::vector<int64_t> &adj) {
+    offset.assign(static_cast<std::size_t>(n + 1), 0);
+    for (const auto &e : edges)
+      if (e[0] != e[1])
+        ++offset[(below ? std::max(e[0], e[1]) : std::min(e[0], e[1])) + 1];
+    for (int64_t v = 0; v < n; ++v)
+      offset[v + 1] += offset[v];
+    adj.resize(static_cast<std::size_t>(offset[n]));
+    std::vector<int64_t> fill(offset.begin(), offset.end() - 1);
     for (const auto &e : edges)
       if (e[0] != e[1]) {
         const int64_t a = std::min(e[0], e[1]), b = std::max(e[0], e[1]);
-        lower[lo_fill[b]++] = a;
-        upper[hi_fill[a]++] = b;
+        if (below)
+          adj[fill[b]++] = a;
+        else
+          adj[fill[a]++] = b;
       }
-  }
+  };
   PersistenceDiagram d;
   std::vector<int64_t> global_min, global_max;
-  elder_sweep_sorted(values, lo_offset, lower, true, PersistencePair::Kind::Join, d.pairs,
-                     global_min);
-  elder_sweep_sorted(values, hi_offset, upper, false, PersistencePair::Kind::Split, d.pairs,
-                     global_max);
+  // The join pairs, then the split pairs: two independent sweeps, each with its neighbours.
+  std::vector<PersistencePair> split;
+  parallel_chunks(2, 2, threads, [&](int64_t sweep, int64_t, int64_t, int) {
+    std::vector<int64_t> offset, adj;
+    neighbours(sweep == 0, offset, adj);
+    if (sweep == 0)
+      elder_sweep_sorted(values, offset, adj, true, PersistencePair::Kind::Join, d.pairs,
+                         global_min);
+    else
+      elder_sweep_sorted(values, offset, adj, false, PersistencePair::Kind::Split, split,
+                         global_max);
+  });
+  d.pairs.insert(d.pairs.end(), split.begin(), split.end());
   global_pairs(
       global_min, global_max, [&](int64_t v) { return values[v]; }, d.pairs);
   return d;

@@ -36,9 +36,11 @@ PersistenceDiagram persistence_diagram(const ScalarGraph &graph);
 // The same diagram (the same pairs in the same order) for a graph whose nodes 0 .. n-1 are
 // already in ascending total order, as a contour tree's or Reeb graph's are: `edges` as (lower,
 // upper) node pairs, in any order, parallel ones allowed. No sort: the lower and upper
-// neighbours are bucketed by node.
+// neighbours are bucketed by node. With `threads` >= 2 the join and the split sweep run on a
+// thread each (the same pairs, in the same order).
 PersistenceDiagram persistence_diagram_ascending(std::span<const double> values,
-                                                 std::span<const std::array<int64_t, 2>> edges);
+                                                 std::span<const std::array<int64_t, 2>> edges,
+                                                 int threads = 1);
 
 // The (birth value, death value) points of the pairs of one kind.
 std::vector<std::array<double, 2>> pair_points(const std::vector<PersistencePair> &pairs,

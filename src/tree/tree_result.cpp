@@ -33,11 +33,11 @@ std::array<int64_t, 4> TreeResult::type_counts() const {
   return c;
 }
 
-std::vector<PersistencePair> tree_pairs(const ContourTree &tree) {
+std::vector<PersistencePair> tree_pairs(const ContourTree &tree, int threads) {
   // Nodes ascending in the total order (as every tree and graph here has them): no sort.
   if (std::is_sorted(tree.values.begin(), tree.values.end())) {
     std::vector<PersistencePair> pairs =
-        persistence_diagram_ascending(tree.values, tree.arcs).pairs;
+        persistence_diagram_ascending(tree.values, tree.arcs, threads).pairs;
     for (const PersistencePair &p : loop_pairs(tree))
       pairs.push_back(p);
     return pairs;

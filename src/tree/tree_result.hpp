@@ -103,16 +103,17 @@ struct TreeResult {
   std::array<int64_t, 4> type_counts() const;
 };
 
-// Persistence pairs of a (reduced or augmented) contour tree, with node indices of the tree.
-std::vector<PersistencePair> tree_pairs(const ContourTree &tree);
+// Persistence pairs of a (reduced or augmented) contour tree, with node indices of the tree
+// (the join and split sweeps on a thread each with `threads` >= 2; the same pairs).
+std::vector<PersistencePair> tree_pairs(const ContourTree &tree, int threads = 1);
 
 // The result for contour tree `ct` of a graph, computed by `method`: each node's type, value,
 // degrees and graph node (its id in `ct`), the arcs and the persistence pairs; `place(node)`
 // then says where each node lies (position, cell, uv, location, fallback). With
-// `pairs_seconds`, the time the persistence pairs took is stored there.
+// `pairs_seconds`, the time the persistence pairs took is stored there; `threads` for them.
 template <class Place>
 TreeResult tree_result_of(const ContourTree &ct, const std::string &method, bool augmented,
-                          Place &&place, double *pairs_seconds = nullptr) {
+                          Place &&place, double *pairs_seconds = nullptr, int threads = 1) {
   TreeResult r;
   r.method = method;
   r.augmented = augmented;
@@ -130,7 +131,7 @@ TreeResult tree_result_of(const ContourTree &ct, const std::string &method, bool
   }
   r.arcs = ct.arcs;
   const Stopwatch clock;
-  r.pairs = tree_pairs(ct);
+  r.pairs = tree_pairs(ct, threads);
   if (pairs_seconds)
     *pairs_seconds = clock.seconds();
   return r;

@@ -375,7 +375,7 @@ TEST(Persistence, BottleneckMatchesBruteForce) {
 
 // The sort-free diagram of a graph whose nodes are ascending (tree_pairs' path) gives the same
 // pairs, in the same order, as the general one: random multigraphs (parallel edges, several
-// components, ties in the values), random edge order.
+// components, ties in the values), random edge order; on one thread or two (a sweep each).
 TEST(Persistence, TheAscendingDiagramIsTheGeneralOne) {
   std::mt19937 rng(11);
   for (int trial = 0; trial < 300; ++trial) {
@@ -397,14 +397,16 @@ TEST(Persistence, TheAscendingDiagramIsTheGeneralOne) {
     for (const auto &e : edges)
       ge.push_back({e[0], e[1]});
     const auto general = persistence_diagram(ScalarGraph(values, ge)).pairs;
-    const auto sorted = persistence_diagram_ascending(values, edges).pairs;
-    ASSERT_EQ(general.size(), sorted.size()) << trial;
-    for (std::size_t i = 0; i < general.size(); ++i) {
-      EXPECT_EQ(general[i].kind, sorted[i].kind) << trial;
-      EXPECT_EQ(general[i].birth, sorted[i].birth) << trial;
-      EXPECT_EQ(general[i].death, sorted[i].death) << trial;
-      EXPECT_EQ(general[i].birth_value, sorted[i].birth_value) << trial;
-      EXPECT_EQ(general[i].death_value, sorted[i].death_value) << trial;
+    for (const int threads : {1, 2}) {
+      const auto sorted = persistence_diagram_ascending(values, edges, threads).pairs;
+      ASSERT_EQ(general.size(), sorted.size()) << trial;
+      for (std::size_t i = 0; i < general.size(); ++i) {
+        EXPECT_EQ(general[i].kind, sorted[i].kind) << trial << " threads " << threads;
+        EXPECT_EQ(general[i].birth, sorted[i].birth) << trial;
+        EXPECT_EQ(general[i].death, sorted[i].death) << trial;
+        EXPECT_EQ(general[i].birth_value, sorted[i].birth_value) << trial;
+        EXPECT_EQ(general[i].death_value, sorted[i].death_value) << trial;
+      }
     }
   }
 }
