@@ -4,6 +4,7 @@
 // force over random graphs), and two components give one graph each, by every method.
 #include "analysis/tree_check.hpp"
 #include "datasets/datasets.hpp"
+#include "io/tree_json.hpp"
 #include "mesh/cut_surface.hpp"
 #include "mesh/mesh.hpp"
 #include "mesh/topology.hpp"
@@ -328,6 +329,32 @@ TEST(ReebGraph, LoopPairsCountTheLoopsOfEveryBand) {
         ASSERT_EQ(counted, graph_loops(band)) << "trial " << trial << " band " << t << ".." << s;
       }
   }
+}
+
+// compute_tree consuming the mesh and the input (the CLI's --linear: the mesh released before the
+// PL tree, the input once split) gives the result of the call that keeps them, byte for byte,
+// on a disk, a sphere and an annulus (a Reeb graph), by the linear and the exact method.
+TEST(ReebGraph, ComputeTreeConsumingTheMeshGivesTheSameResult) {
+  std::vector<MeshInput> inputs = {generate_dataset("gauss", {}), generate_dataset("sphere", {}),
+                                   square_annulus(2, [](double x, double y) {
+                                     return std::sin(1.3 * x + 0.2) * std::cos(0.9 * y - 0.4);
+                                   })};
+  for (std::size_t k = 0; k < inputs.size(); ++k)
+    for (const TreeMethod method : {TreeMethod::Linear, TreeMethod::Exact}) {
+      TreeRequest rq;
+      rq.method = method;
+      rq.simplify = parse_threshold("1%");
+      const Mesh kept = build_mesh(inputs[k]);
+      const TreeOutcome want = compute_tree(kept, rq, &inputs[k]);
+      MeshInput input = inputs[k];
+      const TreeOutcome got = compute_tree(build_mesh(inputs[k]), rq, std::move(input));
+      EXPECT_EQ(tree_to_json(got.tree, false), tree_to_json(want.tree, false)) << k;
+      ASSERT_TRUE(got.simplified && want.simplified);
+      EXPECT_EQ(tree_to_json(*got.simplified, false), tree_to_json(*want.simplified, false)) << k;
+      EXPECT_EQ(got.tree.reeb_graph, k == 2) << k;
+      if (method == TreeMethod::Linear) // both released
+        EXPECT_TRUE(input.points.empty() && input.values.empty()) << k;
+    }
 }
 
 } // namespace
