@@ -20,6 +20,7 @@
 #include "distributed/distributed_tree.hpp"
 #include "distributed/mpi_session.hpp"
 #include "distributed/rank_join.hpp"
+#include "distributed/scatter_whole.hpp"
 
 #include <mpi.h>
 #endif
@@ -80,6 +81,18 @@ void check_refinement_share(const std::string &file, const TreeRequest &rq, cons
   agree_on_failure(failure);
 }
 
+// A file that is not partitioned, read whole (by rank 0): duplicates merged if asked, GLL nodes
+// resampled (their notes printed with `notes`), as one process reads it.
+MeshInput read_whole_file(const DistributedTreeRun &run, const ReadLimits &limits, bool notes) {
+  MeshInput input = read_mesh(run.file, run.field, limits);
+  if (run.merge_tolerance >= 0)
+    merge_duplicate_points(input, run.merge_tolerance, limits.threads);
+  const GllResampling g = resample_gll_cells(input);
+  if (notes)
+    print_gll_notes(run.file, g);
+  return input;
+}
+
 void run_ranks(const DistributedTreeRun &run, TreeRequest rq, bool root, bool &collectives_done) {
   Stopwatch total;
   // One thread per rank unless asked: the ranks share the machine's cores.
@@ -115,35 +128,36 @@ void run_ranks(const DistributedTreeRun &run, TreeRequest rq, bool root, bool &c
     }
     if (root && !run.quiet)
       std::fprintf(stderr,
-                   "hoct: note: every rank reads the whole of %s (%s: the ranks could not join "
-                   "its pieces alone)\n",
+                   "hoct: note: rank 0 reads the whole of %s and sends each rank its share (%s: "
+                   "the ranks could not join its pieces alone)\n",
                    run.file.c_str(), read.fallback.c_str());
   }
-  MeshInput input;
-  std::string failure; // every rank checks and reads alike: its errors are everyone's
-  try {
-    input = read_mesh(run.file, run.field, limits);
-    if (run.merge_tolerance >= 0)
-      merge_duplicate_points(input, run.merge_tolerance, limits.threads);
-    const GllResampling g = resample_gll_cells(input);
-    if (root)
-      print_gll_notes(run.file, g);
-  } catch (const std::exception &e) {
-    failure = e.what();
-  }
-  agree_on_failure(failure);
-  int ranks = 1;
-  MPI_Comm_size(MPI_COMM_WORLD, &ranks);
-  check_refinement_share(run.file, rq, input, ranks);
+  // Any other file: rank 0 reads it and sends each rank its share (no other rank reads it or
+  // holds the whole); where the whole is needed again, rank 0 reads it again.
+  MeshInput whole;
+  std::string failure; // rank 0's errors are everyone's
   if (root)
-    for (const std::string &w : input.warnings)
-      std::fprintf(stderr, "hoct: warning: %s\n", w.c_str());
+    try {
+      whole = read_whole_file(run, limits, /*notes=*/true);
+      for (const std::string &w : whole.warnings)
+        std::fprintf(stderr, "hoct: warning: %s\n", w.c_str());
+    } catch (const std::exception &e) {
+      failure = e.what();
+    }
+  agree_on_failure(failure);
+  RankInput share = scatter_whole(root ? &whole : nullptr, MPI_COMM_WORLD);
+  whole = MeshInput{};
+  share.read_whole = [run, limits, root] {
+    return root ? read_whole_file(run, limits, /*notes=*/false) : MeshInput{};
+  };
+  check_refinement_share(run.file, rq, share.piece.input, 1);
   rq.read_seconds = total.seconds();
-  const DistributedOutcome d = distributed_tree(input, rq);
+  const std::string field_name = share.field_name;
+  const int64_t cells = share.whole_cells;
+  const DistributedOutcome d = distributed_tree(std::move(share), rq, MPI_COMM_WORLD);
   collectives_done = true; // from here on, errors are rank 0's, reported as without MPI
   if (root)
-    report(run, d, input.field_name, static_cast<int64_t>(input.num_cells()), total,
-           thread_count(rq.threads));
+    report(run, d, field_name, cells, total, thread_count(rq.threads));
 }
 
 // Rank 0: the outputs and the summary.

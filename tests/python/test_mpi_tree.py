@@ -1,6 +1,8 @@
 """`mpirun -np N hoct tree FILE`: the distributed tree (issue 31's first entry point).
 
-The whole file is read by every rank, each computes the tree of its piece of contiguous cells,
+The whole file is read by rank 0 alone, which sends each rank its piece of contiguous cells (a
+run whose other ranks are given a path that does not exist gives the same JSON); each computes
+the tree of its piece,
 and the ranks merge their kept join and split trees (exact/piece_trees, distributed/). The
 independent truth is hoct's own single-process tree, computed without MPI at all: for every
 generated genus-0 dataset, with plateaus and fallback cells, quadrilaterals, a field at +1e7,
@@ -22,11 +24,12 @@ test_mpi_reeb's.
 Skipped (exit 77) without mpirun or an MPI build of hoct."""
 import json
 import os
+import subprocess
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from hoct_testing import Results, run, tempdir  # noqa: E402
-from mpi_testing import mpi, read, reeb_with_shape, require_mpi_hoct  # noqa: E402
+from hoct_testing import HOCT, Results, run, tempdir  # noqa: E402
+from mpi_testing import ENV, MPIRUN, mpi, read, reeb_with_shape, require_mpi_hoct  # noqa: E402
 
 r = Results()
 
@@ -155,7 +158,22 @@ with tempdir() as d:
                     f"{label} {flags}, {n} ranks: one process's JSON, from the whole on rank 0 "
                     f"({p.returncode}):\n{p.stdout[-1500:]}{p.stderr[-800:]}")
 
-    # A broken file: the same error as without MPI, from every rank's read.
+    # Rank 0 alone reads a file that is not partitioned: with every other rank given a path that
+    # does not exist (mpirun's MPMD form), the run still gives one process's JSON (the same run
+    # with --vtp, which needs the whole again, on rank 0).
+    gone = os.path.join(d, "not-there.vtu")
+    want = os.path.join(d, "alone_want.json")
+    run("tree", path, "--json", want, "--no-timings", "-q")
+    for n in (2, 3):
+        got, got_vtp = os.path.join(d, f"alone_{n}.json"), os.path.join(d, f"alone_{n}.vtp")
+        p = subprocess.run([MPIRUN, "--oversubscribe", "-np", "1", HOCT, "tree", path, "--json", got,
+                            "--vtp", got_vtp, "--no-timings", "-q", ":", "-np", str(n - 1), HOCT,
+                            "tree", gone, "--json", got, "--vtp", got_vtp, "--no-timings", "-q"],
+                           capture_output=True, text=True, env=ENV, timeout=600)
+        r.check(p.returncode == 0 and os.path.exists(got) and read(got) == read(want),
+                f"rank 0 alone reads the file, {n} ranks ({p.returncode}):\n{p.stderr[-1500:]}")
+
+    # A broken file: the same error as without MPI, from rank 0's read.
     broken = os.path.join(d, "broken.vtu")
     with open(broken, "wb") as f:
         f.write(read(path)[:5000])

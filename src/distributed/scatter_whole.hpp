@@ -1,0 +1,20 @@
+// A whole mesh read by rank 0 alone, cut into one share per rank and sent to each: every rank
+// gets the RankInput distributed_tree(whole, ...) makes of the whole on every rank (its contiguous
+// cells, their points' spans over the ranks, the whole's counts; the whole's fingerprint on rank
+// 0), and only rank 0 ever holds the whole, while it cuts it. For a file that is not partitioned
+// (.vtu, .msh, ...): no rank but 0 reads it.
+#pragma once
+
+#include "distributed/distributed_tree.hpp"
+#include "mesh/mesh_input.hpp"
+
+#include <mpi.h>
+
+namespace hoct {
+
+// Collective over `comm`: `whole` is read on rank 0 only (the others pass null). The shares go
+// one at a time (rank 0 holds one encoded share besides the whole), in messages of at most
+// 1 GiB. read_whole is left for the caller to set.
+RankInput scatter_whole(const MeshInput *whole, MPI_Comm comm);
+
+} // namespace hoct
