@@ -12,9 +12,10 @@
 
 namespace hoct {
 
-// Collective over `comm`: `whole` is read on rank 0 only (the others pass null). The shares go
-// one at a time (rank 0 holds one encoded share besides the whole), in messages of at most
-// 1 GiB. read_whole is left for the caller to set.
+// Collective over `comm`: `whole` is read on rank 0 only (the others pass null). Each share is
+// formatted from the whole as it is sent, in blocks of 8 MiB: rank 0 holds the whole, the points'
+// spans, a map of the whole's points and one block, never another rank's share. read_whole is
+// left for the caller to set.
 RankInput scatter_whole(const MeshInput *whole, MPI_Comm comm);
 
 } // namespace hoct
