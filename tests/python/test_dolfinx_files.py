@@ -16,7 +16,7 @@ with ghost cells and points. What hoct must make of them:
   node a vertex with the value f there; VTKFile and XDMF give the same tree;
 - the partitioned files (P2, and P3 with its GLL nodes), on 2 and 3 ranks, the tree of the
   serial file, and read by `mpirun -np N hoct tree` (N = 1, 2, 3, 4, 7) the same JSON as one
-  process, the .pvd (every rank reads the whole) and the .pvtu (each rank reads only its pieces
+  process, the .pvd (rank 0 reads the whole and sends each rank its share) and the .pvtu (each rank reads only its pieces
   and resamples its GLL cells); one piece alone, a warning naming the .pvtu to read instead;
 - XDMF steps: `hoct info` lists both, the default is the last, --step and --time choose, and a
   time that is not there is an error listing the times;
@@ -169,7 +169,7 @@ with tempdir() as d:
             label = f"P{deg} written on {n} ranks"
             j, res = tree_json(p(f"{name}.pvd"))
             same_tree(f"{label} vs serial", j, trees[deg], tol=1e-12)
-            # ... and read by hoct under mpirun on 1, 2, 3, 4 and 7 ranks (each reads the whole,
+            # ... and read by hoct under mpirun on 1, 2, 3, 4 and 7 ranks (rank 0 reads the whole,
             # the cells are shared out; P3: each rank resamples its GLL cells): the JSON of the
             # plain run, byte for byte.
             want = p(f"{name}.plain.json")
@@ -182,8 +182,8 @@ with tempdir() as d:
                                    capture_output=True, text=True, env=env)
                 same = w.returncode == 0 and open(got, "rb").read() == open(want, "rb").read()
                 r.check(same, f"{label}, hoct on {m} ranks: {w.stderr[-800:]}")
-            # The step's .pvtu itself: each hoct rank reads only its pieces (no note that every
-            # rank reads the whole), the same JSON as one process.
+            # The step's .pvtu itself: each hoct rank reads only its pieces (no note that rank 0
+            # reads the whole), the same JSON as one process.
             pvtu = p(f"{name}000000.pvtu")
             want = p(f"{name}.pvtu.plain.json")
             run("tree", pvtu, "--json", want, "--no-timings", "-q")

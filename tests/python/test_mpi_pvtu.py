@@ -10,10 +10,10 @@ and with --vtp (rank 0 computes that tree from the whole: one process's VTP). Th
 independent truth is one process reading the whole file (`hoct tree FILE.pvtu`, io/piece_join):
 for 1, 2, 3, 4 and 7 ranks (more ranks than pieces: ranks without any) the JSON (--no-timings,
 the input's fingerprint included) is byte-identical, the ranks read their pieces alone (no note
-that every rank reads the whole) and check the whole mesh together. A plate with 100 holes split
+that rank 0 reads the whole) and check the whole mesh together. A plate with 100 holes split
 into pieces, read by pieces too, gets the Reeb graph of one process, with one loop per hole (hoct
 info's counts; more partitioned Reeb graphs in test_mpi_reeb). Pieces whose fields differ,
-and a broken piece file, give the error of one process (every rank reads the whole then), once.
+and a broken piece file, give the error of one process (rank 0 reads the whole then), once.
 
 Skipped (exit 77) without mpirun, VTK's Python module or an MPI build of hoct."""
 import os
