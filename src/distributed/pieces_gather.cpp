@@ -10,15 +10,6 @@ namespace hoct {
 
 namespace {
 
-void put_text(ByteWriter &w, const std::string &s) {
-  w.array(std::vector<char>(s.begin(), s.end()));
-}
-
-std::string take_text(ByteReader &r) {
-  const std::vector<char> v = r.array<char>();
-  return std::string(v.begin(), v.end());
-}
-
 // A piece as it travels to rank 0: what join_pieces reads of it.
 void encode_piece(ByteWriter &w, const FilePiece &p) {
   const MeshInput &m = p.input;
@@ -30,15 +21,15 @@ void encode_piece(ByteWriter &w, const FilePiece &p) {
   w.array(m.cell_kind);
   w.value(m.coordinate_precision);
   w.value(m.value_precision);
-  put_text(w, m.field_name);
-  put_text(w, m.source);
+  w.text(m.field_name);
+  w.text(m.source);
   w.array(p.arrays.cell_ghost);
   w.array(p.arrays.point_ghost);
   w.array(p.arrays.global_ids);
-  put_text(w, p.arrays.global_ids_name);
+  w.text(p.arrays.global_ids_name);
   w.value(p.arrays.ghost_cells);
   w.value(p.arrays.ghost_points);
-  put_text(w, p.file);
+  w.text(p.file);
 }
 
 FilePiece decode_piece(ByteReader &r) {
@@ -52,15 +43,15 @@ FilePiece decode_piece(ByteReader &r) {
   m.cell_kind = r.array<uint8_t, PooledAllocator<uint8_t>>();
   m.coordinate_precision = r.value<double>();
   m.value_precision = r.value<double>();
-  m.field_name = take_text(r);
-  m.source = take_text(r);
+  m.field_name = r.text();
+  m.source = r.text();
   p.arrays.cell_ghost = r.array<uint8_t>();
   p.arrays.point_ghost = r.array<uint8_t>();
   p.arrays.global_ids = r.array<int64_t>();
-  p.arrays.global_ids_name = take_text(r);
+  p.arrays.global_ids_name = r.text();
   p.arrays.ghost_cells = r.value<int64_t>();
   p.arrays.ghost_points = r.value<int64_t>();
-  p.file = take_text(r);
+  p.file = r.text();
   return p;
 }
 

@@ -46,15 +46,6 @@ template <class T, class V> void receive_items(std::size_t n, V &out, MPI_Comm c
   }
 }
 
-void put_text(ByteWriter &w, const std::string &s) {
-  w.array(std::vector<char>(s.begin(), s.end()));
-}
-
-std::string take_text(ByteReader &r) {
-  const std::vector<char> v = r.array<char>();
-  return std::string(v.begin(), v.end());
-}
-
 // The sizes of a share's arrays and its scalars, sent first.
 struct ShareHeader {
   uint64_t points = 0, cells = 0, nodes = 0;
@@ -93,9 +84,9 @@ void send_share(const MeshInput &whole, std::span<const std::array<int32_t, 2>> 
   h.has_kinds = whole.cell_kind.empty() ? 0 : 1;
   ByteWriter w;
   w.value(h);
-  put_text(w, whole.field_name);
-  put_text(w, whole.field_detail);
-  put_text(w, whole.source);
+  w.text(whole.field_name);
+  w.text(whole.field_detail);
+  w.text(whole.source);
   const uint64_t header_bytes = w.out.size();
   MPI_Send(&header_bytes, 1, MPI_UINT64_T, r, kShareTag, comm);
   MPI_Send(w.out.data(), static_cast<int>(w.out.size()), MPI_BYTE, r, kShareTag, comm);
@@ -130,9 +121,9 @@ RankInput receive_share(MPI_Comm comm) {
   const ShareHeader h = reader.value<ShareHeader>();
   RankInput in;
   MeshInput &m = in.piece.input;
-  m.field_name = take_text(reader);
-  m.field_detail = take_text(reader);
-  m.source = take_text(reader);
+  m.field_name = reader.text();
+  m.field_detail = reader.text();
+  m.source = reader.text();
   m.coordinate_precision = h.coordinate_precision;
   m.value_precision = h.value_precision;
   receive_items<Vec3>(h.points, m.points, comm);

@@ -31,6 +31,8 @@ public:
     const auto *p = reinterpret_cast<const std::byte *>(v.data());
     out.insert(out.end(), p, p + v.size() * sizeof(T));
   }
+  // Its length, then its characters.
+  void text(const std::string &s) { array(std::vector<char>(s.begin(), s.end())); }
   std::vector<std::byte> out;
 };
 
@@ -50,6 +52,10 @@ public:
     std::vector<T, A> v(static_cast<std::size_t>(n));
     take(v.data(), v.size() * sizeof(T));
     return v;
+  }
+  std::string text() {
+    const std::vector<char> v = array<char>();
+    return std::string(v.begin(), v.end());
   }
   bool done() const { return at_ == in_.size(); }
 
