@@ -599,9 +599,10 @@ void mpi_section(const Settings &s) {
     long long cells;
   };
   const std::vector<Input> inputs = {
-      {vtu, "FILE.vtu (every rank reads it whole)", "random cubic cells", cells},
+      {vtu, "FILE.vtu (rank 0 reads it and sends each rank its share)", "random cubic cells",
+       cells},
       {pvtu, "FILE.pvtu, 8 pieces (each rank reads its own)", "random cubic cells", cells},
-      {plate, "the plate's Reeb graph, FILE.vtu (every rank reads it whole)",
+      {plate, "the plate's Reeb graph, FILE.vtu (rank 0 reads it and sends each rank its share)",
        "cubic cells of the plate with 100 holes", plate_cells}};
   for (const Input &input : inputs) {
     const std::string plain_json = scratch.file("plain.json");
