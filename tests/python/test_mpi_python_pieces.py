@@ -189,25 +189,23 @@ with tempdir() as d:
                 same_tree(f"piece_from_arrays, {label}, ids {ids}", n, "arrays",
                           {"files": files, "ids": ids, "ghosts": False}, want, cells)
         print(f"piece_from_arrays, {label}: {counts} ranks checked", flush=True)
-    # The PL methods by the pieces (exact/pl_piece_trees): the CLI's --linear and --refine trees.
-    pvtu = write_consecutive(read_grid(plateau), d, "plateau_linear", 3)
-    files = [os.path.join(d, f"plateau_linear_{k}.vtu") for k in range(3)]
-    want, cells = cli_tree("linear", pvtu, "--linear")
-    same_tree("piece_from_arrays, linear, a plateau", 3, "arrays",
-              {"files": files, "ids": False, "ghosts": False, "tree": {"method": "linear"}},
-              want, cells)
+    # The PL methods by the pieces (exact/pl_piece_trees): the CLI's --linear and --refine trees,
+    # from 3 pieces of contiguous cells.
+    def pl_by_arrays(label, source, base, ids, tree, *flags):
+        pvtu = write_consecutive(read_grid(source), d, base, 3)
+        files = [os.path.join(d, f"{base}_{k}.vtu") for k in range(3)]
+        want, cells = cli_tree(label, pvtu, *flags)
+        same_tree(f"piece_from_arrays, {label}", 3, "arrays",
+                  {"files": files, "ids": ids, "ghosts": False, "tree": tree}, want, cells)
+
+    pl_by_arrays("linear, a plateau", plateau, "plateau_linear", False, {"method": "linear"},
+                 "--linear")
     # The linear method's Reeb graph is rank 0's from the whole mesh: the ranks make their pieces
     # again from the arrays they were given (kept, not copied) and send them to rank 0.
-    pvtu_plate = write_consecutive(read_grid(plate), d, "plate_linear", 3)
-    files_plate = [os.path.join(d, f"plate_linear_{k}.vtu") for k in range(3)]
-    want_plate, cells_plate = cli_tree("plate linear", pvtu_plate, "--linear")
-    same_tree("piece_from_arrays, plate, linear (the whole on rank 0)", 3, "arrays",
-              {"files": files_plate, "ids": True, "ghosts": False, "tree": {"method": "linear"}},
-              want_plate, cells_plate)
-    want, cells = cli_tree("refine", pvtu, "--refine", "2")
-    same_tree("piece_from_arrays, refine 2, a plateau", 3, "arrays",
-              {"files": files, "ids": False, "ghosts": False,
-               "tree": {"method": "refine", "refine": 2}}, want, cells)
+    pl_by_arrays("plate, linear (the whole on rank 0)", plate, "plate_linear", True,
+                 {"method": "linear"}, "--linear")
+    pl_by_arrays("refine 2, a plateau", plateau, "plateau_refine", False,
+                 {"method": "refine", "refine": 2}, "--refine", "2")
     # Ghost cells flagged: VTK's pieces with a ghost level, each rank its piece's arrays.
     pvtu = os.path.join(d, "gauss_ghost3.pvtu")
     write_pieces(with_ids(read_grid(gauss), "gid"), pvtu, 3, 1, "gid")
