@@ -21,6 +21,7 @@
 #include "distributed/mpi_session.hpp"
 #include "distributed/rank_join.hpp"
 #include "distributed/scatter_whole.hpp"
+#include "distributed/vtu_by_ranks.hpp"
 
 #include <mpi.h>
 #endif
@@ -100,13 +101,15 @@ void run_ranks(const DistributedTreeRun &run, TreeRequest rq, bool root, bool &c
     rq.threads = 1;
   ReadLimits limits = read_limits();
   limits.threads = thread_count(rq.threads);
-  // A partitioned file: each rank reads its own pieces, where the ranks can join them alone.
-  const bool partitioned =
-      std::filesystem::path(run.file).extension() == ".pvtu" && run.merge_tolerance < 0;
-  if (partitioned) {
+  // A partitioned file: each rank reads its own pieces, where the ranks can join them alone; a
+  // .vtu: each rank reads its own part, where the file allows it.
+  const std::string extension = std::filesystem::path(run.file).extension().string();
+  const bool by_parts = (extension == ".pvtu" || extension == ".vtu") && run.merge_tolerance < 0;
+  if (by_parts) {
     RankRead read;
     try {
-      read = read_pvtu_by_ranks(run.file, run.field, limits, MPI_COMM_WORLD);
+      read = extension == ".pvtu" ? read_pvtu_by_ranks(run.file, run.field, limits, MPI_COMM_WORLD)
+                                  : read_vtu_by_ranks(run.file, run.field, limits, MPI_COMM_WORLD);
     } catch (const std::exception &e) { // MPI's own limits (2 GiB a step): this rank's alone
       throw Error(run.file + ": " + e.what());
     }
@@ -126,10 +129,15 @@ void run_ranks(const DistributedTreeRun &run, TreeRequest rq, bool root, bool &c
         report(run, d, field_name, cells, total, thread_count(rq.threads));
       return;
     }
-    if (root && !run.quiet)
+    if (root && !run.quiet && extension == ".pvtu")
       std::fprintf(stderr,
                    "hoct: note: rank 0 reads the whole of %s and sends each rank its share (%s: "
                    "the ranks could not join its pieces alone)\n",
+                   run.file.c_str(), read.fallback.c_str());
+    else if (root && !run.quiet)
+      std::fprintf(stderr,
+                   "hoct: note: rank 0 reads the whole of %s and sends each rank its share (the "
+                   "ranks could not read it by parts: %s)\n",
                    run.file.c_str(), read.fallback.c_str());
   }
   // Any other file: rank 0 reads it and sends each rank its share (no other rank reads it or

@@ -1,5 +1,7 @@
 #include "io/vtu_reader.hpp"
 
+#include "io/vtu_file.hpp"
+
 #include "io/external_reader.hpp"
 
 #include "io/base64.hpp"
@@ -28,133 +30,7 @@
 #include <sstream>
 
 namespace hoct {
-namespace {
-
-// The largest expansion zlib's deflate format allows (about 1032:1), with margin.
-constexpr uint64_t kMaxZlibRatio = 1100;
-
-// Large reads go in parts of this size (on the reader's threads).
-constexpr std::size_t kReadPart = std::size_t{4} << 20;
-
-enum class Scalar { F32, F64, I8, U8, I16, U16, I32, U32, I64, U64 };
-
-struct TypeInfo {
-  const char *name;
-  Scalar type;
-  int size;
-};
-constexpr TypeInfo kTypes[] = {
-    {"Float32", Scalar::F32, 4}, {"Float64", Scalar::F64, 8}, {"Int8", Scalar::I8, 1},
-    {"UInt8", Scalar::U8, 1},    {"Int16", Scalar::I16, 2},   {"UInt16", Scalar::U16, 2},
-    {"Int32", Scalar::I32, 4},   {"UInt32", Scalar::U32, 4},  {"Int64", Scalar::I64, 8},
-    {"UInt64", Scalar::U64, 8},  {"Float", Scalar::F32, 4},   {"Double", Scalar::F64, 8}};
-
-// A binary array's bytes: in the file's buffer (raw appended data, read in place) or decoded
-// into a buffer of its own (base64, zlib).
-struct Payload {
-  std::vector<uint8_t> owned;
-  const uint8_t *data = nullptr;
-  std::size_t size = 0;
-};
-
-class VtuFile {
-public:
-  VtuFile(std::string path, FieldSelection field, const ReadLimits &limits,
-          VtuPieceRequest request = {})
-      : path_(std::move(path)), field_(std::move(field)), limits_(limits),
-        request_(std::move(request)) {}
-  VtuFile(const VtuFile &) = delete;
-  VtuFile &operator=(const VtuFile &) = delete;
-  ~VtuFile() {
-    if (fd_ >= 0)
-      ::close(fd_);
-  }
-  // Reads the file at path_: into bytes_, or (large, raw appended payload) only the XML around
-  // the payload, whose arrays are then read from the file as they are needed.
-  void read_file();
-  void set_bytes(std::string bytes) {
-    bytes_ = FileBytes(std::move(bytes));
-    file_size_ = bytes_.size();
-  }
-  MeshInput read();
-  // The bookkeeping arrays read() found (ghost levels, global ids).
-  VtuPieceArrays &arrays() { return arrays_; }
-
-private:
-  [[noreturn]] void fail(const std::string &what) const { throw InputError(path_ + ": " + what); }
-  // "line N" of element n in the file (from its offset in the parsed text).
-  std::string line_of(const pugi::xml_node &n) const;
-  // What XML parsers may let pass and VTK's files never have: a second root element, an
-  // attribute given twice (not well-formed XML; pugixml keeps both and the first would win), a
-  // second <UnstructuredGrid>, or a second <Points>, <PointData> or <Cells> in a piece.
-  void check_structure() const;
-  // The only child `name` of parent (null if none); a second one is refused.
-  pugi::xml_node single_child(const pugi::xml_node &parent, const char *name) const;
-  // The DataArray of parent named `name` (null if none); a second one of that name is refused.
-  pugi::xml_node named_array(const pugi::xml_node &parent, const std::string &name) const;
-  // The point-data array field_ names in pd, or the default (FieldSelection::name); refuses
-  // what cannot give a scalar field, listing the arrays there are.
-  pugi::xml_node choose_field(const pugi::xml_node &pd, const std::string &where) const;
-  void load();
-  void load_whole();
-  bool open_streamed();
-  void read_at(uint64_t at, std::size_t n, void *dst) const;
-  template <class V> void resize_mapped(V &v, std::size_t n) const;
-  uint64_t appended_offset(const pugi::xml_node &a, std::size_t appended_size) const;
-  Payload payload_from_file(uint64_t at, uint64_t avail, const pugi::xml_node &a,
-                            uint64_t expected_bytes) const;
-  uint64_t raw_array_bytes(uint64_t at, uint64_t avail, const pugi::xml_node &a) const;
-  std::size_t value_count(const pugi::xml_node &a, const TypeInfo &ti, uint64_t bytes,
-                          std::size_t expected) const;
-  const TypeInfo &type_of(const pugi::xml_node &a) const;
-  std::string describe(const pugi::xml_node &a) const;
-  // The bytes of binary array a, which must hold `expected_bytes` (the header counts times the
-  // type's size): a compressed array's declared size is checked against it before inflating.
-  Payload binary_payload(const pugi::xml_node &a, uint64_t expected_bytes) const;
-  Payload decode_blocks(const uint8_t *p, std::size_t avail, const pugi::xml_node &a,
-                        uint64_t expected_bytes) const;
-  Payload decode_owned(std::vector<uint8_t> buffer, const pugi::xml_node &a,
-                       uint64_t expected_bytes) const;
-  template <class S, class T>
-  void convert_binary(const Payload &raw, const pugi::xml_node &a, PooledVector<T> &out) const;
-  // Copies a binary array stored as `type` in the machine's byte order straight into dst (room
-  // for `expected` values of it); false, with nothing read, for any other array.
-  bool read_native(const pugi::xml_node &a, Scalar type, void *dst, std::size_t expected) const;
-  PooledVector<double> read_doubles(const pugi::xml_node &a, std::size_t expected) const;
-  PooledVector<int64_t> read_ints(const pugi::xml_node &a, std::size_t expected) const;
-  template <class T>
-  PooledVector<T> read_array(const pugi::xml_node &a, std::size_t expected) const;
-  // A piece's vtkGhostType array in `data` (PointData or CellData), `n` flags (empty if none).
-  // Bezier cells (from cell `first_cell` on) of a piece whose PointData has RationalWeights:
-  // refused unless every weight they use is 1 (rational cells are not polynomials).
-  void check_rational_weights(const MeshInput &m, std::size_t first_cell, const pugi::xml_node &pd,
-                              std::size_t np, int64_t base, const std::string &where) const;
-  std::vector<uint8_t> read_ghost(const pugi::xml_node &data, std::size_t n,
-                                  const std::string &where) const;
-  // The bookkeeping arrays of a piece of np points whose first point is `base`.
-  void read_point_arrays(const pugi::xml_node &pd, int64_t base, std::size_t np,
-                         const std::string &where);
-
-  std::string path_;
-  FieldSelection field_;
-  ReadLimits limits_;
-  VtuPieceRequest request_;
-  VtuPieceArrays arrays_;
-  bool ids_incomplete_ = false; // a piece of the file has no global ids
-  FileBytes bytes_;             // the file (unless streamed)
-  uint64_t file_size_ = 0;
-  int fd_ = -1;                  // the open file, when streamed
-  bool streamed_ = false;        // the appended payload stays in the file:
-  uint64_t appended_begin_ = 0;  //   its first byte (after '_')
-  uint64_t appended_length_ = 0; //   and its length
-  std::string xml_;              // the file without the appended payload
-  std::string_view appended_;    // appended payload (after '_')
-  bool appended_base64_ = false;
-  pugi::xml_document doc_;
-  const char *xml_text_ = nullptr; // the text doc_ was parsed from (in place)
-  int header_size_ = 4;
-  bool big_endian_ = false, compressed_ = false;
-};
+namespace vtu_detail {
 
 void VtuFile::read_file() {
   if (open_streamed())
@@ -780,6 +656,48 @@ bool VtuFile::read_native(const pugi::xml_node &a, Scalar type, void *dst,
 }
 
 template <class T>
+void VtuFile::convert_payload(const Payload &raw, const pugi::xml_node &a,
+                              PooledVector<T> &out) const {
+  switch (type_of(a).type) {
+  case Scalar::F32:
+    convert_binary<float>(raw, a, out);
+    break;
+  case Scalar::F64:
+    convert_binary<double>(raw, a, out);
+    break;
+  case Scalar::I8:
+    convert_binary<int8_t>(raw, a, out);
+    break;
+  case Scalar::U8:
+    convert_binary<uint8_t>(raw, a, out);
+    break;
+  case Scalar::I16:
+    convert_binary<int16_t>(raw, a, out);
+    break;
+  case Scalar::U16:
+    convert_binary<uint16_t>(raw, a, out);
+    break;
+  case Scalar::I32:
+    convert_binary<int32_t>(raw, a, out);
+    break;
+  case Scalar::U32:
+    convert_binary<uint32_t>(raw, a, out);
+    break;
+  case Scalar::I64:
+    convert_binary<int64_t>(raw, a, out);
+    break;
+  case Scalar::U64:
+    convert_binary<uint64_t>(raw, a, out);
+    break;
+  }
+}
+// For io/vtu_cell_range.cpp.
+template void VtuFile::convert_payload(const Payload &, const pugi::xml_node &,
+                                       PooledVector<double> &) const;
+template void VtuFile::convert_payload(const Payload &, const pugi::xml_node &,
+                                       PooledVector<int64_t> &) const;
+
+template <class T>
 PooledVector<T> VtuFile::read_array(const pugi::xml_node &a, std::size_t expected) const {
   const TypeInfo &ti = type_of(a);
   const std::string format = a.attribute("format").as_string("ascii");
@@ -833,38 +751,7 @@ PooledVector<T> VtuFile::read_array(const pugi::xml_node &a, std::size_t expecte
     }
     const Payload raw = binary_payload(a, uint64_t{expected} * ti.size);
     value_count(a, ti, raw.size, expected);
-    switch (ti.type) {
-    case Scalar::F32:
-      convert_binary<float>(raw, a, out);
-      break;
-    case Scalar::F64:
-      convert_binary<double>(raw, a, out);
-      break;
-    case Scalar::I8:
-      convert_binary<int8_t>(raw, a, out);
-      break;
-    case Scalar::U8:
-      convert_binary<uint8_t>(raw, a, out);
-      break;
-    case Scalar::I16:
-      convert_binary<int16_t>(raw, a, out);
-      break;
-    case Scalar::U16:
-      convert_binary<uint16_t>(raw, a, out);
-      break;
-    case Scalar::I32:
-      convert_binary<int32_t>(raw, a, out);
-      break;
-    case Scalar::U32:
-      convert_binary<uint32_t>(raw, a, out);
-      break;
-    case Scalar::I64:
-      convert_binary<int64_t>(raw, a, out);
-      break;
-    case Scalar::U64:
-      convert_binary<uint64_t>(raw, a, out);
-      break;
-    }
+    convert_payload(raw, a, out);
   } else {
     fail(describe(a) + " has unknown format '" + format + "'");
   }
@@ -881,7 +768,6 @@ PooledVector<int64_t> VtuFile::read_ints(const pugi::xml_node &a, std::size_t ex
   return read_array<int64_t>(a, expected);
 }
 
-// Count of values of a DataArray whose length is known only from its own data (offsets).
 long long parse_count(const pugi::xml_attribute &a) {
   if (!a)
     return -1;
@@ -1147,7 +1033,9 @@ MeshInput VtuFile::read() {
   return m;
 }
 
-} // namespace
+} // namespace vtu_detail
+
+using vtu_detail::VtuFile;
 
 MeshInput read_vtu(const std::string &path, const FieldSelection &field, const ReadLimits &limits) {
   if (!field.default_step())

@@ -1,8 +1,9 @@
 """`mpirun -np N hoct tree FILE`: the distributed tree (issue 31's first entry point).
 
-The whole file is read by rank 0 alone, which sends each rank its piece of contiguous cells (a
-run whose other ranks are given a path that does not exist gives the same JSON); each computes
-the tree of its piece,
+Each rank reads its own part of a generated file (raw appended arrays: test_mpi_vtu_parts);
+rank 0 alone reads meshio's files (inline arrays) and one the other ranks cannot open (they are
+given a path that does not exist: the same JSON), and sends each rank its piece of contiguous
+cells; each computes the tree of its piece,
 and the ranks merge their kept join and split trees (exact/piece_trees, distributed/). The
 independent truth is hoct's own single-process tree, computed without MPI at all: for every
 generated genus-0 dataset, with plateaus and fallback cells, quadrilaterals, a field at +1e7,
@@ -158,9 +159,9 @@ with tempdir() as d:
                     f"{label} {flags}, {n} ranks: one process's JSON, from the whole on rank 0 "
                     f"({p.returncode}):\n{p.stdout[-1500:]}{p.stderr[-800:]}")
 
-    # Rank 0 alone reads a file that is not partitioned: with every other rank given a path that
-    # does not exist (mpirun's MPMD form), the run still gives one process's JSON (the same run
-    # with --vtp, which needs the whole again, on rank 0).
+    # Rank 0 alone reads a file the other ranks cannot open: with every other rank given a path
+    # that does not exist (mpirun's MPMD form), the run still gives one process's JSON (the same
+    # run with --vtp, which needs the whole again, on rank 0).
     gone = os.path.join(d, "not-there.vtu")
     want = os.path.join(d, "alone_want.json")
     run("tree", path, "--json", want, "--no-timings", "-q")

@@ -1,0 +1,233 @@
+#include "distributed/vtu_by_ranks.hpp"
+
+#include "distributed/mpi_exchange.hpp"
+#include "io/vtu_cell_range.hpp"
+#include "io/vtu_reader.hpp"
+#include "mesh/mesh_fingerprint.hpp"
+#include "mesh/mesh_partition.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <limits>
+#include <optional>
+#include <type_traits>
+#include <vector>
+
+namespace hoct {
+namespace {
+
+int64_t exclusive_sum(MPI_Comm comm, int64_t own, int rank) {
+  int64_t before = 0;
+  MPI_Exscan(&own, &before, 1, MPI_INT64_T, MPI_SUM, comm);
+  return rank == 0 ? 0 : before;
+}
+
+// A point id a rank's cells use, sent to a rank whose cells use points around it.
+struct UsedBy {
+  int64_t id;
+  int64_t rank;
+};
+
+// Per point of `used` (ascending ids of the points this rank's cells use), the lowest and the
+// highest rank whose cells use it. The ranks gather which blocks of `block` consecutive ids each
+// uses (a bit per block, at most 65,536 blocks: io/vtu_cell_range); a rank sends another only
+// its ids in blocks both use. Contiguous cells use a few runs of ids in the files simulations
+// write, so what crosses is about the points the ranks share, plus the blocks' slack.
+std::vector<std::array<int32_t, 2>> point_spans(const std::vector<int64_t> &used, int64_t block,
+                                                std::size_t blocks, int rank, int ranks,
+                                                MPI_Comm comm) {
+  const std::size_t words = (blocks + 63) / 64;
+  std::vector<uint64_t> mine(words, 0), all(words * static_cast<std::size_t>(ranks));
+  for (const int64_t q : used)
+    mine[static_cast<std::size_t>(q / block) / 64] |= uint64_t{1}
+                                                      << (static_cast<std::size_t>(q / block) % 64);
+  MPI_Allgather(mine.data(), static_cast<int>(words), MPI_UINT64_T, all.data(),
+                static_cast<int>(words), MPI_UINT64_T, comm);
+  std::vector<std::vector<UsedBy>> out(static_cast<std::size_t>(ranks));
+  for (int s = 0; s < ranks; ++s) {
+    if (s == rank)
+      continue;
+    const uint64_t *theirs = all.data() + static_cast<std::size_t>(s) * words;
+    for (const int64_t q : used) {
+      const std::size_t b = static_cast<std::size_t>(q / block);
+      if ((theirs[b / 64] >> (b % 64)) & 1)
+        out[static_cast<std::size_t>(s)].push_back(UsedBy{q, rank});
+    }
+  }
+  std::vector<std::array<int32_t, 2>> span(used.size(), std::array<int32_t, 2>{rank, rank});
+  for (const UsedBy &u : exchange_records(comm, out)) {
+    const auto it = std::lower_bound(used.begin(), used.end(), u.id);
+    if (it == used.end() || *it != u.id)
+      continue;
+    auto &s = span[static_cast<std::size_t>(it - used.begin())];
+    s[0] = std::min(s[0], static_cast<int32_t>(u.rank));
+    s[1] = std::max(s[1], static_cast<int32_t>(u.rank));
+  }
+  return span;
+}
+
+// The whole's fingerprint (mesh_fingerprint's sections), passed from rank to rank: each rank
+// hashes the points it checked and its cells, in the file's order. On the last rank; every
+// rank gets the value.
+uint64_t fingerprint_by_ranks(const VtuCellRange &v, int64_t whole_cells, int64_t whole_nodes,
+                              bool with_kinds, int rank, int ranks, MPI_Comm comm) {
+  const MeshInput &m = v.input;
+  // The checked points are consecutive there (their blocks were read).
+  const std::size_t n = static_cast<std::size_t>(v.check_end - v.check_begin),
+                    at = n ? static_cast<std::size_t>(v.point_index(v.check_begin)) : 0;
+  FingerprintState fp = fingerprint_start();
+  static_assert(std::is_trivially_copyable_v<FingerprintState>);
+  constexpr int kStateBytes = static_cast<int>(sizeof(FingerprintState));
+  constexpr int kTag = 78;
+  const int sections = with_kinds ? 5 : 4;
+  for (int s = 0; s < sections; ++s) {
+    if (rank > 0)
+      MPI_Recv(&fp, kStateBytes, MPI_BYTE, rank - 1, kTag, comm, MPI_STATUS_IGNORE);
+    else if (s > 0 && ranks > 1)
+      MPI_Recv(&fp, kStateBytes, MPI_BYTE, ranks - 1, kTag, comm, MPI_STATUS_IGNORE);
+    if (rank == 0 && s < 4)
+      fingerprint_count(fp, static_cast<uint64_t>(s < 2    ? v.file_points
+                                                  : s == 2 ? whole_cells
+                                                           : whole_nodes));
+    if (s == 0) {
+      fingerprint_words(fp, m.points.data() + at, 3 * n);
+    } else if (s == 1) {
+      fingerprint_words(fp, m.values.data() + at, n);
+    } else if (s == 2 || s == 4) {
+      const auto &bytes = s == 2 ? m.cell_degree : m.cell_kind;
+      fingerprint_packed(fp, bytes.data(), bytes.size());
+      // A rank of triangles alone keeps no kinds: theirs are zeros (Lagrange triangles).
+      const std::vector<uint8_t> zeros(m.num_cells() - bytes.size(), 0);
+      fingerprint_packed(fp, zeros.data(), zeros.size());
+      if (rank == ranks - 1)
+        fingerprint_flush_packed(fp);
+    } else {
+      fingerprint_words(fp, m.cell_nodes.data(), m.cell_nodes.size());
+    }
+    if (rank < ranks - 1)
+      MPI_Send(&fp, kStateBytes, MPI_BYTE, rank + 1, kTag, comm);
+    else if (s + 1 < sections && ranks > 1)
+      MPI_Send(&fp, kStateBytes, MPI_BYTE, 0, kTag, comm);
+  }
+  if (ranks > 1)
+    MPI_Bcast(&fp, kStateBytes, MPI_BYTE, ranks - 1, comm);
+  return fingerprint_value(fp);
+}
+
+} // namespace
+
+RankRead read_vtu_by_ranks(const std::string &path, const FieldSelection &field,
+                           const ReadLimits &limits, MPI_Comm comm) {
+  int rank = 0, ranks = 1;
+  MPI_Comm_rank(comm, &rank);
+  MPI_Comm_size(comm, &ranks);
+  RankRead read;
+  std::optional<VtuCellRange> got;
+  std::string why;
+  bool failed = false;
+  try {
+    got = read_vtu_cell_range(path, field, limits, rank, ranks, why);
+  } catch (const std::exception &) { // rank 0 reads the whole, which reports it
+    failed = true;
+  }
+  // The reason of the lowest rank that cannot read its part: a problem in the file first.
+  int mine = failed ? 0 : got ? 2 : 1, fewest = mine;
+  MPI_Allreduce(&mine, &fewest, 1, MPI_INT, MPI_MIN, comm);
+  if (fewest == 0) {
+    read.fallback = "a rank found a problem in its part";
+    return read;
+  }
+  if (fewest == 1) {
+    int first = got ? ranks : rank, lowest = first;
+    MPI_Allreduce(&first, &lowest, 1, MPI_INT, MPI_MIN, comm);
+    uint64_t size = why.size();
+    MPI_Bcast(&size, 1, MPI_UINT64_T, lowest, comm);
+    why.resize(static_cast<std::size_t>(size));
+    MPI_Bcast(why.data(), static_cast<int>(size), MPI_CHAR, lowest, comm);
+    read.fallback = why;
+    return read;
+  }
+  VtuCellRange &v = *got;
+  MeshInput &m = v.input;
+
+  // The whole's counts.
+  int64_t triangles = static_cast<int64_t>(m.num_cells());
+  for (std::size_t c = 0; c < m.num_cells() && !m.cell_kind.empty(); ++c)
+    triangles += is_quadrilateral(m.kind(c)) ? 1 : 0;
+  int64_t sums[3] = {static_cast<int64_t>(m.num_cells()), static_cast<int64_t>(m.cell_nodes.size()),
+                     m.lagrange_triangles_only() ? 0 : 1};
+  MPI_Allreduce(MPI_IN_PLACE, sums, 3, MPI_INT64_T, MPI_SUM, comm);
+  const int64_t whole_cells = sums[0];
+  if (whole_cells == 0) {
+    read.fallback = "the file has no surface cells";
+    return read;
+  }
+  const uint64_t fingerprint =
+      fingerprint_by_ranks(v, whole_cells, sums[1], sums[2] > 0, rank, ranks, comm);
+
+  // This rank's share: the points its cells use, in the whole's order (marked over the points
+  // it read, block after block), and their spans.
+  std::vector<int64_t> local(m.points.size(), -1);
+  for (const int64_t q : m.cell_nodes)
+    local[static_cast<std::size_t>(v.point_index(q))] = 0;
+  std::vector<int64_t> used;
+  for (std::size_t b = 0; b < v.block_first.size(); ++b) {
+    if (v.block_first[b] < 0)
+      continue;
+    const int64_t id = static_cast<int64_t>(b) * v.point_block;
+    const int64_t count = std::min(v.point_block, v.file_points - id);
+    for (int64_t i = 0; i < count; ++i) {
+      int64_t &k = local[static_cast<std::size_t>(v.block_first[b] + i)];
+      if (k == 0) {
+        k = static_cast<int64_t>(used.size());
+        used.push_back(id + i);
+      }
+    }
+  }
+  RankInput in;
+  MeshPiece &piece = in.piece;
+  piece.point_span = point_spans(used, v.point_block, v.block_first.size(), rank, ranks, comm);
+  MeshInput &out = piece.input;
+  if (used.size() == m.points.size()) { // every point it read: the arrays themselves
+    out.points = std::move(m.points);
+    out.values = std::move(m.values);
+  } else {
+    out.points.resize(used.size());
+    out.values.resize(used.size());
+    for (std::size_t i = 0; i < used.size(); ++i) {
+      const std::size_t k = static_cast<std::size_t>(v.point_index(used[i]));
+      out.points[i] = m.points[k];
+      out.values[i] = m.values[k];
+    }
+    m.points = {};
+    m.values = {};
+  }
+  for (int64_t &q : m.cell_nodes)
+    q = local[static_cast<std::size_t>(v.point_index(q))];
+  piece.global_point = std::move(used);
+  out.source = m.source;
+  out.field_name = m.field_name;
+  out.coordinate_precision = m.coordinate_precision;
+  out.value_precision = m.value_precision;
+  out.cell_offsets = std::move(m.cell_offsets);
+  out.cell_degree = std::move(m.cell_degree);
+  out.cell_kind = std::move(m.cell_kind);
+  out.cell_nodes = std::move(m.cell_nodes);
+  piece.first_cell = exclusive_sum(comm, static_cast<int64_t>(out.num_cells()), rank);
+  in.first_triangle = exclusive_sum(comm, triangles, rank);
+  in.whole_cells = whole_cells;
+  in.whole_points = v.file_points;
+  in.cells_split = sums[2] > 0;
+  in.source = out.source;
+  in.field_name = out.field_name;
+  if (rank == 0)
+    in.fingerprint = InputFingerprint{v.file_points, whole_cells, out.field_name, fingerprint};
+  in.read_whole = [path, field, limits, rank] {
+    return rank == 0 ? read_vtu(path, field, limits) : MeshInput{};
+  };
+  read.input = std::move(in);
+  return read;
+}
+
+} // namespace hoct
