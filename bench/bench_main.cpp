@@ -561,9 +561,9 @@ void write_pieces(const std::string &pvtu, const MeshInput &in, int pieces) {
   std::ofstream(pvtu) << xml;
 }
 
-// `mpirun -np N hoct tree` against one plain process, on the mesh as one .vtu (every rank reads
-// it whole) and as a .pvtu of 8 pieces (each rank reads its own): whole runs (a fresh mpirun per
-// run, rank counts alternated), each rank's report (its piece's time, kept nodes, bytes, peak
+// `mpirun -np N hoct tree` against one plain process, on the mesh as one .vtu (each rank reads
+// its own part) and as a .pvtu of 8 pieces (each rank reads its own): whole runs (a fresh mpirun
+// per run, rank counts alternated), each rank's report (its piece's time, kept nodes, bytes, peak
 // memory) read from the summary, and the JSON compared with the plain run's.
 void mpi_section(const Settings &s) {
   const int runs = s.quick ? 1 : std::min(std::max(s.runs, 3), 5);
@@ -599,10 +599,9 @@ void mpi_section(const Settings &s) {
     long long cells;
   };
   const std::vector<Input> inputs = {
-      {vtu, "FILE.vtu (rank 0 reads it and sends each rank its share)", "random cubic cells",
-       cells},
+      {vtu, "FILE.vtu (each rank reads its own part)", "random cubic cells", cells},
       {pvtu, "FILE.pvtu, 8 pieces (each rank reads its own)", "random cubic cells", cells},
-      {plate, "the plate's Reeb graph, FILE.vtu (rank 0 reads it and sends each rank its share)",
+      {plate, "the plate's Reeb graph, FILE.vtu (each rank reads its own part)",
        "cubic cells of the plate with 100 holes", plate_cells}};
   for (const Input &input : inputs) {
     const std::string plain_json = scratch.file("plain.json");
@@ -656,8 +655,8 @@ void mpi_section(const Settings &s) {
                 input.label.c_str(), input.cells, input.mesh.c_str(), runs);
     std::printf("plain process: %.3f s\n\n", median(plain));
     std::printf("| ranks | whole (s) | 1 rank / N ranks | plain / N ranks | piece (s) | kept nodes "
-                "| KiB sent | KiB rank 0 received | peak MiB | JSON as plain | checked (.pvtu: and "
-                "read) by pieces |\n|---|---|---|---|---|---|---|---|---|---|---|\n");
+                "| KiB sent | KiB rank 0 received | peak MiB | JSON as plain | checked and read by "
+                "parts |\n|---|---|---|---|---|---|---|---|---|---|---|\n");
     const double one = median(whole[counts.front()]);
     for (int n : counts) {
       const double w = median(whole[n]);
