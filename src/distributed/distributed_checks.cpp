@@ -4,20 +4,36 @@
 #include "mesh/duplicate_points.hpp"
 
 #include <algorithm>
+#include <climits>
 #include <cmath>
 #include <vector>
 
 namespace hoct {
 
-SurfaceShape gather_surface(MPI_Comm comm, const PieceSurface *own) {
-  const std::vector<std::byte> bytes = own ? encode_piece_surface(*own) : std::vector<std::byte>{};
-  std::vector<PieceSurface> pieces;
-  for (const std::vector<std::byte> &b : gather_bytes(comm, bytes))
-    if (!b.empty())
-      pieces.push_back(decode_piece_surface(b));
-  int rank = 0;
+SurfaceShape merge_surfaces(MPI_Comm comm, PieceSurface own) {
+  int rank = 0, ranks = 1;
   MPI_Comm_rank(comm, &rank);
-  return rank == 0 ? glue_pieces(pieces) : SurfaceShape{};
+  MPI_Comm_size(comm, &ranks);
+  constexpr int kTag = 79;
+  for (int step = 1; step < ranks; step *= 2) {
+    if (rank % (2 * step) != 0) { // the group's summary to the rank it merges into
+      const std::vector<std::byte> bytes = encode_piece_surface(own);
+      if (bytes.size() > static_cast<std::size_t>(INT_MAX))
+        throw Error("a group of pieces' seam band takes 2 GiB or more: use more ranks");
+      MPI_Send(bytes.data(), static_cast<int>(bytes.size()), MPI_BYTE, rank - step, kTag, comm);
+      return SurfaceShape{};
+    }
+    if (rank + step < ranks) {
+      MPI_Status status;
+      MPI_Probe(rank + step, kTag, comm, &status);
+      int n = 0;
+      MPI_Get_count(&status, MPI_BYTE, &n);
+      std::vector<std::byte> bytes(static_cast<std::size_t>(n));
+      MPI_Recv(bytes.data(), n, MPI_BYTE, rank + step, kTag, comm, MPI_STATUS_IGNORE);
+      own = merge_piece_surfaces(own, decode_piece_surface(bytes));
+    }
+  }
+  return surface_shape(own);
 }
 
 namespace {

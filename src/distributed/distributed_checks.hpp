@@ -14,9 +14,11 @@
 
 namespace hoct {
 
-// Collective: every rank's piece summary (`own`, null for a rank without cells) glued on rank 0,
-// which gets the whole surface's shape (the other ranks an empty one).
-SurfaceShape gather_surface(MPI_Comm comm, const PieceSurface *own);
+// Collective: every rank's piece summary (`own`; empty_piece_surface for a rank without cells)
+// merged pairwise in a binary tree over the ranks (rank r takes in r + 1, r + 2, r + 4, ... while
+// r is a multiple of twice the step): rank 0 gets the whole surface's shape (the other ranks an
+// empty one). A group's message is its border's band, not every piece's.
+SurfaceShape merge_surfaces(MPI_Comm comm, PieceSurface own);
 
 // Collective: whether any two vertices of different ids on different ranks lie within
 // `tolerance` (Euclidean) of each other, the same answer on every rank (each rank checks its own

@@ -288,8 +288,8 @@ DistributedOutcome distributed_tree_on(RankInput in, const MeshInput *whole, con
     PieceSurface own;
     UninitializedVector<Vec3> positions;
     UninitializedVector<int64_t> ids;
-    if (!empty_piece)
-      own = summarize_piece(topo, piece.global_point, open, rank, threads);
+    own = empty_piece ? empty_piece_surface(rank)
+                      : summarize_piece(topo, piece.global_point, spans, rank, threads);
     if (!empty_piece && ranks > 1) { // one rank: its own duplicate check was the whole's
       positions.resize(static_cast<std::size_t>(topo.num_vertices()));
       ids.resize(positions.size());
@@ -299,7 +299,7 @@ DistributedOutcome distributed_tree_on(RankInput in, const MeshInput *whole, con
         ids[v] = piece.global_point[p];
       }
     }
-    surface = gather_surface(comm, empty_piece ? nullptr : &own);
+    surface = merge_surfaces(comm, std::move(own));
     const auto &[lo, hi] = scales.box;
     const double tolerance = 1e-10 * std::hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]);
     if (duplicate_vertices_across(comm, positions, ids, tolerance, scales.box, threads) &&

@@ -1,11 +1,14 @@
 // The shape of a surface cut into pieces (one per MPI rank), from what each piece tells of itself:
 // its counts (vertices, edges, triangles, components, closed boundary loops) and its seam band,
-// the triangles at its open points (the points other pieces use too). Glued together, the
-// summaries give the whole surface's Euler characteristic, boundary loops, components and
-// orientability, and check the whole's fans at every open point (each open point's triangles, from
-// every piece, must form one fan: no edge of more than two triangles, no pinch) without the
-// whole mesh: what crosses is the seams, not the mesh. With each piece's own topology checked
-// (Topology::build with its open points), a clean glue proves the whole mesh has no
+// the triangles at its open points (the points other pieces use too). Merged pairwise, in a
+// binary tree over consecutive pieces as the ranks merge their kept trees, the summaries give
+// the whole surface's Euler characteristic, boundary loops, components and orientability, and
+// check the whole's fans at every open point (each open point's triangles, from every piece,
+// must form one fan: no edge of more than two triangles, no pinch) without the whole mesh. A
+// merge settles the points whose pieces it holds all (their span over the pieces), and keeps of
+// the band only the triangles at points still open: what crosses is the groups' borders, not the
+// mesh, nor every piece's seams on one rank. With each piece's own topology checked
+// (Topology::build with its open points), a clean merge proves the whole mesh has no
 // non-manifold edge or vertex, and its shape is the one computed.
 #pragma once
 
@@ -38,20 +41,39 @@ struct LoopEnd {
   int32_t pad = 0;
 };
 
-struct PieceSurface {
-  int32_t piece = 0;
-  int64_t vertices = 0, edges = 0, triangles = 0, components = 0;
-  int64_t closed_loops = 0; // boundary loops of the piece with no open point
-  bool orientable = true;
-  std::vector<BandTriangle> band;
-  std::vector<LoopEnd> loop_ends;
+// An open point, with the first and the last piece whose cells use it.
+struct OpenPoint {
+  int64_t point = 0;
+  int32_t first = 0, last = 0;
 };
 
-// The summary of one piece: `topology` its triangles' (built with `open_points`), `global_point`
-// the whole's id of each of its points, `open_points` a flag per point (shared with other
-// pieces); `threads` for the passes over the piece (the same summary for any count).
+// The summary of the pieces [piece, last_piece].
+struct PieceSurface {
+  int32_t piece = 0, last_piece = 0;
+  int64_t vertices = 0, edges = 0, triangles = 0, components = 0;
+  int64_t closed_loops = 0; // boundary loops with no open point
+  bool orientable = true;
+  std::vector<BandTriangle> band; // the triangles with a corner at a point still open
+  std::vector<LoopEnd> loop_ends; // runs of boundary edges ending at points still open
+  std::vector<OpenPoint> open;    // the points still open, ascending
+  std::string problem;            // the first problem a merge found (empty if none)
+};
+
+// The summary of one piece: `topology` its triangles' (built with its open points),
+// `global_point` the whole's id of each of its points, `spans` the first and last piece using
+// each of its points (open where they differ); `threads` for the passes over the piece (the
+// same summary for any count).
 PieceSurface summarize_piece(const Topology &topology, std::span<const int64_t> global_point,
-                             std::span<const uint8_t> open_points, int32_t piece, int threads = 1);
+                             std::span<const std::array<int32_t, 2>> spans, int32_t piece,
+                             int threads = 1);
+// The summary of a piece without cells (an idle rank's).
+PieceSurface empty_piece_surface(int32_t piece);
+
+// The summary of the pieces [a.piece, b.last_piece] from those of [a.piece, a.last_piece] and
+// [b.piece = a.last_piece + 1, b.last_piece]: the points whose span lies in it settled (their
+// fans checked; the edges at them shared, or on the whole's boundary; their boundary runs
+// joined), the rest kept for the next merge.
+PieceSurface merge_piece_surfaces(const PieceSurface &a, const PieceSurface &b);
 
 struct SurfaceShape {
   int64_t components = 0, euler_characteristic = 0, boundary_loops = 0;
@@ -60,8 +82,12 @@ struct SurfaceShape {
   std::string seam_problem;
 };
 
-// The whole surface from every piece's summary (in any order).
-SurfaceShape glue_pieces(const std::vector<PieceSurface> &pieces);
+// The shape of the whole from the summary of all pieces (every point settled).
+SurfaceShape surface_shape(const PieceSurface &all);
+
+// The whole surface from every piece's summary (in any order; the pieces without cells may be
+// missing): merged pairwise in a binary tree over the pieces, as the ranks merge them.
+SurfaceShape glue_pieces(std::vector<PieceSurface> pieces);
 
 // Byte form of a summary, for sending it.
 std::vector<std::byte> encode_piece_surface(const PieceSurface &s);

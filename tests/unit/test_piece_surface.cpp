@@ -1,5 +1,6 @@
-// The whole surface's shape glued from its pieces' summaries (mesh/piece_surface) against the
-// whole mesh's own topology: annulus, torus, Moebius strip, a plate with holes, a sphere and a
+// The whole surface's shape merged from its pieces' summaries (mesh/piece_surface), pairwise in a
+// binary tree (as the ranks merge them) and one piece after another, against the whole mesh's
+// own topology: annulus, torus, Moebius strip, a plate with holes, a sphere and a
 // disk, cut into 1 to 16 pieces of contiguous cells, in the file's order and with the cells
 // shuffled (ragged pieces, whose fans at shared points come in several wedges); and surfaces
 // that are not manifold only where pieces meet.
@@ -20,7 +21,8 @@ namespace hoct {
 namespace {
 
 struct Glued {
-  SurfaceShape shape;
+  SurfaceShape shape;        // merged in a binary tree, as the ranks merge them
+  SurfaceShape left_fold;    // merged one piece after another
   ProblemLog piece_problems; // what the pieces' own topologies found
 };
 
@@ -33,19 +35,31 @@ Glued glue(const MeshInput &whole, int pieces) {
     if (begin == end)
       continue;
     const MeshPiece piece = extract_piece(whole, begin, end);
+    const auto piece_spans = piece_point_spans(piece.global_point, spans);
     std::vector<uint8_t> open(piece.global_point.size());
-    for (std::size_t i = 0; i < open.size(); ++i) {
-      const auto &s = spans[static_cast<std::size_t>(piece.global_point[i])];
-      open[i] = s[0] != s[1];
-    }
+    for (std::size_t i = 0; i < open.size(); ++i)
+      open[i] = piece_spans[i][0] != piece_spans[i][1];
     const Topology t = Topology::build(piece.input, out.piece_problems, 1, open);
-    const PieceSurface s = summarize_piece(t, piece.global_point, open, r, 2);
+    const PieceSurface s = summarize_piece(t, piece.global_point, piece_spans, r, 2);
     // Through bytes, as the ranks send them.
     summaries.push_back(decode_piece_surface(encode_piece_surface(s)));
   }
+  PieceSurface fold = summaries.front();
+  for (std::size_t k = 1; k < summaries.size(); ++k) // through bytes too
+    fold = decode_piece_surface(encode_piece_surface(merge_piece_surfaces(fold, summaries[k])));
+  EXPECT_TRUE(fold.open.empty() && fold.band.empty() && fold.loop_ends.empty());
+  out.left_fold = surface_shape(fold);
   std::reverse(summaries.begin(), summaries.end()); // any order
   out.shape = glue_pieces(summaries);
   return out;
+}
+
+void expect_same_shape(const SurfaceShape &a, const SurfaceShape &b, const std::string &what) {
+  EXPECT_EQ(a.components, b.components) << what;
+  EXPECT_EQ(a.euler_characteristic, b.euler_characteristic) << what;
+  EXPECT_EQ(a.boundary_loops, b.boundary_loops) << what;
+  EXPECT_EQ(a.orientable, b.orientable) << what;
+  EXPECT_EQ(a.seam_problem.empty(), b.seam_problem.empty()) << what;
 }
 
 // The same cells in a shuffled order.
@@ -107,6 +121,7 @@ TEST(PieceSurface, GluedShapeIsTheWholeMeshs) {
         EXPECT_EQ(g.shape.euler_characteristic, t.euler_characteristic()) << what;
         EXPECT_EQ(g.shape.boundary_loops, t.boundary_loops()) << what;
         EXPECT_EQ(g.shape.orientable, t.orientable()) << what;
+        expect_same_shape(g.left_fold, g.shape, what + ", one piece after another");
       }
     }
 }
@@ -129,6 +144,8 @@ TEST(PieceSurface, PartsTouchingWhereThePiecesMeet) {
     EXPECT_FALSE(g.piece_problems.has_errors()) << pieces; // each piece alone is fine
     EXPECT_NE(g.shape.seam_problem.find("at point 0 form 2 fans"), std::string::npos)
         << pieces << ": " << g.shape.seam_problem;
+    EXPECT_NE(g.left_fold.seam_problem.find("at point 0 form 2 fans"), std::string::npos)
+        << pieces << ": " << g.left_fold.seam_problem;
   }
   // Three triangles on one edge, one per piece.
   MeshInput book;
@@ -142,6 +159,8 @@ TEST(PieceSurface, PartsTouchingWhereThePiecesMeet) {
   EXPECT_FALSE(g.piece_problems.has_errors());
   EXPECT_NE(g.shape.seam_problem.find("shared by 3 cells"), std::string::npos)
       << g.shape.seam_problem;
+  EXPECT_NE(g.left_fold.seam_problem.find("shared by 3 cells"), std::string::npos)
+      << g.left_fold.seam_problem;
   // Two disks apart: two components, two loops.
   MeshInput two = grid(4, 4, false, false, false);
   const MeshInput other = two;
@@ -161,6 +180,7 @@ TEST(PieceSurface, PartsTouchingWhereThePiecesMeet) {
     EXPECT_EQ(h.shape.boundary_loops, 2) << pieces;
     EXPECT_EQ(h.shape.euler_characteristic, 2) << pieces;
     EXPECT_EQ(h.shape.seam_problem, "") << pieces;
+    expect_same_shape(h.left_fold, h.shape, "two disks, one piece after another");
   }
 }
 
