@@ -10,6 +10,7 @@
 #include "distributed/distributed_tree.hpp"
 #include "distributed/pieces_gather.hpp"
 #include "distributed/rank_join.hpp"
+#include "distributed/vtu_by_ranks.hpp"
 #include "io/read_mesh.hpp"
 #include "mesh/gll_nodes.hpp"
 
@@ -19,7 +20,9 @@
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
+#include <cctype>
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 #include <optional>
 #include <string>
@@ -135,7 +138,7 @@ PyPiece joined_piece(std::vector<FilePiece> pieces, const std::string &failure,
 }
 #endif
 
-// read_pieces(path, comm): a .pvtu, each rank reading its own pieces.
+// read_pieces(path, comm): a .pvtu, each rank reading its own pieces; a .vtu, each its own part.
 PyPiece read_pieces(const std::string &path, const std::string &scalar,
                     const std::string &max_memory, int threads, long long fortran_comm) {
 #ifdef HOCT_WITH_MPI
@@ -145,7 +148,12 @@ PyPiece read_pieces(const std::string &path, const std::string &scalar,
   const FieldSelection field(py_checks::no_nul(scalar, "read_pieces: scalar"));
   py_checks::no_nul(path, "read_pieces: path");
   return collective(comm, [&] {
-    RankRead read = read_pvtu_by_ranks(path, field, limits, comm);
+    std::string extension = std::filesystem::path(path).extension().string();
+    for (char &c : extension)
+      c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    const bool vtu = extension == ".vtu";
+    RankRead read = vtu ? read_vtu_by_ranks(path, field, limits, comm)
+                        : read_pvtu_by_ranks(path, field, limits, comm);
     if (read.input) {
       // DOLFINx's degree >= 3 nodes at GLL points, resampled piece by piece as hoct.read
       // resamples the whole.

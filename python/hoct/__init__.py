@@ -137,21 +137,23 @@ def from_arrays(points, cells, values, degree=None, cell_types=None, merge_dupli
 
 
 def read_pieces(path, comm, scalar=None, max_memory=None, threads=None):
-    """This rank's pieces of a partitioned .pvtu, under mpi4py (`comm`, e.g. MPI.COMM_WORLD;
-    every rank of it calls this): rank r of R reads pieces [r P / R, (r + 1) P / R) of the P the
-    file lists and the ranks join them together (ghost cells dropped, shared points merged by
-    global ids, else by position), as `mpirun -np R hoct tree FILE.pvtu` does: no rank holds
-    the whole mesh. Returns a Piece for `contour_tree(piece, comm=comm)`.
+    """This rank's pieces of a partitioned .pvtu, or its part of one .vtu, under mpi4py (`comm`,
+    e.g. MPI.COMM_WORLD; every rank of it calls this). A .pvtu: rank r of R reads pieces
+    [r P / R, (r + 1) P / R) of the P the file lists and the ranks join them together (ghost
+    cells dropped, shared points merged by global ids, else by position). A .vtu of raw appended
+    arrays (VTK's and hoct's default): rank r reads the cells [r n / R, (r + 1) n / R) and the
+    points they use. As `mpirun -np R hoct tree FILE` does: no rank holds the whole mesh.
+    Returns a Piece for `contour_tree(piece, comm=comm)`.
 
-    Where the ranks cannot be sure to join the pieces alone (fields that differ, copies of a
-    point that disagree), every rank reads the whole file instead: `piece.whole_on_every_rank`
+    Where the ranks cannot do so alone (fields that differ, copies of a point that disagree, a
+    .vtu of inline arrays), every rank reads the whole file instead: `piece.whole_on_every_rank`
     says why (None otherwise). `scalar`, `max_memory`, `threads` as for `read`. Errors are
     raised on every rank alike."""
     what = "read_pieces"
     path = _args.path(path, what + ": path")
-    if not os.fsdecode(path).lower().endswith(".pvtu"):
-        raise HoctError(what + ": %s is not a partitioned .pvtu file (read other files with "
-                        "hoct.read and pass comm= to contour_tree)" % os.fsdecode(path))
+    if not os.fsdecode(path).lower().endswith((".pvtu", ".vtu")):
+        raise HoctError(what + ": %s is neither a partitioned .pvtu nor a .vtu file (read other "
+                        "files with hoct.read and pass comm= to contour_tree)" % os.fsdecode(path))
     scalar = "" if scalar is None else _args.text(scalar, what + ": scalar")
     budget = "" if max_memory is None else _args.text(str(max_memory), what + ": max_memory")
     return _hoct.read_pieces(os.fsdecode(path), scalar, budget, _args.threads(threads, what),

@@ -6,13 +6,15 @@ The independent truth is the command line without MPI on the same partitioned fi
 joins the pieces in one process (`hoct tree FILE.pvtu --json --no-timings`): rank 0's JSON
 must be byte-identical to it, and the other ranks get None.
 - read_pieces: .pvtu files of 4 pieces written by VTK (ghost level 1 with global ids, ghost
-  level 0 without ids: copies joined by position), on 1-4 and 2-3 ranks; no rank reads the
-  whole (`whole_on_every_rank` is None) and the ranks' cells add up to the whole's.
+  level 0 without ids: copies joined by position), on 1-4 and 2-3 ranks, and one .vtu read by
+  parts on 1-3 ranks; no rank reads the whole (`whole_on_every_rank` is None) and the ranks'
+  cells add up to the whole's; a .vtu of inline arrays is read whole on every rank, which says
+  why.
 - piece_from_arrays: rank r passes the arrays of piece r of a .pvtu of consecutive cells
   (points, cells in VTK order, values, with and without global ids; with ghost cells flagged):
   cubic triangles on 2 and 3 ranks, a plate with 100 holes (the Reeb graph) on 3, a plateau on 2.
 - Errors: a rank's bad arrays are raised on every rank naming that rank; comm missing for a
-  Piece; a piece used on another communicator; a file that is no .pvtu; copies of a point (one
+  Piece; a piece used on another communicator; a file neither .pvtu nor .vtu; copies of a point (one
   global id) at different positions: the ranks cannot join alone, every rank joins the whole and
   raises its refusal.
 
@@ -172,6 +174,23 @@ with tempdir() as d:
             same_tree(label, n, "read", {"path": pvtu}, want, cells)
         print(f"{label}: {counts} ranks checked", flush=True)
 
+    # read_pieces on one .vtu (raw appended arrays): each rank reads its own part.
+    want, cells = cli_tree("read_pieces, one .vtu", gauss)
+    for n in (1, 2, 3):
+        same_tree("read_pieces, one .vtu", n, "read", {"path": gauss}, want, cells)
+    # Inline arrays: every rank reads the whole file, and says why.
+    inline = os.path.join(d, "gauss_inline.vtu")
+    run("generate", "gauss", "--cells", "3000", "--degree", "3", "--encoding", "zlib", "-o", inline)
+    got = os.path.join(d, "inline.json")
+    p = mpi(2, "read", {"path": inline}, got)
+    with open(got + ".sizes") as f:
+        sizes = json.load(f)
+    r.check(p.returncode == 0 and read(got) == read(cli_tree("inline", inline)[0])
+            and all(w and "not raw appended data" in w for _, _, w in sizes),
+            f"read_pieces, inline .vtu: the whole on every rank, saying why: {sizes} "
+            f"{p.stderr[-800:]}")
+    print("read_pieces, one .vtu: (1, 2, 3) ranks checked", flush=True)
+
     # 2. piece_from_arrays: rank r passes piece r's arrays.
     plate = os.path.join(d, "plate.vtu")
     run("generate", "plate", "--cells", "1500", "--degree", "2", "-o", plate)
@@ -229,7 +248,8 @@ with tempdir() as d:
          "not the communicator the piece was made on"),
         ("ids that disagree", {"case": "ids disagree", "files": files3},
          "the ids are not the same points"),
-        ("not a .pvtu", {"case": "vtu", "path": gauss}, "not a partitioned .pvtu"),
+        ("neither a .pvtu nor a .vtu", {"case": "msh", "path": gauss[:-4] + ".msh"},
+         "neither a partitioned .pvtu nor a .vtu"),
     ]:
         p = mpi(3, "raises", options)
         raised = sorted(int(x) for x in re.findall(r"RAISED (\d+): ", p.stdout))
