@@ -63,6 +63,50 @@ struct Answer {
   int64_t local, global;
 };
 
+// Per point of this rank's pieces (`n` of them, merging by ids): whether another copy of its id
+// may exist, at block granularity: the ids are cut into at most 65,536 blocks of consecutive ids;
+// a block two ranks hold, or with an id this rank holds twice, is shared. A copy in no shared block
+// has no other copy: its owner would decide it stays, so it need not be sent. Collective. Empty
+// (every copy sent) for negative ids.
+std::vector<uint8_t> shared_id_blocks(MPI_Comm comm, const PieceParts &parts, std::size_t n) {
+  int64_t range[2] = {std::numeric_limits<int64_t>::max(), -1}; // -min, max
+  for (std::size_t i = 0; i < n; ++i) {
+    range[0] = std::min(range[0], parts.global[i]);
+    range[1] = std::max(range[1], parts.global[i]);
+  }
+  range[0] = -range[0];
+  MPI_Allreduce(MPI_IN_PLACE, range, 2, MPI_INT64_T, MPI_MAX, comm);
+  if (-range[0] < 0 || range[1] < 0)
+    return {};
+  const int64_t block = std::max<int64_t>(1024, range[1] / 65536 + 1);
+  const std::size_t blocks = static_cast<std::size_t>(range[1] / block + 1);
+  // Per block: 1 held by this rank, 2 if it holds an id of it twice (two of its pieces' copies,
+  // or two in one piece); summed over the ranks, a block counts 2 or more where it is shared.
+  // The ids seen: a bit per id of each block the rank holds.
+  const std::size_t words = static_cast<std::size_t>((block + 63) / 64);
+  std::vector<int32_t> held(blocks, 0);
+  std::vector<int64_t> slot(blocks, -1);
+  std::vector<uint64_t> seen;
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::size_t b = static_cast<std::size_t>(parts.global[i] / block);
+    if (slot[b] < 0) {
+      slot[b] = static_cast<int64_t>(seen.size());
+      seen.resize(seen.size() + words, 0);
+      held[b] = 1;
+    }
+    const std::size_t bit = static_cast<std::size_t>(parts.global[i] % block);
+    uint64_t &word = seen[static_cast<std::size_t>(slot[b]) + bit / 64];
+    if (word >> (bit % 64) & 1)
+      held[b] = 2;
+    word |= uint64_t{1} << (bit % 64);
+  }
+  MPI_Allreduce(MPI_IN_PLACE, held.data(), static_cast<int>(blocks), MPI_INT32_T, MPI_SUM, comm);
+  std::vector<uint8_t> shared(n);
+  for (std::size_t i = 0; i < n; ++i)
+    shared[i] = held[static_cast<std::size_t>(parts.global[i] / block)] >= 2;
+  return shared;
+}
+
 bool before(const Copy &a, const Copy &b) {
   return a.rank != b.rank ? a.rank < b.rank : a.local < b.local;
 }
@@ -181,7 +225,10 @@ RankRead join_rank_pieces(std::vector<FilePiece> pieces, const std::string &fail
   const ToleranceGrid grid(box, position_tolerance);
   if (sums[0] > 1) {
     if (ids) {
+      const std::vector<uint8_t> shared = shared_id_blocks(comm, parts, n);
       for (std::size_t i = 0; i < n; ++i) {
+        if (!shared.empty() && !shared[i])
+          continue; // no other copy of its id anywhere: it stays, as its owner would decide
         const uint64_t h = static_cast<uint64_t>(parts.global[i]) * 0x9e3779b97f4a7c15ull;
         sent[(h >> 32) % static_cast<uint64_t>(ranks)].push_back(copy_of(i));
       }
