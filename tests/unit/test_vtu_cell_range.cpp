@@ -4,6 +4,7 @@
 // points once. Files it cannot read by parts say why; a part that finds a broken cell or a NaN
 // in its own range throws.
 #include "datasets/datasets.hpp"
+#include "io/base64.hpp"
 #include "io/vtu_cell_range.hpp"
 #include "io/vtu_reader.hpp"
 #include "io/vtu_writer.hpp"
@@ -16,6 +17,7 @@
 #include <cmath>
 #include <fstream>
 #include <iterator>
+#include <random>
 
 namespace hoct {
 namespace {
@@ -75,6 +77,38 @@ void expect_parts_are_the_whole(const std::string &path, const std::string &labe
   }
 }
 
+// A file of inline base64 arrays (zlib blocks) rewritten with the same blocks as raw appended
+// data, as VTK writes by default: what read_vtu_cell_range reads block by block.
+std::string appended_zlib(const std::string &inline_file) {
+  std::ifstream in(inline_file, std::ios::binary);
+  const std::string text((std::istreambuf_iterator<char>(in)), {});
+  std::string xml, payload;
+  std::size_t at = 0;
+  while (true) {
+    const std::size_t tag = text.find("<DataArray", at);
+    if (tag == std::string::npos)
+      break;
+    const std::size_t close = text.find('>', tag);
+    const std::size_t end = text.find("</DataArray>", close);
+    std::string head = text.substr(tag, close - tag);
+    const std::size_t f = head.find("format=\"binary\"");
+    if (f == std::string::npos) { // not an inline binary array: as it is
+      xml += text.substr(at, end - at);
+      at = end;
+      continue;
+    }
+    head.replace(f, 15, "format=\"appended\" offset=\"" + std::to_string(payload.size()) + "\"");
+    const std::vector<uint8_t> raw = base64_decode(text.substr(close + 1, end - close - 1));
+    payload.append(raw.begin(), raw.end());
+    xml += text.substr(at, tag - at) + head + "/>";
+    at = end + std::string("</DataArray>").size();
+  }
+  xml += text.substr(at);
+  const std::size_t last = xml.rfind("</VTKFile>");
+  return xml.substr(0, last) + "<AppendedData encoding=\"raw\">_" + payload +
+         "</AppendedData>\n</VTKFile>\n";
+}
+
 MeshInput dataset(const std::string &name, int degree, long long cells, bool quads = false) {
   DatasetOptions o;
   o.degree = degree;
@@ -93,6 +127,11 @@ TEST(VtuCellRange, ThePartsAreTheWholeFile) {
            {"two cells", dataset("two-triangle", 0, 0)}}) {
     write_vtu(path, in, VtkEncoding::AppendedRaw);
     expect_parts_are_the_whole(path, label);
+    // zlib blocks of raw appended data, each part inflating the blocks over its ranges.
+    const std::string inline_file = tmp.file("inline.vtu");
+    write_vtu(inline_file, in, VtkEncoding::Base64Zlib);
+    std::ofstream(path, std::ios::binary) << appended_zlib(inline_file);
+    expect_parts_are_the_whole(path, label + ", zlib");
   }
 }
 
@@ -140,6 +179,82 @@ TEST(VtuCellRange, APartThrowsForWhatItFindsInItsRange) {
         EXPECT_TRUE(read_vtu_cell_range(path, {}, {}, part, parts, why).has_value());
       }
     }
+  }
+}
+
+// Corrupted files (a byte of the appended data or a digit of the XML changed, 600 times): every
+// part ends in a result or an InputError, never another exception or a crash (the sanitizers'
+// build runs this too); and where every part reads its range, read_vtu reads the file to the
+// same cells, points and values (the parts check together what the whole read checks).
+TEST(VtuCellRange, CorruptedFilesFailCleanlyOrReadAsTheWhole) {
+  TempDir tmp;
+  const std::string clean = tmp.file("clean.vtu"), path = tmp.file("corrupt.vtu");
+  const MeshInput mesh = dataset("random", 2, 40);
+  write_vtu(clean, mesh, VtkEncoding::AppendedRaw);
+  std::ifstream in(clean, std::ios::binary);
+  const std::string raw_bytes((std::istreambuf_iterator<char>(in)), {});
+  write_vtu(clean, mesh, VtkEncoding::Base64Zlib);
+  const std::string zlib_bytes = appended_zlib(clean);
+  for (const std::string &bytes : {raw_bytes, zlib_bytes}) {
+    const std::size_t payload = bytes.find('_', bytes.find("<AppendedData")) + 1;
+    ASSERT_NE(payload, std::string::npos);
+    std::mt19937_64 rng(11);
+    int all_read = 0, refused = 0;
+    for (int trial = 0; trial < 600; ++trial) {
+      std::string b = bytes;
+      if (trial % 2 == 0) { // a byte of the payload (headers, offsets, connectivity, values)
+        const std::size_t at = payload + rng() % (b.size() - payload - 20);
+        b[at] = static_cast<char>(rng());
+      } else { // a digit of the XML (counts, offsets, components)
+        std::vector<std::size_t> digits;
+        for (std::size_t i = 0; i < payload; ++i)
+          if (b[i] >= '0' && b[i] <= '9')
+            digits.push_back(i);
+        b[digits[rng() % digits.size()]] = static_cast<char>('0' + rng() % 10);
+      }
+      std::ofstream(path, std::ios::binary) << b;
+      constexpr int kParts = 3;
+      std::vector<VtuCellRange> parts;
+      bool ok = true;
+      for (int part = 0; part < kParts; ++part) {
+        std::string why;
+        try {
+          auto r = read_vtu_cell_range(path, {}, {}, part, kParts, why);
+          if (!r)
+            ok = false;
+          else
+            parts.push_back(std::move(*r));
+        } catch (const InputError &) {
+          ok = false;
+        }
+      }
+      if (!ok) {
+        ++refused;
+        continue;
+      }
+      ++all_read;
+      MeshInput whole;
+      try {
+        whole = read_vtu(path);
+      } catch (const InputError &e) {
+        ADD_FAILURE() << "trial " << trial << ": the parts read it, read_vtu refuses: " << e.what();
+        continue;
+      }
+      std::vector<int64_t> nodes;
+      for (const VtuCellRange &r : parts) {
+        nodes.insert(nodes.end(), r.input.cell_nodes.begin(), r.input.cell_nodes.end());
+        for (int64_t q = r.check_begin; q < r.check_end; ++q) {
+          const std::size_t i = static_cast<std::size_t>(r.point_index(q));
+          EXPECT_EQ(r.input.points[i], whole.points[static_cast<std::size_t>(q)]) << trial;
+          EXPECT_EQ(r.input.values[i], whole.values[static_cast<std::size_t>(q)]) << trial;
+        }
+      }
+      EXPECT_EQ(nodes, std::vector<int64_t>(whole.cell_nodes.begin(), whole.cell_nodes.end()))
+          << "trial " << trial;
+    }
+    // Both outcomes were met (the corruptions are not all harmless, nor all fatal).
+    EXPECT_GT(all_read, 50);
+    EXPECT_GT(refused, 50);
   }
 }
 
