@@ -1,6 +1,7 @@
 #include "distributed/rank_join.hpp"
 
 #include "distributed/distributed_checks.hpp"
+#include "distributed/fingerprint_chain.hpp"
 #include "distributed/mpi_exchange.hpp"
 #include "io/piece_join.hpp"
 #include "mesh/duplicate_points.hpp"
@@ -26,12 +27,6 @@ bool all_ranks(MPI_Comm comm, bool ok) {
   int v = ok ? 1 : 0;
   MPI_Allreduce(MPI_IN_PLACE, &v, 1, MPI_INT, MPI_MIN, comm);
   return v != 0;
-}
-
-int64_t exclusive_sum(MPI_Comm comm, int64_t own, int rank) {
-  int64_t before = 0;
-  MPI_Exscan(&own, &before, 1, MPI_INT64_T, MPI_SUM, comm);
-  return rank == 0 ? 0 : before;
 }
 
 // A copy of a point (a piece's) sent to the rank that decides which point of the whole it is.
@@ -150,7 +145,7 @@ RankRead join_rank_pieces(std::vector<FilePiece> pieces, const std::string &fail
 
   // 1. This rank's pieces, each one's ghosts dropped, one after the other; their numbers among
   // all ranks' pieces.
-  const int64_t first = exclusive_sum(comm, static_cast<int64_t>(pieces.size()), rank);
+  const int64_t first = exclusive_sum(comm, static_cast<int64_t>(pieces.size()));
   PieceParts parts;
   std::string problem = failure;
   if (problem.empty()) {
@@ -349,7 +344,7 @@ RankRead join_rank_pieces(std::vector<FilePiece> pieces, const std::string &fail
   int64_t stay = 0;
   for (std::size_t i = 0; i < n; ++i)
     stay += stays(i);
-  const int64_t base = exclusive_sum(comm, stay, rank);
+  const int64_t base = exclusive_sum(comm, stay);
   UninitializedVector<int64_t> global(n);
   int64_t next = base;
   std::vector<std::vector<Ask>> asks(static_cast<std::size_t>(ranks));
@@ -375,41 +370,20 @@ RankRead join_rank_pieces(std::vector<FilePiece> pieces, const std::string &fail
   MPI_Allreduce(MPI_IN_PLACE, totals, 2, MPI_INT64_T, MPI_SUM, comm);
   const int64_t whole_points = totals[0], whole_cells = sums[1];
   const bool with_kinds = sums[2] > 0;
-  FingerprintState fp = fingerprint_start();
-  static_assert(std::is_trivially_copyable_v<FingerprintState>);
-  constexpr int kStateBytes = static_cast<int>(sizeof(FingerprintState));
-  const int sections = with_kinds ? 5 : 4;
-  for (int s = 0; s < sections; ++s) {
-    constexpr int kTag = 77;
-    if (rank > 0)
-      MPI_Recv(&fp, kStateBytes, MPI_BYTE, rank - 1, kTag, comm, MPI_STATUS_IGNORE);
-    else if (s > 0 && ranks > 1)
-      MPI_Recv(&fp, kStateBytes, MPI_BYTE, ranks - 1, kTag, comm, MPI_STATUS_IGNORE);
-    if (rank == 0 && s < 4)
-      fingerprint_count(fp, static_cast<uint64_t>(s < 2    ? whole_points
-                                                  : s == 2 ? whole_cells
-                                                           : totals[1]));
-    if (s == 0 || s == 1) {
+  auto own = [&](int s, FingerprintState &fp) {
+    if (s == kPointsSection || s == kValuesSection) {
       // Runs of points that stay, hashed in place.
       for (std::size_t i = 0; i < n;) {
         std::size_t j = i;
         while (j < n && stays(j))
           ++j;
-        if (s == 0)
+        if (s == kPointsSection)
           fingerprint_words(fp, m.points.data() + i, 3 * (j - i));
         else
           fingerprint_words(fp, m.values.data() + i, j - i);
         i = j < n ? j + 1 : j;
       }
-    } else if (s == 2 || s == 4) {
-      const auto &bytes = s == 2 ? m.cell_degree : m.cell_kind;
-      fingerprint_packed(fp, bytes.data(), bytes.size());
-      // A rank of triangles alone keeps no kinds: theirs are zeros (Lagrange triangles).
-      const std::vector<uint8_t> zeros(m.num_cells() - bytes.size(), 0);
-      fingerprint_packed(fp, zeros.data(), zeros.size());
-      if (rank == ranks - 1)
-        fingerprint_flush_packed(fp);
-    } else {
+    } else if (s == kNodesSection) {
       int64_t nodes[4096];
       for (std::size_t k = 0; k < m.cell_nodes.size(); k += 4096) {
         const std::size_t end = std::min(m.cell_nodes.size(), k + 4096);
@@ -417,14 +391,12 @@ RankRead join_rank_pieces(std::vector<FilePiece> pieces, const std::string &fail
           nodes[j - k] = global[static_cast<std::size_t>(m.cell_nodes[j])];
         fingerprint_words(fp, nodes, end - k);
       }
+    } else {
+      fingerprint_cell_bytes(fp, s == kDegreesSection ? m.cell_degree : m.cell_kind, m.num_cells());
     }
-    if (rank < ranks - 1)
-      MPI_Send(&fp, kStateBytes, MPI_BYTE, rank + 1, kTag, comm);
-    else if (s + 1 < sections && ranks > 1)
-      MPI_Send(&fp, kStateBytes, MPI_BYTE, 0, kTag, comm);
-  }
-  if (ranks > 1) // the end state from the last rank
-    MPI_Bcast(&fp, kStateBytes, MPI_BYTE, ranks - 1, comm);
+  };
+  const uint64_t fingerprint = fingerprint_by_ranks(
+      comm, {whole_points, whole_points, whole_cells, totals[1]}, with_kinds, own);
 
   // 7. This rank's share: its cells, the points they use in the whole's order, their spans.
   RankInput in;
@@ -492,15 +464,15 @@ RankRead join_rank_pieces(std::vector<FilePiece> pieces, const std::string &fail
   if (!out.cell_kind.empty())
     for (std::size_t c = 0; c < out.num_cells(); ++c)
       triangles += is_quadrilateral(out.kind(c)) ? 1 : 0;
-  piece.first_cell = exclusive_sum(comm, static_cast<int64_t>(out.num_cells()), rank);
-  in.first_triangle = exclusive_sum(comm, triangles, rank);
+  piece.first_cell = exclusive_sum(comm, static_cast<int64_t>(out.num_cells()));
+  in.first_triangle = exclusive_sum(comm, triangles);
   in.whole_cells = whole_cells;
   in.whole_points = whole_points;
   in.cells_split = with_kinds;
   in.source = source;
   in.field_name = field_name;
   if (rank == 0)
-    in.fingerprint = InputFingerprint{whole_points, whole_cells, field_name, fingerprint_value(fp)};
+    in.fingerprint = InputFingerprint{whole_points, whole_cells, field_name, fingerprint};
   result.input = std::move(in);
   return result;
 }

@@ -1,8 +1,8 @@
 // A whole mesh read by rank 0 alone, cut into one share per rank and sent to each: every rank
 // gets the RankInput distributed_tree(whole, ...) makes of the whole on every rank (its contiguous
 // cells, their points' spans over the ranks, the whole's counts; the whole's fingerprint on rank
-// 0), and only rank 0 ever holds the whole, while it cuts it. For a file that is not partitioned
-// (.vtu, .msh, ...): no rank but 0 reads it.
+// 0), and only rank 0 ever holds the whole, while it cuts it. For a file the ranks cannot read
+// by pieces or parts (.msh, a .vtu of inline arrays, ...): no rank but 0 reads it.
 #pragma once
 
 #include "distributed/distributed_tree.hpp"

@@ -1,9 +1,9 @@
 #include "distributed/vtu_by_ranks.hpp"
 
+#include "distributed/fingerprint_chain.hpp"
 #include "distributed/mpi_exchange.hpp"
 #include "io/vtu_cell_range.hpp"
 #include "io/vtu_reader.hpp"
-#include "mesh/mesh_fingerprint.hpp"
 #include "mesh/mesh_partition.hpp"
 
 #include <algorithm>
@@ -11,17 +11,10 @@
 #include <cstdint>
 #include <limits>
 #include <optional>
-#include <type_traits>
 #include <vector>
 
 namespace hoct {
 namespace {
-
-int64_t exclusive_sum(MPI_Comm comm, int64_t own, int rank) {
-  int64_t before = 0;
-  MPI_Exscan(&own, &before, 1, MPI_INT64_T, MPI_SUM, comm);
-  return rank == 0 ? 0 : before;
-}
 
 // A point id a rank's cells use, sent to a rank whose cells use points around it.
 struct UsedBy {
@@ -67,52 +60,26 @@ std::vector<std::array<int32_t, 2>> point_spans(const std::vector<int64_t> &used
   return span;
 }
 
-// The whole's fingerprint (mesh_fingerprint's sections), passed from rank to rank: each rank
-// hashes the points it checked and its cells, in the file's order. On the last rank; every
-// rank gets the value.
-uint64_t fingerprint_by_ranks(const VtuCellRange &v, int64_t whole_cells, int64_t whole_nodes,
-                              bool with_kinds, int rank, int ranks, MPI_Comm comm) {
+// The whole's fingerprint, passed from rank to rank: each rank hashes the points it checked
+// (consecutive in its arrays: their blocks were read) and its cells, in the file's order.
+uint64_t fingerprint_of_parts(const VtuCellRange &v, int64_t whole_cells, int64_t whole_nodes,
+                              bool with_kinds, MPI_Comm comm) {
   const MeshInput &m = v.input;
-  // The checked points are consecutive there (their blocks were read).
   const std::size_t n = static_cast<std::size_t>(v.check_end - v.check_begin),
                     at = n ? static_cast<std::size_t>(v.point_index(v.check_begin)) : 0;
-  FingerprintState fp = fingerprint_start();
-  static_assert(std::is_trivially_copyable_v<FingerprintState>);
-  constexpr int kStateBytes = static_cast<int>(sizeof(FingerprintState));
-  constexpr int kTag = 78;
-  const int sections = with_kinds ? 5 : 4;
-  for (int s = 0; s < sections; ++s) {
-    if (rank > 0)
-      MPI_Recv(&fp, kStateBytes, MPI_BYTE, rank - 1, kTag, comm, MPI_STATUS_IGNORE);
-    else if (s > 0 && ranks > 1)
-      MPI_Recv(&fp, kStateBytes, MPI_BYTE, ranks - 1, kTag, comm, MPI_STATUS_IGNORE);
-    if (rank == 0 && s < 4)
-      fingerprint_count(fp, static_cast<uint64_t>(s < 2    ? v.file_points
-                                                  : s == 2 ? whole_cells
-                                                           : whole_nodes));
-    if (s == 0) {
+  auto own = [&](int s, FingerprintState &fp) {
+    if (s == kPointsSection) {
       fingerprint_words(fp, m.points.data() + at, 3 * n);
-    } else if (s == 1) {
+    } else if (s == kValuesSection) {
       fingerprint_words(fp, m.values.data() + at, n);
-    } else if (s == 2 || s == 4) {
-      const auto &bytes = s == 2 ? m.cell_degree : m.cell_kind;
-      fingerprint_packed(fp, bytes.data(), bytes.size());
-      // A rank of triangles alone keeps no kinds: theirs are zeros (Lagrange triangles).
-      const std::vector<uint8_t> zeros(m.num_cells() - bytes.size(), 0);
-      fingerprint_packed(fp, zeros.data(), zeros.size());
-      if (rank == ranks - 1)
-        fingerprint_flush_packed(fp);
-    } else {
+    } else if (s == kNodesSection) {
       fingerprint_words(fp, m.cell_nodes.data(), m.cell_nodes.size());
+    } else {
+      fingerprint_cell_bytes(fp, s == kDegreesSection ? m.cell_degree : m.cell_kind, m.num_cells());
     }
-    if (rank < ranks - 1)
-      MPI_Send(&fp, kStateBytes, MPI_BYTE, rank + 1, kTag, comm);
-    else if (s + 1 < sections && ranks > 1)
-      MPI_Send(&fp, kStateBytes, MPI_BYTE, 0, kTag, comm);
-  }
-  if (ranks > 1)
-    MPI_Bcast(&fp, kStateBytes, MPI_BYTE, ranks - 1, comm);
-  return fingerprint_value(fp);
+  };
+  return fingerprint_by_ranks(comm, {v.file_points, v.file_points, whole_cells, whole_nodes},
+                              with_kinds, own);
 }
 
 } // namespace
@@ -163,8 +130,7 @@ RankRead read_vtu_by_ranks(const std::string &path, const FieldSelection &field,
     read.fallback = "the file has no surface cells";
     return read;
   }
-  const uint64_t fingerprint =
-      fingerprint_by_ranks(v, whole_cells, sums[1], sums[2] > 0, rank, ranks, comm);
+  const uint64_t fingerprint = fingerprint_of_parts(v, whole_cells, sums[1], sums[2] > 0, comm);
 
   // This rank's share: the points its cells use, in the whole's order (marked over the points
   // it read, block after block), and their spans.
@@ -214,8 +180,8 @@ RankRead read_vtu_by_ranks(const std::string &path, const FieldSelection &field,
   out.cell_degree = std::move(m.cell_degree);
   out.cell_kind = std::move(m.cell_kind);
   out.cell_nodes = std::move(m.cell_nodes);
-  piece.first_cell = exclusive_sum(comm, static_cast<int64_t>(out.num_cells()), rank);
-  in.first_triangle = exclusive_sum(comm, triangles, rank);
+  piece.first_cell = exclusive_sum(comm, static_cast<int64_t>(out.num_cells()));
+  in.first_triangle = exclusive_sum(comm, triangles);
   in.whole_cells = whole_cells;
   in.whole_points = v.file_points;
   in.cells_split = sums[2] > 0;

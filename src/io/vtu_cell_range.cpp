@@ -137,12 +137,8 @@ std::optional<VtuCellRange> VtuFile::read_cell_range(int part, int parts, std::s
   if (static_cast<unsigned long long>(np) > file_size_ ||
       static_cast<unsigned long long>(nc) > file_size_)
     fail(where + ": NumberOfPoints / NumberOfCells exceed what the file can hold");
-  const pugi::xml_node pa = single_child(single_child(piece, "Points"), "DataArray");
-  if (!pa)
-    fail(where + ": no <Points> DataArray");
-  const int pc = pa.attribute("NumberOfComponents").as_int(1);
-  if (pc != 3 && pc != 2)
-    fail(where + ": Points have " + std::to_string(pc) + " components (expected 3)");
+  int pc = 3;
+  const pugi::xml_node pa = points_array(piece, where, pc);
   const pugi::xml_node pd = single_child(piece, "PointData");
   const pugi::xml_node cd = single_child(piece, "CellData");
   if (named_array(pd, "vtkGhostType") || named_array(cd, "vtkGhostType")) {
@@ -155,11 +151,7 @@ std::optional<VtuCellRange> VtuFile::read_cell_range(int part, int parts, std::s
     return std::nullopt;
   }
   const pugi::xml_node sa = choose_field(pd, where);
-  const pugi::xml_node cells = single_child(piece, "Cells");
-  const pugi::xml_node ca = named_array(cells, "connectivity"), oa = named_array(cells, "offsets"),
-                       ta = named_array(cells, "types");
-  if (!ca || !oa || !ta)
-    fail(where + ": <Cells> needs the DataArrays connectivity, offsets and types");
+  const auto [ca, oa, ta] = cell_arrays(piece, where);
   for (const pugi::xml_node &a : {pa, sa, ca, oa, ta})
     if (a.attribute("format").as_string() != std::string("appended")) {
       why = "its arrays are not all appended data";

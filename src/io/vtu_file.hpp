@@ -10,6 +10,7 @@
 
 #include <pugixml.hpp>
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -90,6 +91,12 @@ private:
   // The point-data array field_ names in pd, or the default (FieldSelection::name); refuses
   // what cannot give a scalar field, listing the arrays there are.
   pugi::xml_node choose_field(const pugi::xml_node &pd, const std::string &where) const;
+  // A piece's <Points> DataArray and its component count (2 or 3), refused otherwise.
+  pugi::xml_node points_array(const pugi::xml_node &piece, const std::string &where,
+                              int &components) const;
+  // A piece's <Cells> arrays: connectivity, offsets, types (each required).
+  std::array<pugi::xml_node, 3> cell_arrays(const pugi::xml_node &piece,
+                                            const std::string &where) const;
   void load();
   void load_whole();
   bool open_streamed();

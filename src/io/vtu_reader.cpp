@@ -860,6 +860,27 @@ void VtuFile::read_point_arrays(const pugi::xml_node &pd, int64_t base, std::siz
   arrays_.global_ids_name = name;
 }
 
+pugi::xml_node VtuFile::points_array(const pugi::xml_node &piece, const std::string &where,
+                                     int &components) const {
+  const pugi::xml_node pa = single_child(single_child(piece, "Points"), "DataArray");
+  if (!pa)
+    fail(where + ": no <Points> DataArray");
+  components = pa.attribute("NumberOfComponents").as_int(1);
+  if (components != 3 && components != 2)
+    fail(where + ": Points have " + std::to_string(components) + " components (expected 3)");
+  return pa;
+}
+
+std::array<pugi::xml_node, 3> VtuFile::cell_arrays(const pugi::xml_node &piece,
+                                                   const std::string &where) const {
+  const pugi::xml_node cells = single_child(piece, "Cells");
+  const pugi::xml_node ca = named_array(cells, "connectivity"), oa = named_array(cells, "offsets"),
+                       ta = named_array(cells, "types");
+  if (!ca || !oa || !ta)
+    fail(where + ": <Cells> needs the DataArrays connectivity, offsets and types");
+  return {ca, oa, ta};
+}
+
 MeshInput VtuFile::read() {
   load();
   const pugi::xml_node grid = single_child(doc_.child("VTKFile"), "UnstructuredGrid");
@@ -889,12 +910,8 @@ MeshInput VtuFile::read() {
                  m.cell_nodes.size() + 3 * static_cast<uint64_t>(nc), path_ + ": " + where);
     const int64_t base = static_cast<int64_t>(m.points.size());
     // Points.
-    const pugi::xml_node pa = single_child(single_child(piece, "Points"), "DataArray");
-    if (!pa)
-      fail(where + ": no <Points> DataArray");
-    const int pc = pa.attribute("NumberOfComponents").as_int(1);
-    if (pc != 3 && pc != 2)
-      fail(where + ": Points have " + std::to_string(pc) + " components (expected 3)");
+    int pc = 3;
+    const pugi::xml_node pa = points_array(piece, where, pc);
     if (type_of(pa).type == Scalar::F32)
       m.coordinate_precision = 0x1p-24;
     resize_mapped(m.points, static_cast<std::size_t>(base + np));
@@ -948,11 +965,7 @@ MeshInput VtuFile::read() {
     else
       m.values.insert(m.values.end(), vals.begin(), vals.end());
     // Cells.
-    const pugi::xml_node cells = single_child(piece, "Cells");
-    const pugi::xml_node ca = named_array(cells, "connectivity"),
-                         oa = named_array(cells, "offsets"), ta = named_array(cells, "types");
-    if (!ca || !oa || !ta)
-      fail(where + ": <Cells> needs the DataArrays connectivity, offsets and types");
+    const auto [ca, oa, ta] = cell_arrays(piece, where);
     const PooledVector<int64_t> offsets = read_ints(oa, static_cast<std::size_t>(nc));
     const PooledVector<int64_t> types = read_ints(ta, static_cast<std::size_t>(nc));
     // vtkGhostType of the cells (kept for the triangles only, as the cells are).
