@@ -8,8 +8,9 @@ input's fingerprint) must be byte-identical for 1, 2, 3, 4 and 7 ranks, and the 
 say that rank 0 read the whole. Files written by VTK's own writer (python3-vtk9) are read by
 parts too: zlib-compressed in blocks of 1 KiB (so that every part's range crosses blocks), a
 UInt32 header, Float32 points, a vector field by component and by magnitude, vertex and line
-cells among the triangles (skipped, as one process skips them), and points numbered at random
-(every rank's points spread over the whole file). A file that cannot be read by parts (inline
+cells among the triangles (skipped, as one process skips them), points numbered at random
+(every rank's points spread over the whole file), and DOLFINx's edge nodes at Gauss-Lobatto
+points (each rank resamples its part). A file that cannot be read by parts (inline
 arrays, appended base64) is read whole by rank 0, which says so and why, with the same JSON. A
 problem a part finds (a NaN among its points, a cell naming a point the file does not have) is
 reported as one process reports it, once.
@@ -87,6 +88,17 @@ for c in range(grid.GetNumberOfCells()):
         out.InsertNextCell(vtk.VTK_VERTEX, 1, ids[:1])
         out.InsertNextCell(vtk.VTK_LINE, 2, ids[:2])
     out.InsertNextCell(grid.GetCellType(c), len(ids), ids)
+if mode == "gll":  # edge nodes moved to the GLL points of their (straight) edges, as DOLFINx
+    t = (1 - 1 / np.sqrt(5)) / 2  # degree 3: GLL points t and 1 - t of each edge
+    xyz = xyz.copy()
+    for c in range(grid.GetNumberOfCells()):
+        cell = grid.GetCell(c)
+        ids = [cell.GetPointId(k) for k in range(cell.GetNumberOfPoints())]
+        for e, (a, b) in enumerate(((0, 1), (1, 2), (2, 0))):
+            pa, pb = xyz[ids[a]], xyz[ids[b]]
+            xyz[ids[3 + 2 * e]] = pa + t * (pb - pa)
+            xyz[ids[4 + 2 * e]] = pa + (1 - t) * (pb - pa)
+    pts.SetData(ns.numpy_to_vtk(xyz[inverse].astype(np.float64), deep=1))
 vec = np.stack([f[inverse], np.cos(3 * xyz[inverse, 0]) * f[inverse], xyz[inverse, 1]], axis=1)
 a = ns.numpy_to_vtk(vec, deep=1)
 a.SetName("u")
@@ -129,7 +141,7 @@ with tempdir() as d:
     run("generate", "random", "--cells", "3000", "-o", base)
     import subprocess
     if subprocess.run([PYTHON, "-c", "import vtk"], capture_output=True).returncode == 0:
-        for mode in ("plain", "mixed", "shuffled"):
+        for mode in ("plain", "mixed", "shuffled", "gll"):
             path = os.path.join(d, f"vtk-{mode}.vtu")
             p = subprocess.run([PYTHON, "-c", VTK_REWRITE, base, path, mode], capture_output=True,
                                text=True)
@@ -138,6 +150,10 @@ with tempdir() as d:
             r.check(b'compressor="vtkZLibDataCompressor"' in head and b'encoding="raw"' in read(path)[-2000:] + head,
                     f"VTK's writer ({mode}): not zlib-compressed raw appended data")
             same_tree(f"VTK's zlib blocks, {mode}", path, (1, 2, 3, 7), ["--scalar", "f"])
+            if mode == "gll":  # each rank resamples its part, as one process the whole
+                p = mpi(2, "tree", path, "--scalar", "f")
+                r.check("Gauss-Lobatto" in p.stderr + p.stdout,
+                        f"GLL nodes: no note of their resampling:\n{p.stderr[-800:]}")
             if mode == "plain":
                 same_tree("VTK's zlib blocks, a component", path, (2, 3), ["--scalar", "u", "--component", "1"])
                 same_tree("VTK's zlib blocks, the magnitude", path, (2, 3),
