@@ -195,7 +195,7 @@ std::optional<VtuCellRange> VtuFile::read_cell_range(int part, int parts, std::s
   int64_t cell[kMaxVtkCellNodes];
   for (int64_t c = b; c < e; ++c) {
     const int64_t begin = offset_before(c), end = offsets[static_cast<std::size_t>(c) - ob];
-    if (end < begin || end > nconn)
+    if (end < begin || end > c1) // (c1 <= nconn): within the connectivity read
       fail(where + ": cell " + std::to_string(c) + ": bad offsets (" + std::to_string(begin) +
            " then " + std::to_string(end) + ")");
     int degree = 0;
