@@ -15,6 +15,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <fstream>
 #include <iterator>
 #include <random>
@@ -180,6 +181,32 @@ TEST(VtuCellRange, APartThrowsForWhatItFindsInItsRange) {
       }
     }
   }
+}
+
+// A cell's offset past its part's last one (but within the file's connectivity): refused by
+// that part before it reads a node beyond what it read (the sanitizers' build checks the reads).
+TEST(VtuCellRange, OffsetsThatDecreaseWithinAPartAreRefused) {
+  TempDir tmp;
+  const std::string path = tmp.file("offsets.vtu");
+  write_vtu(path, dataset("random", 2, 60), VtkEncoding::AppendedRaw);
+  std::ifstream in(path, std::ios::binary);
+  std::string b((std::istreambuf_iterator<char>(in)), {});
+  in.close();
+  const std::size_t name = b.find("Name=\"offsets\"");
+  const std::size_t tag = b.rfind("<DataArray", name);
+  const std::size_t attr = b.find("offset=\"", tag) + 8;
+  ASSERT_LT(attr, b.find('>', tag));
+  const std::size_t payload = b.find('_', b.find("<AppendedData")) + 1;
+  const std::size_t at = payload + std::stoull(b.substr(attr)) + 8; // UInt64 header
+  int64_t offsets[20];
+  std::memcpy(offsets, b.data() + at, sizeof offsets);
+  // Part 0 of 3 holds the first 20 cells or more: cell 5 ends past cell 12's end.
+  const int64_t past = offsets[12] + 6;
+  std::memcpy(b.data() + at + 5 * 8, &past, 8);
+  std::ofstream(path, std::ios::binary) << b;
+  std::string why;
+  EXPECT_THROW(read_vtu_cell_range(path, {}, {}, 0, 3, why), InputError);
+  EXPECT_THROW(read_vtu(path), InputError);
 }
 
 // Corrupted files (a byte of the appended data or a digit of the XML changed, 600 times): every
