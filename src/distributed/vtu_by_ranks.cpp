@@ -5,6 +5,7 @@
 #include "io/vtu_cell_range.hpp"
 #include "io/vtu_reader.hpp"
 #include "mesh/mesh_partition.hpp"
+#include "util/uninitialized_vector.hpp"
 
 #include <algorithm>
 #include <array>
@@ -134,10 +135,12 @@ RankRead read_vtu_by_ranks(const std::string &path, const FieldSelection &field,
 
   // This rank's share: the points its cells use, in the whole's order (marked over the points
   // it read, block after block), and their spans.
-  std::vector<int64_t> local(m.points.size(), -1);
+  UninitializedVector<int64_t> local(m.points.size());
+  std::fill(local.begin(), local.end(), int64_t{-1});
   for (const int64_t q : m.cell_nodes)
     local[static_cast<std::size_t>(v.point_index(q))] = 0;
   std::vector<int64_t> used;
+  used.reserve(m.points.size());
   for (std::size_t b = 0; b < v.block_first.size(); ++b) {
     if (v.block_first[b] < 0)
       continue;

@@ -104,6 +104,25 @@ PooledVector<T> VtuFile::read_array_range(const pugi::xml_node &a, std::size_t e
   return out;
 }
 
+template <class T>
+void VtuFile::read_range_into(const pugi::xml_node &a, std::size_t expected, std::size_t first,
+                              std::size_t count, T *dst) const {
+  constexpr Scalar native = std::is_same_v<T, double> ? Scalar::F64 : Scalar::I64;
+  const TypeInfo &ti = type_of(a);
+  if (compressed_ || ti.type != native ||
+      big_endian_ != (std::endian::native == std::endian::big) ||
+      a.attribute("format").as_string() != std::string("appended") || first > expected ||
+      count > expected - first) {
+    const PooledVector<T> v = read_array_range<T>(a, expected, first, count);
+    std::copy(v.begin(), v.end(), dst);
+    return;
+  }
+  const uint64_t offset = appended_offset(a, appended_length_);
+  const uint64_t at = appended_begin_ + offset;
+  value_count(a, ti, raw_array_bytes(at, appended_length_ - offset, a), expected);
+  read_at(at + header_size_ + first * sizeof(T), count * sizeof(T), dst);
+}
+
 std::optional<VtuCellRange> VtuFile::read_cell_range(int part, int parts, std::string &why) {
   load();
   const pugi::xml_node grid = single_child(doc_.child("VTKFile"), "UnstructuredGrid");
@@ -243,8 +262,7 @@ std::optional<VtuCellRange> VtuFile::read_cell_range(int part, int parts, std::s
   if (type_of(sa).type == Scalar::F32)
     m.value_precision = 0x1p-24;
   const int comps = sa.attribute("NumberOfComponents").as_int(1);
-  const std::size_t k = static_cast<std::size_t>(comps), upc = static_cast<std::size_t>(pc),
-                    unp = static_cast<std::size_t>(np);
+  const std::size_t k = static_cast<std::size_t>(comps), unp = static_cast<std::size_t>(np);
   resize_mapped(m.points, static_cast<std::size_t>(n));
   resize_mapped(m.values, static_cast<std::size_t>(n));
   // Each run of consecutive blocks read at once.
@@ -259,15 +277,17 @@ std::optional<VtuCellRange> VtuFile::read_cell_range(int part, int parts, std::s
     const std::size_t lo = b0 * static_cast<std::size_t>(block),
                       hi = std::min(unp, b1 * static_cast<std::size_t>(block)), count = hi - lo;
     const std::size_t at = static_cast<std::size_t>(r.block_first[b0]);
-    {
-      const PooledVector<double> xyz =
-          read_array_range<double>(pa, unp * upc, lo * upc, count * upc);
+    static_assert(sizeof(Vec3) == 3 * sizeof(double));
+    if (pc == 3) { // x, y, z as stored: straight into the points
+      read_range_into<double>(pa, unp * 3, lo * 3, count * 3,
+                              reinterpret_cast<double *>(m.points.data() + at));
+    } else {
+      const PooledVector<double> xy = read_array_range<double>(pa, unp * 2, lo * 2, count * 2);
       for (std::size_t i = 0; i < count; ++i)
-        m.points[at + i] = {xyz[i * upc], xyz[i * upc + 1], pc == 3 ? xyz[i * upc + 2] : 0.0};
+        m.points[at + i] = {xy[i * 2], xy[i * 2 + 1], 0.0};
     }
     if (comps == 1) {
-      const PooledVector<double> v = read_array_range<double>(sa, unp, lo, count);
-      std::copy(v.begin(), v.end(), m.values.begin() + static_cast<std::ptrdiff_t>(at));
+      read_range_into<double>(sa, unp, lo, count, m.values.data() + at);
     } else { // one component, or the magnitude, of a vector array
       const PooledVector<double> all = read_array_range<double>(sa, unp * k, lo * k, count * k);
       for (std::size_t i = 0; i < count; ++i) {

@@ -134,6 +134,11 @@ private:
   template <class T>
   PooledVector<T> read_array_range(const pugi::xml_node &a, std::size_t expected, std::size_t first,
                                    std::size_t count) const;
+  // The same into dst (room for `count`): an array stored as T in the machine's byte order,
+  // uncompressed, straight from the file.
+  template <class T>
+  void read_range_into(const pugi::xml_node &a, std::size_t expected, std::size_t first,
+                       std::size_t count, T *dst) const;
   // A piece's vtkGhostType array in `data` (PointData or CellData), `n` flags (empty if none).
   // Bezier cells (from cell `first_cell` on) of a piece whose PointData has RationalWeights:
   // refused unless every weight they use is 1 (rational cells are not polynomials).
