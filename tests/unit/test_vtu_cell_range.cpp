@@ -184,11 +184,13 @@ TEST(VtuCellRange, APartThrowsForWhatItFindsInItsRange) {
 }
 
 // A cell's offset past its part's last one (but within the file's connectivity): refused by
-// that part before it reads a node beyond what it read (the sanitizers' build checks the reads).
+// that part before it reads a node beyond what it read (the sanitizers' build checks the reads:
+// with the file's last offset as the bound instead, AddressSanitizer reports the overflow).
 TEST(VtuCellRange, OffsetsThatDecreaseWithinAPartAreRefused) {
   TempDir tmp;
   const std::string path = tmp.file("offsets.vtu");
-  write_vtu(path, dataset("random", 2, 60), VtkEncoding::AppendedRaw);
+  const MeshInput mesh = dataset("random", 2, 60);
+  write_vtu(path, mesh, VtkEncoding::AppendedRaw);
   std::ifstream in(path, std::ios::binary);
   std::string b((std::istreambuf_iterator<char>(in)), {});
   in.close();
@@ -198,14 +200,19 @@ TEST(VtuCellRange, OffsetsThatDecreaseWithinAPartAreRefused) {
   ASSERT_LT(attr, b.find('>', tag));
   const std::size_t payload = b.find('_', b.find("<AppendedData")) + 1;
   const std::size_t at = payload + std::stoull(b.substr(attr)) + 8; // UInt64 header
-  int64_t offsets[20];
-  std::memcpy(offsets, b.data() + at, sizeof offsets);
-  // Part 0 of 3 holds the first 20 cells or more: cell 5 ends past cell 12's end.
-  const int64_t past = offsets[12] + 6;
+  // Part 0 of 6 holds cells [0, e): cell 5 gets 66 nodes (a degree-10 Lagrange triangle's
+  // count, so the node count alone does not refuse it), past cell e - 1's end but within the
+  // file's connectivity.
+  const std::size_t e = mesh.num_cells() / 6;
+  std::vector<int64_t> offsets(mesh.num_cells());
+  std::memcpy(offsets.data(), b.data() + at, offsets.size() * 8);
+  const int64_t past = offsets[4] + 66;
+  ASSERT_GT(past, offsets[e - 1]);
+  ASSERT_LT(past, offsets.back());
   std::memcpy(b.data() + at + 5 * 8, &past, 8);
   std::ofstream(path, std::ios::binary) << b;
   std::string why;
-  EXPECT_THROW(read_vtu_cell_range(path, {}, {}, 0, 3, why), InputError);
+  EXPECT_THROW(read_vtu_cell_range(path, {}, {}, 0, 6, why), InputError);
   EXPECT_THROW(read_vtu(path), InputError);
 }
 
