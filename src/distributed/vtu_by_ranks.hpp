@@ -2,9 +2,9 @@
 // (io/vtu_cell_range): rank r of R reads the file's cells [n r / R, n (r + 1) / R), the points
 // they use and the r-th R-th of the points, which it checks and hashes. The ranks then make the
 // RankInput distributed_tree needs, the one scatter_whole would send them from the whole: the
-// points in the whole's order, each point's span over the ranks (only the ids in the ranges of
-// points two ranks both use cross between them), the whole's counts and its fingerprint (passed
-// from rank to rank). No rank holds the whole.
+// points in the whole's order, each point's span over the ranks (only the ids in blocks of ids
+// two ranks both use cross between them), the whole's counts and its fingerprint (passed from
+// rank to rank). No rank holds the whole.
 #pragma once
 
 #include "distributed/rank_join.hpp"
