@@ -3,6 +3,7 @@
 #include "tree/union_find.hpp"
 
 #include <algorithm>
+#include <numeric>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -132,7 +133,23 @@ GluedGraph glue_paths(const ContourTree &tree, const PathGluing &gluing, bool re
 
   // The glued pairs of arcs: both paths walked upwards together, a piece per level between
   // consecutive nodes of either.
-  const RootedTree rooted(tree);
+  const bool routed = !gluing.routes.empty();
+  if (routed && gluing.routes.size() != gluing.paths.size())
+    throw std::invalid_argument("glue_paths: one route per path, or none");
+  const RootedTree rooted(routed ? ContourTree{} : tree);
+  const auto follow = [&](int64_t from, int64_t to, const std::vector<int64_t> &route,
+                          std::vector<int64_t> &nodes, std::vector<int64_t> &arcs) {
+    nodes.assign(1, from);
+    arcs = route;
+    for (const int64_t a : route) {
+      if (a < 0 || a >= static_cast<int64_t>(tree.arcs.size()) ||
+          (tree.arcs[a][0] != nodes.back() && tree.arcs[a][1] != nodes.back()))
+        throw std::invalid_argument("glue_paths: a route that does not follow its arcs");
+      nodes.push_back(tree.arcs[a][0] == nodes.back() ? tree.arcs[a][1] : tree.arcs[a][0]);
+    }
+    if (nodes.back() != to)
+      throw std::invalid_argument("glue_paths: a route that does not end at its path's end");
+  };
   std::vector<Glued> glued;
   std::vector<int64_t> p, pa, q, qa;
   auto rising = [&](const std::vector<int64_t> &nodes) {
@@ -141,9 +158,15 @@ GluedGraph glue_paths(const ContourTree &tree, const PathGluing &gluing, bool re
         return false;
     return true;
   };
-  for (const auto &path : paths) {
-    rooted.path(path[0], path[1], p, pa);
-    rooted.path(path[2], path[3], q, qa);
+  for (std::size_t r = 0; r < paths.size(); ++r) {
+    const auto &path = paths[r];
+    if (routed) {
+      follow(path[0], path[1], gluing.routes[r][0], p, pa);
+      follow(path[2], path[3], gluing.routes[r][1], q, qa);
+    } else {
+      rooted.path(path[0], path[1], p, pa);
+      rooted.path(path[2], path[3], q, qa);
+    }
     if (!rising(p) || !rising(q)) {
       ++out.nonmonotone_paths;
       continue;
@@ -246,22 +269,55 @@ GluedGraph glue_paths(const ContourTree &tree, const PathGluing &gluing, bool re
       g.values.push_back(tree.values[i]);
     }
   }
-  std::vector<uint8_t> done(static_cast<std::size_t>(cut_first[m] + m), 0);
+  std::vector<int64_t> arc_of(static_cast<std::size_t>(cut_first[m] + m), -1);
   for (int64_t a = 0; a < m; ++a)
     for (int64_t k = 0; k <= static_cast<int64_t>(cuts[a].size()); ++k) {
       const int64_t s = subs.find(sub_arc(a, k));
-      if (done[s])
+      if (arc_of[s] >= 0)
         continue;
-      done[s] = 1;
       const int64_t x = node_of[points.find(point(a, k))];
       const int64_t y = node_of[points.find(point(a, k + 1))];
       if (x < 0 || y < 0)
         throw std::logic_error("glue_paths: a cut point glued to no node");
-      if (x != y)
-        g.arcs.push_back({std::min(x, y), std::max(x, y)});
+      if (x == y) { // an arc between two nodes of one point (a tie) is no arc
+        arc_of[s] = m + cut_first[m];
+        continue;
+      }
+      arc_of[s] = static_cast<int64_t>(g.arcs.size());
+      g.arcs.push_back({std::min(x, y), std::max(x, y)});
     }
-  std::sort(g.arcs.begin(), g.arcs.end());
+  // Arcs sorted, and where each piece of an input arc went.
+  std::vector<int64_t> order(g.arcs.size()), rank(g.arcs.size());
+  std::iota(order.begin(), order.end(), int64_t{0});
+  std::stable_sort(order.begin(), order.end(),
+                   [&](int64_t x, int64_t y) { return g.arcs[x] < g.arcs[y]; });
+  std::vector<std::array<int64_t, 2>> sorted(g.arcs.size());
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    sorted[k] = g.arcs[order[k]];
+    rank[order[k]] = static_cast<int64_t>(k);
+  }
+  g.arcs = std::move(sorted);
+  if (!reduced) {
+    out.node_of.resize(static_cast<std::size_t>(n));
+    for (int64_t i = 0; i < n; ++i)
+      out.node_of[i] = node_of[points.find(i)];
+    out.arc_image.resize(static_cast<std::size_t>(m));
+    for (int64_t a = 0; a < m; ++a)
+      for (int64_t k = 0; k <= static_cast<int64_t>(cuts[a].size()); ++k)
+        if (const int64_t x = arc_of[subs.find(sub_arc(a, k))]; x < m + cut_first[m])
+          out.arc_image[a].push_back(rank[x]);
+  }
   out.graph = reduced ? reduce(g) : std::move(g);
+  return out;
+}
+
+std::vector<std::vector<int64_t>> forest_paths(const ContourTree &forest,
+                                               const std::vector<std::array<int64_t, 2>> &ends) {
+  const RootedTree rooted(forest);
+  std::vector<std::vector<int64_t>> out(ends.size());
+  std::vector<int64_t> nodes;
+  for (std::size_t i = 0; i < ends.size(); ++i)
+    rooted.path(ends[i][0], ends[i][1], nodes, out[i]);
   return out;
 }
 

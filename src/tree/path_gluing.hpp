@@ -26,6 +26,11 @@ struct PathGluing {
   // {a1, b1, a2, b2} (a1 and a2 one point, b1 and b2 one point, a below b), identified point by
   // point at equal values.
   std::vector<std::array<int64_t, 4>> paths;
+  // Optional, one per path: the arcs (indices into the graph's arcs) of its two sides, each from
+  // its lower end. Without them the graph must be a forest, and each side is its unique path
+  // there. A graph with loops (a Reeb graph glued in stages, exact/reeb_group) has no unique
+  // path, so its caller says which one each curve runs along.
+  std::vector<std::array<std::vector<int64_t>, 2>> routes;
 };
 
 struct GluedGraph {
@@ -35,10 +40,20 @@ struct GluedGraph {
   // Paths whose values do not rise along the tree (a tie between copies and other nodes of equal
   // value): their ends are glued, their interiors are not. Counted, never expected.
   int64_t nonmonotone_paths = 0;
+  // Unreduced only: each input node's node in `graph`, and each input arc's arcs there (the
+  // pieces it was cut into, from its lower end).
+  std::vector<int64_t> node_of;
+  std::vector<std::vector<int64_t>> arc_image;
 };
 
 // `reduced`: regular nodes spliced out (else every node of the tree is kept, as its group).
-// Throws std::invalid_argument for a node that is not in the tree or a path between components.
+// Throws std::invalid_argument for a node that is not in the tree, a path between components or
+// a route that does not run between its ends.
 GluedGraph glue_paths(const ContourTree &tree, const PathGluing &gluing, bool reduced = true);
+
+// The forest's path from ends[i][0] to ends[i][1] (indices into its nodes), as its arcs in order.
+// Throws std::invalid_argument for a path between components.
+std::vector<std::vector<int64_t>> forest_paths(const ContourTree &forest,
+                                               const std::vector<std::array<int64_t, 2>> &ends);
 
 } // namespace hoct
