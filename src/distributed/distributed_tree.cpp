@@ -6,6 +6,7 @@
 #include "exact/piece_codec.hpp"
 #include "exact/piece_trees.hpp"
 #include "exact/pl_piece_trees.hpp"
+#include "exact/reeb_group.hpp"
 #include "exact/reeb_pieces.hpp"
 #include "mesh/duplicate_points.hpp"
 #include "mesh/mesh.hpp"
@@ -411,9 +412,10 @@ DistributedOutcome distributed_tree_on(RankInput in, const MeshInput *whole, con
     return d;
   }
 
-  // 3. The piece's kept trees, 4. merged in a binary tree of ranks (a Reeb graph's pieces: glued
-  // on rank 0).
+  // 3. The piece's kept trees, 4. merged in a binary tree of ranks (a Reeb graph's pieces as
+  // groups, glued at every merge).
   PieceTrees trees;
+  ReebGroup group; // a Reeb graph's: glued as far as it makes no loop (exact/reeb_group)
   TreeTimings time;
   PlPieceTrees pl; // the PL methods' counts: this piece's, then the whole's on rank 0
   try {
@@ -432,6 +434,8 @@ DistributedOutcome distributed_tree_on(RankInput in, const MeshInput *whole, con
       trees = reeb_piece(mesh, place, eo, time);
     else
       trees = piece_trees(mesh, place, eo, time);
+    if (reeb)
+      group = reeb_group(trees, rq.augmented);
   } catch (const std::exception &e) {
     failure = std::string(e.what());
   }
@@ -439,25 +443,10 @@ DistributedOutcome distributed_tree_on(RankInput in, const MeshInput *whole, con
   me.piece_seconds = build_seconds + clock.seconds();
   me.kept_nodes = static_cast<int64_t>(trees.nodes.size());
   const double tree_start = clock.seconds();
-  std::vector<PieceTrees> reeb_pieces;
-  if (reeb) {
-    const std::vector<std::byte> bytes = encode_piece_trees(trees);
-    const std::vector<std::vector<std::byte>> all = gather_bytes(comm, bytes);
-    if (rank != 0) {
-      me.bytes_sent = static_cast<int64_t>(bytes.size());
-      me.messages = 1;
-    }
-    for (std::size_t r = 0; r < all.size(); ++r) {
-      if (r > 0) {
-        me.bytes_received += static_cast<int64_t>(all[r].size());
-        ++me.messages;
-      }
-      reeb_pieces.push_back(r == 0 ? std::move(trees) : decode_piece_trees(all[r]));
-    }
-  }
-  for (int step = 1; step < ranks && !reeb; step *= 2) {
+  for (int step = 1; step < ranks; step *= 2) {
     if (rank % (2 * step) == step) {
-      const std::vector<std::byte> bytes = encode_piece_trees(trees);
+      const std::vector<std::byte> bytes =
+          reeb ? encode_reeb_group(group) : encode_piece_trees(trees);
       send_bytes(comm, bytes, rank - step, step);
       me.bytes_sent += static_cast<int64_t>(bytes.size());
       ++me.messages;
@@ -467,7 +456,10 @@ DistributedOutcome distributed_tree_on(RankInput in, const MeshInput *whole, con
       const std::vector<std::byte> bytes = receive_bytes(comm, rank + step, step);
       me.bytes_received += static_cast<int64_t>(bytes.size());
       ++me.messages;
-      trees = merge_piece_trees(trees, decode_piece_trees(bytes), rq.augmented, threads);
+      if (reeb)
+        group = merge_reeb_groups(group, decode_reeb_group(bytes), rq.augmented);
+      else
+        trees = merge_piece_trees(trees, decode_piece_trees(bytes), rq.augmented, threads);
     }
   }
   PlCounts pl_counts;
@@ -506,7 +498,7 @@ DistributedOutcome distributed_tree_on(RankInput in, const MeshInput *whole, con
   }
 
   // 5. Rank 0: the whole tree, finished as compute_tree finishes it.
-  TreeResult tree = reeb ? reeb_graph_of_pieces(reeb_pieces, rq.augmented, field_scale[0])
+  TreeResult tree = reeb ? reeb_graph_of_group(group, rq.augmented, field_scale[0])
                     : linear || refined
                         ? pl_tree_of_pieces(trees, rq.augmented, method_name(rq), pl_counts,
                                             linear ? 0.0 : field_scale[0])

@@ -5,13 +5,11 @@
 #include "exact/piece_keys.hpp"
 #include "exact/seam_gluing.hpp"
 #include "mesh/cut_surface.hpp"
-#include "tree/path_gluing.hpp"
 #include "tree/sweep_contour_tree.hpp"
 #include "util/parallel_for.hpp"
 #include "util/stopwatch.hpp"
 
 #include <algorithm>
-#include <numeric>
 #include <stdexcept>
 #include <unordered_map>
 
@@ -91,156 +89,6 @@ PieceTrees reeb_piece(const Mesh &mesh, const PiecePlace &place, const ExactTree
   count_copies_once(cut, en, out.counts);
   split_cell_time(b.totals, time);
   return out;
-}
-
-namespace {
-
-// A piece's node: its piece (index into the pieces) and its index there.
-struct Member {
-  int64_t piece, index;
-};
-
-} // namespace
-
-TreeResult reeb_graph_of_pieces(std::span<const PieceTrees> pieces, bool augmented,
-                                double reference) {
-  Stopwatch clock;
-  const auto node = [&](const Member &m) -> const PieceNode & {
-    return pieces[m.piece].nodes[m.index];
-  };
-  // Every piece's kept nodes in the whole's total order (value, key); a point's copies (one key)
-  // next to each other, by piece and index.
-  std::vector<Member> all;
-  for (std::size_t p = 0; p < pieces.size(); ++p)
-    for (std::size_t i = 0; i < pieces[p].nodes.size(); ++i)
-      all.push_back({static_cast<int64_t>(p), static_cast<int64_t>(i)});
-  std::sort(all.begin(), all.end(), [&](const Member &x, const Member &y) {
-    const PieceNode &a = node(x), &b = node(y);
-    if (a.value != b.value)
-      return a.value < b.value;
-    if (a.key != b.key)
-      return a.key < b.key;
-    return x.piece < y.piece || (x.piece == y.piece && x.index < y.index);
-  });
-  const int64_t n = static_cast<int64_t>(all.size());
-  std::vector<std::vector<int64_t>> id_of(pieces.size());
-  for (std::size_t p = 0; p < pieces.size(); ++p)
-    id_of[p].resize(pieces[p].nodes.size());
-  ContourTree disks;
-  disks.nodes.resize(static_cast<std::size_t>(n));
-  disks.values.resize(static_cast<std::size_t>(n));
-  for (int64_t k = 0; k < n; ++k) {
-    id_of[all[k].piece][all[k].index] = k;
-    disks.nodes[k] = k;
-    disks.values[k] = node(all[k]).value;
-  }
-  // Each piece's disks' contour trees (every kept node in them), as arcs between all nodes.
-  for (std::size_t p = 0; p < pieces.size(); ++p) {
-    const PieceTrees &piece = pieces[p];
-    const int64_t m = static_cast<int64_t>(piece.nodes.size());
-    std::vector<double> values(static_cast<std::size_t>(m));
-    std::vector<GraphEdge> join, split;
-    for (int64_t k = 0; k < m; ++k) {
-      values[k] = piece.nodes[k].value;
-      if (piece.join_parent[k] >= 0)
-        join.push_back({k, piece.join_parent[k]});
-      if (piece.split_parent[k] >= 0)
-        split.push_back({k, piece.split_parent[k]});
-    }
-    const ContourTree forest = sweep_contour_tree(values, {{}, join, split}, true);
-    for (const auto &[a, b] : forest.arcs) {
-      const int64_t x = id_of[p][forest.nodes[a]], y = id_of[p][forest.nodes[b]];
-      disks.arcs.push_back({std::min(x, y), std::max(x, y)});
-    }
-  }
-
-  // The gluing: a point's copies (nodes of one key: vertices, edge nodes, the fallback lattice's
-  // nodes on edges) are one; each cut edge's and each shared edge's two chains are one curve,
-  // segment by segment.
-  PathGluing gluing;
-  std::vector<int64_t> run_start(static_cast<std::size_t>(n)), run_end(static_cast<std::size_t>(n));
-  int64_t repeated_nodes = 0, repeated_edge_nodes = 0;
-  for (int64_t k = 0; k < n;) {
-    int64_t j = k + 1;
-    while (j < n && node(all[j]).key == node(all[k]).key)
-      ++j;
-    for (int64_t i = k; i < j; ++i) {
-      run_start[i] = k;
-      run_end[i] = j;
-    }
-    if (j - k > 1) {
-      for (int64_t i = k; i < j; ++i)
-        gluing.group_members.push_back(i);
-      gluing.group_offset.push_back(static_cast<int64_t>(gluing.group_members.size()));
-      // Counted once: the other pieces' copies (each piece counted its own once).
-      int64_t holders = 1;
-      for (int64_t i = k + 1; i < j; ++i)
-        holders += all[i].piece != all[i - 1].piece;
-      repeated_nodes += holders - 1;
-      if (node(all[k]).key.kind == NodeKey::EdgeNode)
-        repeated_edge_nodes += holders - 1;
-    }
-    k = j;
-  }
-  struct ChainRef {
-    int64_t lo, hi, piece, index;
-  };
-  std::vector<ChainRef> chains;
-  for (std::size_t p = 0; p < pieces.size(); ++p)
-    for (std::size_t c = 0; c < pieces[p].chains.size(); ++c)
-      chains.push_back({pieces[p].chains[c].lo, pieces[p].chains[c].hi, static_cast<int64_t>(p),
-                        static_cast<int64_t>(c)});
-  std::sort(chains.begin(), chains.end(), [](const ChainRef &x, const ChainRef &y) {
-    return std::tie(x.lo, x.hi, x.piece, x.index) < std::tie(y.lo, y.hi, y.piece, y.index);
-  });
-  int64_t seam_edges = 0;
-  for (std::size_t i = 0; i < chains.size();) {
-    std::size_t j = i + 1;
-    while (j < chains.size() && chains[j].lo == chains[i].lo && chains[j].hi == chains[i].hi)
-      ++j;
-    if (j - i > 2)
-      throw std::logic_error("reeb_graph_of_pieces: an edge with more than two sides");
-    if (j - i == 2) { // (one chain alone: an edge of the whole's boundary)
-      const SharedChain &a = pieces[chains[i].piece].chains[chains[i].index];
-      const SharedChain &b = pieces[chains[i + 1].piece].chains[chains[i + 1].index];
-      if (a.nodes.size() != b.nodes.size())
-        throw std::logic_error("reeb_graph_of_pieces: the two sides of an edge have different "
-                               "edge nodes");
-      const auto id = [&](const ChainRef &r, const ChainNode &c) { return id_of[r.piece][c.node]; };
-      for (std::size_t k = 0; k + 1 < a.nodes.size(); ++k) {
-        const int64_t a0 = id(chains[i], a.nodes[k]), a1 = id(chains[i], a.nodes[k + 1]);
-        const int64_t b0 = id(chains[i + 1], b.nodes[k]), b1 = id(chains[i + 1], b.nodes[k + 1]);
-        if (a0 < a1) // each piece rises in the total order (the ids follow it)
-          gluing.paths.push_back({a0, a1, b0, b1});
-        else
-          gluing.paths.push_back({a1, a0, b1, b0});
-      }
-      ++seam_edges;
-    }
-    i = j;
-  }
-  GluedGraph glued = glue_paths(disks, gluing, !augmented);
-  ContourTree &ct = glued.graph;
-
-  // A glued node is its key's copies, as one (one_node).
-  const auto merged = [&](int64_t k) {
-    PieceNode m = node(all[run_start[k]]);
-    for (int64_t i = run_start[k] + 1; i < run_end[k]; ++i)
-      m = one_node(m, node(all[i]));
-    return m;
-  };
-  ExactCounts counts;
-  for (const PieceTrees &p : pieces)
-    counts = sum_counts(counts, p.counts);
-  counts.graph_nodes -= repeated_nodes;
-  counts.edge_critical_points -= repeated_edge_nodes;
-  TreeResult r = piece_graph_result(ct, counts, augmented, reference, merged);
-  r.reeb_graph = true;
-  r.loops = graph_loops(ct);
-  r.stats.seam_edges = seam_edges;
-  r.stats.seam_paths_nonmonotone = glued.nonmonotone_paths;
-  r.stats.time.gluing = clock.seconds();
-  return r;
 }
 
 } // namespace hoct

@@ -6,9 +6,10 @@
 // own cut graph (mesh/cut_surface; a point where the piece holds two or more fans is cut apart
 // too). Each piece reduces its disks' join and split trees to the nodes the gluing needs: the
 // copies of its cut points and the nodes along its cut edges and along the edges it shares with
-// other pieces. The pieces' disks' contour trees, put together, are glued back along all those
-// seams (tree/path_gluing): the whole surface's Reeb graph, the one a single process computes
-// from its own cut, with the same nodes, values, places and arcs for any number of pieces.
+// other pieces. The pieces' disks' contour trees are glued back along all those seams in a tree
+// of groups of pieces (exact/reeb_group): the whole surface's Reeb graph, the one a single
+// process computes from its own cut, with the same nodes, values, places and arcs for any number
+// of pieces.
 #pragma once
 
 #include "exact/exact_tree_options.hpp"
@@ -17,7 +18,6 @@
 #include "tree/tree_result.hpp"
 
 #include <cstdint>
-#include <span>
 
 namespace hoct {
 
@@ -27,11 +27,5 @@ namespace hoct {
 // piece's own copies once.
 PieceTrees reeb_piece(const Mesh &piece, const PiecePlace &place, const ExactTreeOptions &options,
                       TreeTimings &time);
-
-// The whole mesh's Reeb graph from every piece's reeb_piece, in piece order: values absolute
-// (`reference` added back), the fallback stand-in's arcs contracted as exact_contour_tree does.
-// Its seam_edges are the edges glued back: the pieces' cuts and the edges between pieces.
-TreeResult reeb_graph_of_pieces(std::span<const PieceTrees> pieces, bool augmented,
-                                double reference);
 
 } // namespace hoct

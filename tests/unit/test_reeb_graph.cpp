@@ -352,8 +352,9 @@ TEST(ReebGraph, ComputeTreeConsumingTheMeshGivesTheSameResult) {
       ASSERT_TRUE(got.simplified && want.simplified);
       EXPECT_EQ(tree_to_json(*got.simplified, false), tree_to_json(*want.simplified, false)) << k;
       EXPECT_EQ(got.tree.reeb_graph, k == 2) << k;
-      if (method == TreeMethod::Linear) // both released
+      if (method == TreeMethod::Linear) { // both released
         EXPECT_TRUE(input.points.empty() && input.values.empty()) << k;
+      }
     }
 }
 

@@ -8,6 +8,7 @@
 #include "datasets/datasets.hpp"
 #include "exact/exact_contour_tree.hpp"
 #include "exact/piece_codec.hpp"
+#include "exact/reeb_group.hpp"
 #include "exact/reeb_pieces.hpp"
 #include "mesh/cut_surface.hpp"
 #include "mesh/mesh.hpp"
@@ -43,16 +44,30 @@ TreeResult whole_reeb_graph(const MeshInput &whole, MeshScales &scales, bool aug
   return exact_contour_tree(cut.mesh, eo);
 }
 
-// The same from `pieces` pieces, each through bytes as the ranks send them, glued as rank 0
-// glues them (distributed/distributed_tree).
+// The same from `pieces` pieces, each through bytes as the ranks send them, glued in groups:
+// pairwise in a binary tree as the ranks merge them (distributed/distributed_tree), or by a left
+// fold (`fold`: the first piece's group takes in the others one by one), each group through
+// bytes before a merge.
 TreeResult reeb_graph_by_pieces(const MeshInput &whole, int pieces, const MeshScales &scales,
-                                bool augmented) {
+                                bool augmented, bool fold = false) {
   double reference = 0;
   const std::vector<PieceTrees> all =
       testing::pieces_of(whole, pieces, scales, augmented, reference,
                          [](const Mesh &m, const PiecePlace &p, const ExactTreeOptions &eo,
                             TreeTimings &time) { return reeb_piece(m, p, eo, time); });
-  return reeb_graph_of_pieces(all, augmented, reference);
+  const auto sent = [](const ReebGroup &g) { return decode_reeb_group(encode_reeb_group(g)); };
+  std::vector<ReebGroup> groups;
+  for (const PieceTrees &p : all)
+    groups.push_back(sent(reeb_group(p, augmented)));
+  if (fold) {
+    for (std::size_t r = 1; r < groups.size(); ++r)
+      groups[0] = sent(merge_reeb_groups(groups[0], groups[r], augmented));
+  } else {
+    for (std::size_t step = 1; step < groups.size(); step *= 2)
+      for (std::size_t r = 0; r + step < groups.size(); r += 2 * step)
+        groups[r] = sent(merge_reeb_groups(groups[r], groups[r + step], augmented));
+  }
+  return reeb_graph_of_group(groups[0], augmented, reference);
 }
 
 void expect_same_graph(const TreeResult &a, const TreeResult &b, const std::string &what) {
@@ -83,6 +98,9 @@ int64_t check_all_piece_counts(const MeshInput &whole, const std::string &name,
         continue;
       }
       expect_same_graph(got, expected, what);
+      if (pieces >= 3) // another order of merges, the same graph
+        expect_same_graph(reeb_graph_by_pieces(whole, pieces, scales, augmented, true), expected,
+                          what + ", folded");
     }
   }
   return loops;
