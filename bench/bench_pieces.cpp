@@ -5,6 +5,8 @@
 #include "datasets/datasets.hpp"
 #include "exact/piece_codec.hpp"
 #include "exact/piece_trees.hpp"
+#include "exact/reeb_group.hpp"
+#include "exact/reeb_pieces.hpp"
 #include "mesh/duplicate_points.hpp"
 #include "mesh/mesh.hpp"
 #include "mesh/mesh_checks.hpp"
@@ -18,6 +20,91 @@
 #include <utility>
 
 namespace hoct::bench {
+
+namespace {
+
+// A Reeb graph's groups (exact/reeb_group): the plate with 100 holes, half the size's cells, in
+// strips of contiguous cells; each piece's group through bytes as a rank sends it, merged in the
+// binary tree of ranks; against what rank 0 would hold if it gathered every piece's kept trees.
+void reeb_groups_table(const std::vector<double> &sizes) {
+  std::printf("## A Reeb graph's pieces glued in the tree of ranks (the plate with 100 holes, "
+              "cubic, in strips of contiguous cells, 1 thread; per piece: the mean; merge: the "
+              "longest merge of each level, summed; largest group: the largest message a merge "
+              "received; gathered: every piece's kept trees, what rank 0 would receive without "
+              "the tree)\n\n");
+  std::printf("| cells | pieces | cut and kept trees per piece (s) | kept nodes per piece | "
+              "group per piece (s) | group bytes per piece | merges, all levels (s) | largest "
+              "group received (bytes) | last group's nodes | rank 0's finish (s) | gathered "
+              "instead (bytes) | loops |\n"
+              "|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+  for (double size : sizes) {
+    DatasetOptions o;
+    o.cells = static_cast<long long>(size / 2);
+    o.degree = 3;
+    const MeshInput whole = generate_dataset("plate", o);
+    const int64_t cells = static_cast<int64_t>(whole.num_cells());
+    MeshScales scales;
+    {
+      MeshBuildOptions bo;
+      bo.whole_scales = [&](const MeshScales &own) { return scales = own; };
+      (void)build_mesh(whole, bo);
+    }
+    for (int pieces : {2, 8, 32, 128}) {
+      std::vector<ReebGroup> groups;
+      double trees = 0, kept = 0, grouping = 0, bytes = 0, gathered = 0;
+      const auto spans = point_piece_spans(whole, pieces);
+      for (int r = 0; r < pieces; ++r) {
+        const auto [begin, end] = piece_cell_range(cells, pieces, r);
+        const MeshPiece piece = extract_piece(whole, begin, end);
+        MeshBuildOptions bo;
+        bo.throw_on_error = false;
+        bo.whole_scales = [&](const MeshScales &) { return scales; };
+        const Mesh mesh = build_mesh(piece.input, bo);
+        const auto piece_spans = piece_point_spans(piece.global_point, spans);
+        const PiecePlace place{r, piece.global_point, begin, triangles_before(whole, begin),
+                               piece_spans};
+        ExactTreeOptions eo;
+        eo.threads = 1;
+        TreeTimings time;
+        const auto t0 = clock_type::now();
+        const PieceTrees t = reeb_piece(mesh, place, eo, time);
+        trees += seconds_since(t0);
+        kept += static_cast<double>(t.nodes.size());
+        gathered += static_cast<double>(encode_piece_trees(t).size());
+        const auto t1 = clock_type::now();
+        ReebGroup g = reeb_group(t, false);
+        grouping += seconds_since(t1);
+        const std::vector<std::byte> b = encode_reeb_group(g);
+        bytes += static_cast<double>(b.size());
+        groups.push_back(decode_reeb_group(b));
+      }
+      double merge = 0, largest = 0;
+      for (int step = 1; step < pieces; step *= 2) {
+        double longest = 0;
+        for (int r = 0; r + step < pieces; r += 2 * step) {
+          const std::vector<std::byte> b = encode_reeb_group(groups[r + step]);
+          largest = std::max(largest, static_cast<double>(b.size()));
+          const auto t0 = clock_type::now();
+          groups[r] = merge_reeb_groups(groups[r], decode_reeb_group(b), false);
+          longest = std::max(longest, seconds_since(t0));
+        }
+        merge += longest;
+      }
+      const auto t2 = clock_type::now();
+      const TreeResult graph = reeb_graph_of_group(groups.front(), false, 0.0);
+      const double finish = seconds_since(t2);
+      std::printf("| %lld | %d | %.4f | %.0f | %.4f | %.0f | %.4f | %.0f | %zu | %.4f | %.0f | "
+                  "%lld |\n",
+                  static_cast<long long>(cells), pieces, trees / pieces, kept / pieces,
+                  grouping / pieces, bytes / pieces, merge, largest, groups.front().nodes.size(),
+                  finish, gathered, static_cast<long long>(graph.loops));
+      std::fflush(stdout);
+    }
+  }
+  std::printf("\n");
+}
+
+} // namespace
 
 void pieces_section(const std::vector<double> &sizes, int runs) {
   std::printf("## The distributed tree's phases, piece by piece in one process (random cubic "
@@ -120,6 +207,7 @@ void pieces_section(const std::vector<double> &sizes, int runs) {
     }
   }
   std::printf("\n");
+  reeb_groups_table(sizes);
 }
 
 } // namespace hoct::bench
