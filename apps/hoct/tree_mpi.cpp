@@ -114,6 +114,8 @@ void run_ranks(const DistributedTreeRun &run, TreeRequest rq, bool root, bool &c
       throw Error(run.file + ": " + e.what());
     }
     if (read.input) {
+      if (root && !run.quiet && !read.note.empty())
+        std::fprintf(stderr, "hoct: note: %s: %s\n", run.file.c_str(), read.note.c_str());
       // DOLFINx's degree >= 3 nodes at GLL points: each rank resamples its piece, as one
       // process resamples the whole.
       const GllResampling gll = resample_gll_share(*read.input, MPI_COMM_WORLD);

@@ -27,6 +27,8 @@ struct RankRead {
   // (a piece that cannot be read or joined, fields that differ, copies of a point at positions
   // that differ without ids): join the whole then, which reports what is wrong.
   std::string fallback;
+  // How the ranks read it, where a user may want to know (empty: nothing to say).
+  std::string note;
 };
 
 // Collective over `comm` (every rank calls it, with its own pieces, maybe none). `failure` not

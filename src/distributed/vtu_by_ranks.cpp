@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <limits>
 #include <optional>
+#include <stdexcept>
 #include <vector>
 
 namespace hoct {
@@ -83,6 +84,111 @@ uint64_t fingerprint_of_parts(const VtuCellRange &v, int64_t whole_cells, int64_
                               with_kinds, own);
 }
 
+// This rank's share from the blocks it read: the points its cells use, in the whole's order
+// (marked over the points it read, block after block), and their spans.
+void by_blocks(VtuCellRange &v, MeshPiece &piece, int rank, int ranks, MPI_Comm comm) {
+  MeshInput &m = v.input;
+  UninitializedVector<int64_t> local(m.points.size());
+  std::fill(local.begin(), local.end(), int64_t{-1});
+  for (const int64_t q : m.cell_nodes)
+    local[static_cast<std::size_t>(v.point_index(q))] = 0;
+  std::vector<int64_t> used;
+  used.reserve(m.points.size());
+  for (std::size_t b = 0; b < v.block_first.size(); ++b) {
+    if (v.block_first[b] < 0)
+      continue;
+    const int64_t id = static_cast<int64_t>(b) * v.point_block;
+    const int64_t count = std::min(v.point_block, v.file_points - id);
+    for (int64_t i = 0; i < count; ++i) {
+      int64_t &k = local[static_cast<std::size_t>(v.block_first[b] + i)];
+      if (k == 0) {
+        k = static_cast<int64_t>(used.size());
+        used.push_back(id + i);
+      }
+    }
+  }
+  piece.point_span = point_spans(used, v.point_block, v.block_first.size(), rank, ranks, comm);
+  MeshInput &out = piece.input;
+  if (used.size() == m.points.size()) { // every point it read: the arrays themselves
+    out.points = std::move(m.points);
+    out.values = std::move(m.values);
+  } else {
+    out.points.resize(used.size());
+    out.values.resize(used.size());
+    for (std::size_t i = 0; i < used.size(); ++i) {
+      const std::size_t k = static_cast<std::size_t>(v.point_index(used[i]));
+      out.points[i] = m.points[k];
+      out.values[i] = m.values[k];
+    }
+    m.points = {};
+    m.values = {};
+  }
+  for (int64_t &q : m.cell_nodes)
+    q = local[static_cast<std::size_t>(v.point_index(q))];
+  piece.global_point = std::move(used);
+}
+
+// A point id a rank's cells use, asked of the rank that checked it.
+struct PointAsk {
+  int64_t id;
+  int64_t rank;
+};
+// The answer: the point, its value and its span over the ranks whose cells use it.
+struct PointGot {
+  int64_t id;
+  Vec3 point;
+  double value;
+  std::array<int32_t, 2> span;
+};
+
+// The points of `used` (ascending ids) and their spans, from the ranks that read and checked
+// them ([np r / R, np (r + 1) / R) on rank r): for a file whose points are numbered at random,
+// where the blocks of ids the ranks use all overlap. Every rank asks for all it uses; what
+// crosses is about the points each uses, once.
+std::vector<PointGot> points_from_owners(const VtuCellRange &v, const std::vector<int64_t> &used,
+                                         int rank, int ranks, MPI_Comm comm) {
+  const int64_t np = v.file_points, nr = ranks;
+  const auto owner = [&](int64_t q) {
+    int64_t r = std::min(nr - 1, q * nr / np);
+    while (r + 1 < nr && np * (r + 1) / nr <= q)
+      ++r;
+    while (r > 0 && np * r / nr > q)
+      --r;
+    return static_cast<std::size_t>(r);
+  };
+  std::vector<std::vector<PointAsk>> asks(static_cast<std::size_t>(ranks));
+  for (const int64_t q : used)
+    asks[owner(q)].push_back(PointAsk{q, rank});
+  std::vector<PointAsk> asked = exchange_records(comm, asks);
+  std::sort(asked.begin(), asked.end(), [](const PointAsk &a, const PointAsk &b) {
+    return a.id < b.id || (a.id == b.id && a.rank < b.rank);
+  });
+  std::vector<std::vector<PointGot>> answers(static_cast<std::size_t>(ranks));
+  for (std::size_t i = 0; i < asked.size();) {
+    std::size_t j = i + 1;
+    while (j < asked.size() && asked[j].id == asked[i].id)
+      ++j;
+    const int64_t q = asked[i].id;
+    if (q < v.check_begin || q >= v.check_end)
+      throw std::logic_error("points_from_owners: asked for a point another rank checked");
+    const std::size_t k = static_cast<std::size_t>(v.point_index(q));
+    const std::array<int32_t, 2> span{static_cast<int32_t>(asked[i].rank),
+                                      static_cast<int32_t>(asked[j - 1].rank)};
+    for (std::size_t a = i; a < j; ++a)
+      answers[static_cast<std::size_t>(asked[a].rank)].push_back(
+          PointGot{q, v.input.points[k], v.input.values[k], span});
+    i = j;
+  }
+  // From the owners in rank order, each in ascending ids: ascending ids in all.
+  std::vector<PointGot> got = exchange_records(comm, answers);
+  bool same = got.size() == used.size();
+  for (std::size_t i = 0; same && i < got.size(); ++i)
+    same = got[i].id == used[i];
+  if (!same)
+    throw std::logic_error("points_from_owners: the answers are not the points asked for");
+  return got;
+}
+
 } // namespace
 
 RankRead read_vtu_by_ranks(const std::string &path, const FieldSelection &field,
@@ -133,48 +239,37 @@ RankRead read_vtu_by_ranks(const std::string &path, const FieldSelection &field,
   }
   const uint64_t fingerprint = fingerprint_of_parts(v, whole_cells, sums[1], sums[2] > 0, comm);
 
-  // This rank's share: the points its cells use, in the whole's order (marked over the points
-  // it read, block after block), and their spans.
-  UninitializedVector<int64_t> local(m.points.size());
-  std::fill(local.begin(), local.end(), int64_t{-1});
-  for (const int64_t q : m.cell_nodes)
-    local[static_cast<std::size_t>(v.point_index(q))] = 0;
-  std::vector<int64_t> used;
-  used.reserve(m.points.size());
-  for (std::size_t b = 0; b < v.block_first.size(); ++b) {
-    if (v.block_first[b] < 0)
-      continue;
-    const int64_t id = static_cast<int64_t>(b) * v.point_block;
-    const int64_t count = std::min(v.point_block, v.file_points - id);
-    for (int64_t i = 0; i < count; ++i) {
-      int64_t &k = local[static_cast<std::size_t>(v.block_first[b] + i)];
-      if (k == 0) {
-        k = static_cast<int64_t>(used.size());
-        used.push_back(id + i);
-      }
-    }
-  }
+  // This rank's share: the points its cells use, in the whole's order, and their spans. Points
+  // numbered at random (a part read its checked share alone): every rank gets the points its
+  // cells use from the ranks that checked them.
+  int from_owners = v.used_points_read ? 0 : 1;
+  MPI_Allreduce(MPI_IN_PLACE, &from_owners, 1, MPI_INT, MPI_MAX, comm);
   RankInput in;
   MeshPiece &piece = in.piece;
-  piece.point_span = point_spans(used, v.point_block, v.block_first.size(), rank, ranks, comm);
   MeshInput &out = piece.input;
-  if (used.size() == m.points.size()) { // every point it read: the arrays themselves
-    out.points = std::move(m.points);
-    out.values = std::move(m.values);
-  } else {
-    out.points.resize(used.size());
-    out.values.resize(used.size());
-    for (std::size_t i = 0; i < used.size(); ++i) {
-      const std::size_t k = static_cast<std::size_t>(v.point_index(used[i]));
-      out.points[i] = m.points[k];
-      out.values[i] = m.values[k];
-    }
+  if (from_owners) {
+    read.note = "its points are numbered far from their cells: each rank read its share of the "
+                "points and got its cells' points from the ranks that read them";
+    std::vector<int64_t> used(m.cell_nodes.begin(), m.cell_nodes.end());
+    std::sort(used.begin(), used.end());
+    used.erase(std::unique(used.begin(), used.end()), used.end());
+    const std::vector<PointGot> got = points_from_owners(v, used, rank, ranks, comm);
     m.points = {};
     m.values = {};
+    out.points.resize(used.size());
+    out.values.resize(used.size());
+    piece.point_span.resize(used.size());
+    for (std::size_t i = 0; i < used.size(); ++i) {
+      out.points[i] = got[i].point;
+      out.values[i] = got[i].value;
+      piece.point_span[i] = got[i].span;
+    }
+    for (int64_t &q : m.cell_nodes)
+      q = std::lower_bound(used.begin(), used.end(), q) - used.begin();
+    piece.global_point = std::move(used);
+  } else {
+    by_blocks(v, piece, rank, ranks, comm);
   }
-  for (int64_t &q : m.cell_nodes)
-    q = local[static_cast<std::size_t>(v.point_index(q))];
-  piece.global_point = std::move(used);
   out.source = m.source;
   out.field_name = m.field_name;
   out.coordinate_precision = m.coordinate_precision;

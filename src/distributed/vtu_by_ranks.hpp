@@ -3,8 +3,9 @@
 // they use and the r-th R-th of the points, which it checks and hashes. The ranks then make the
 // RankInput distributed_tree needs, the one scatter_whole would send them from the whole: the
 // points in the whole's order, each point's span over the ranks (only the ids in blocks of ids
-// two ranks both use cross between them), the whole's counts and its fingerprint (passed from
-// rank to rank). No rank holds the whole.
+// two ranks both use cross between them; for points numbered far from their cells, each rank
+// gets its cells' points and their spans from the ranks that checked them), the whole's counts
+// and its fingerprint (passed from rank to rank). No rank holds the whole.
 #pragma once
 
 #include "distributed/rank_join.hpp"

@@ -244,6 +244,19 @@ std::optional<VtuCellRange> VtuFile::read_cell_range(int part, int parts, std::s
   r.block_first.assign(blocks, -1);
   for (const int64_t q : m.cell_nodes)
     r.block_first[static_cast<std::size_t>(q / block)] = 0;
+  // Points numbered at random: the blocks hold several times the points the cells use (about
+  // their share of the file's, np / nconn per connectivity entry), and the part would read most
+  // of the file. It reads its checked share alone then.
+  int64_t in_blocks = 0;
+  for (std::size_t k = 0; k < blocks; ++k)
+    if (r.block_first[k] == 0)
+      in_blocks += std::min<int64_t>(block, np - static_cast<int64_t>(k) * block);
+  const double uses = static_cast<double>(c1 - c0) * static_cast<double>(np) /
+                      static_cast<double>(std::max<int64_t>(nconn, 1));
+  if (static_cast<double>(in_blocks) > 3 * uses + 16 * static_cast<double>(block)) {
+    r.used_points_read = false;
+    std::fill(r.block_first.begin(), r.block_first.end(), -1);
+  }
   if (r.check_end > r.check_begin)
     std::fill(r.block_first.begin() + r.check_begin / block,
               r.block_first.begin() + (r.check_end - 1) / block + 1, 0);

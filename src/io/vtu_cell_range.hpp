@@ -33,6 +33,10 @@ struct VtuCellRange {
   // Per block of the file's points, where its first point is in input.points (-1: not read).
   int64_t point_block = 1;
   std::vector<int64_t> block_first;
+  // False where the cells use points spread over so many blocks (points numbered at random) that
+  // the part would read several times the points it uses: then only the checked share is read,
+  // and the caller gets the cells' points from the parts that checked them.
+  bool used_points_read = true;
   // The index in input.points of the file's point `id` (one of a block read).
   int64_t point_index(int64_t id) const {
     return block_first[static_cast<std::size_t>(id / point_block)] + id % point_block;
@@ -40,11 +44,11 @@ struct VtuCellRange {
 };
 
 // Part `part` of `parts` of the file's cells ([n part / parts, n (part + 1) / parts)) and of its
-// points. Empty (with `why`) for a file that cannot be read by parts: not one piece of raw
-// appended arrays, ghost arrays (a piece of a partitioned output), rational weights, or a file
-// this process cannot open (the others' may be another path, as in mpirun's MPMD form). Throws
-// InputError for what this part finds wrong in the file (read_vtu names the same problem, or
-// one of a lower part first).
+// points (the points the cells use, unless used_points_read says otherwise). Empty (with `why`) for
+// a file that cannot be read by parts: not one piece of raw appended arrays, ghost arrays (a piece
+// of a partitioned output), rational weights, or a file this process cannot open (the others' may
+// be another path, as in mpirun's MPMD form). Throws InputError for what this part finds wrong in
+// the file (read_vtu names the same problem, or one of a lower part first).
 std::optional<VtuCellRange> read_vtu_cell_range(const std::string &path,
                                                 const FieldSelection &field,
                                                 const ReadLimits &limits, int part, int parts,

@@ -9,8 +9,9 @@ say that rank 0 read the whole. Files written by VTK's own writer (python3-vtk9)
 parts too: zlib-compressed in blocks of 1 KiB (so that every part's range crosses blocks), a
 UInt32 header, Float32 points, a vector field by component and by magnitude, vertex and line
 cells among the triangles (skipped, as one process skips them), points numbered at random
-(every rank's points spread over the whole file), and DOLFINx's edge nodes at Gauss-Lobatto
-points (each rank resamples its part). A file that cannot be read by parts (inline
+(every rank's points spread over the whole file; in a file of 30,000 cells, on 4 and 7 ranks each
+rank gets its cells' points from the ranks that read them, and says so), and DOLFINx's edge
+nodes at Gauss-Lobatto points (each rank resamples its part). A file that cannot be read by parts (inline
 arrays, appended base64) is read whole by rank 0, which says so and why, with the same JSON. A
 problem a part finds (a NaN among its points, a cell naming a point the file does not have) is
 reported as one process reports it, once.
@@ -25,6 +26,7 @@ from mpi_testing import PYTHON, mpi, read, require_mpi_hoct  # noqa: E402
 
 r = Results()
 WHOLE = "reads the whole of"
+NUMBERED_FAR = "numbered far from their cells"
 
 
 def same_tree(label, path, ranks, extra=(), by_parts=True):
@@ -158,6 +160,23 @@ with tempdir() as d:
                 same_tree("VTK's zlib blocks, a component", path, (2, 3), ["--scalar", "u", "--component", "1"])
                 same_tree("VTK's zlib blocks, the magnitude", path, (2, 3),
                           ["--scalar", "u", "--component", "magnitude"])
+        # Points numbered at random over a larger file: on 4 and 7 ranks a part's cells use
+        # points in nearly every block of ids, so each rank reads only its share of the points
+        # and gets its cells' points from the ranks that read them (with a note); on 2 and 3
+        # ranks the parts read the blocks they use.
+        big = os.path.join(d, "big.vtu")
+        run("generate", "random", "--cells", "30000", "-o", big)
+        path = os.path.join(d, "vtk-big-shuffled.vtu")
+        p = subprocess.run([PYTHON, "-c", VTK_REWRITE, big, path, "shuffled"], capture_output=True,
+                           text=True)
+        r.check(p.returncode == 0, f"VTK's writer (big, shuffled): {p.stderr[-1500:]}")
+        same_tree("VTK's zlib blocks, 30,000 cells, points numbered at random", path,
+                  (1, 2, 3, 4, 7), ["--scalar", "f"])
+        for n, owners in ((2, False), (3, False), (4, True), (7, True)):
+            p = mpi(n, "tree", path, "--scalar", "f")
+            r.check((NUMBERED_FAR in p.stderr) == owners,
+                    f"points numbered at random, {n} ranks: the note "
+                    f"{'missing' if owners else 'given'}:\n{p.stderr[-800:]}")
     else:
         print("VTK's writer: skipped (no python3-vtk9)")
 

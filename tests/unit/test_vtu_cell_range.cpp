@@ -14,10 +14,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <fstream>
 #include <iterator>
+#include <numeric>
 #include <random>
 
 namespace hoct {
@@ -27,7 +29,9 @@ struct TempDir : testing::TempDir {
   TempDir() : testing::TempDir("hoct-vtu-range") {}
 };
 
-void expect_parts_are_the_whole(const std::string &path, const std::string &label) {
+// `share_only`: how many parts read only their checked share (used_points_read false).
+void expect_parts_are_the_whole(const std::string &path, const std::string &label,
+                                int *share_only = nullptr) {
   const MeshInput whole = read_vtu(path);
   for (int parts = 1; parts <= 7; ++parts) {
     std::vector<int64_t> nodes;
@@ -38,6 +42,8 @@ void expect_parts_are_the_whole(const std::string &path, const std::string &labe
       const auto r = read_vtu_cell_range(path, {}, {}, part, parts, why);
       ASSERT_TRUE(r.has_value()) << label << ": " << why;
       const MeshInput &m = r->input;
+      if (share_only && !r->used_points_read)
+        ++*share_only;
       EXPECT_EQ(r->cell_begin, cells_end) << label;
       cells_end = r->cell_end;
       EXPECT_EQ(r->check_begin, checked) << label << ", part " << part << " of " << parts;
@@ -56,6 +62,8 @@ void expect_parts_are_the_whole(const std::string &path, const std::string &labe
         for (int64_t k = m.cell_offsets[c]; k < m.cell_offsets[c + 1]; ++k) {
           const int64_t q = m.cell_nodes[static_cast<std::size_t>(k)];
           nodes.push_back(q);
+          if (!r->used_points_read)
+            continue;
           // The part holds the point, at the whole's position and value.
           ASSERT_GE(r->point_index(q), 0);
           ASSERT_LT(r->point_index(q), static_cast<int64_t>(m.points.size()));
@@ -134,6 +142,32 @@ TEST(VtuCellRange, ThePartsAreTheWholeFile) {
     std::ofstream(path, std::ios::binary) << appended_zlib(inline_file);
     expect_parts_are_the_whole(path, label + ", zlib");
   }
+}
+
+TEST(VtuCellRange, PointsNumberedAtRandomAreLeftToTheirCheckers) {
+  // The same cubic mesh numbered as generated (points near their cells) and at random: with
+  // points at random a part's cells use nearly every block of ids, and from 4 parts on it reads
+  // its checked share alone (the 2 and 3 parts of 30,000 cells still read their blocks).
+  TempDir tmp;
+  const std::string path = tmp.file("numbered.vtu");
+  const MeshInput in = dataset("random", 3, 30000);
+  write_vtu(path, in, VtkEncoding::AppendedRaw);
+  int share_only = 0;
+  expect_parts_are_the_whole(path, "numbered near", &share_only);
+  EXPECT_EQ(share_only, 0);
+  std::vector<int64_t> perm(in.num_points());
+  std::iota(perm.begin(), perm.end(), int64_t{0});
+  std::shuffle(perm.begin(), perm.end(), std::mt19937(11));
+  MeshInput shuffled = in;
+  for (std::size_t i = 0; i < perm.size(); ++i) {
+    shuffled.points[static_cast<std::size_t>(perm[i])] = in.points[i];
+    shuffled.values[static_cast<std::size_t>(perm[i])] = in.values[i];
+  }
+  for (int64_t &q : shuffled.cell_nodes)
+    q = perm[static_cast<std::size_t>(q)];
+  write_vtu(path, shuffled, VtkEncoding::AppendedRaw);
+  expect_parts_are_the_whole(path, "numbered at random", &share_only);
+  EXPECT_EQ(share_only, 4 + 5 + 6 + 7);
 }
 
 TEST(VtuCellRange, SaysWhyAFileCannotBeReadByParts) {
