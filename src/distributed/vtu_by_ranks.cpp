@@ -250,9 +250,19 @@ RankRead read_vtu_by_ranks(const std::string &path, const FieldSelection &field,
   if (from_owners) {
     read.note = "its points are numbered far from their cells: each rank read its share of the "
                 "points and got its cells' points from the ranks that read them";
-    std::vector<int64_t> used(m.cell_nodes.begin(), m.cell_nodes.end());
-    std::sort(used.begin(), used.end());
-    used.erase(std::unique(used.begin(), used.end()), used.end());
+    // The ids its cells use, ascending, each cell node renumbered to its index among them: one
+    // sort of (id, node) pairs.
+    std::vector<std::array<int64_t, 2>> nodes(m.cell_nodes.size());
+    for (std::size_t k = 0; k < nodes.size(); ++k)
+      nodes[k] = {m.cell_nodes[k], static_cast<int64_t>(k)};
+    std::sort(nodes.begin(), nodes.end());
+    std::vector<int64_t> used;
+    for (const auto &[q, k] : nodes) {
+      if (used.empty() || used.back() != q)
+        used.push_back(q);
+      m.cell_nodes[static_cast<std::size_t>(k)] = static_cast<int64_t>(used.size()) - 1;
+    }
+    std::vector<std::array<int64_t, 2>>().swap(nodes);
     const std::vector<PointGot> got = points_from_owners(v, used, rank, ranks, comm);
     m.points = {};
     m.values = {};
@@ -264,8 +274,6 @@ RankRead read_vtu_by_ranks(const std::string &path, const FieldSelection &field,
       out.values[i] = got[i].value;
       piece.point_span[i] = got[i].span;
     }
-    for (int64_t &q : m.cell_nodes)
-      q = std::lower_bound(used.begin(), used.end(), q) - used.begin();
     piece.global_point = std::move(used);
   } else {
     by_blocks(v, piece, rank, ranks, comm);
