@@ -6,6 +6,7 @@
 #include "exact/piece_codec.hpp"
 #include "exact/piece_trees.hpp"
 #include "exact/pl_piece_trees.hpp"
+#include "exact/pl_reeb_pieces.hpp"
 #include "exact/reeb_group.hpp"
 #include "exact/reeb_pieces.hpp"
 #include "mesh/duplicate_points.hpp"
@@ -390,9 +391,7 @@ DistributedOutcome distributed_tree_on(RankInput in, const MeshInput *whole, con
     int other_cells = linear && !empty_piece && !nodal_lagrange_cells(piece.input) ? 1 : 0;
     MPI_Allreduce(MPI_IN_PLACE, &other_cells, 1, MPI_INT, MPI_MAX, comm);
     const std::string method = linear ? "the linear method's" : "the refine method's";
-    if (rank == 0 && reeb)
-      whole_reason = method + " Reeb graph is not computed by pieces";
-    else if (rank == 0 && other_cells)
+    if (rank == 0 && other_cells)
       whole_reason = method + " PL mesh of Bezier or serendipity cells has points of its own";
     else if (rank == 0 && refined && !d.whole_check.empty())
       whole_reason = method + " pieces need the mesh checked by them";
@@ -415,7 +414,7 @@ DistributedOutcome distributed_tree_on(RankInput in, const MeshInput *whole, con
   // 3. The piece's kept trees, 4. merged in a binary tree of ranks (a Reeb graph's pieces as
   // groups, glued at every merge).
   PieceTrees trees;
-  ReebGroup group; // a Reeb graph's: glued as far as it makes no loop (exact/reeb_group)
+  ReebGroup group; // a Reeb graph's pieces, glued at every merge (exact/reeb_group)
   TreeTimings time;
   PlPieceTrees pl; // the PL methods' counts: this piece's, then the whole's on rank 0
   try {
@@ -426,22 +425,31 @@ DistributedOutcome distributed_tree_on(RankInput in, const MeshInput *whole, con
     eo.fallback_refinement = rq.fallback_refinement;
     if (empty_piece) {
       trees.first_piece = trees.last_piece = rank;
+    } else if ((linear || refined) && reeb) { // the PL mesh cut into disks (pl_reeb_pieces)
+      const PlPieceMesh m = linear ? linear_piece_mesh(piece.input, place)
+                                   : refined_piece_mesh(mesh, place, rq.refine);
+      pl.triangles = static_cast<int64_t>(m.pl.triangles.size());
+      pl.own_points = m.own_points;
+      pl.cell_points = m.cell_points;
+      group = pl_reeb_group(m, place, rq.augmented, threads);
     } else if (linear || refined) {
       pl = linear ? pl_piece_trees(piece.input, place, rq.augmented, threads)
                   : refined_piece_trees(mesh, place, rq.refine, rq.augmented, threads);
       trees = std::move(pl.trees);
-    } else if (reeb)
+    } else if (reeb) {
       trees = reeb_piece(mesh, place, eo, time);
-    else
+    } else {
       trees = piece_trees(mesh, place, eo, time);
-    if (reeb)
+    }
+    if (reeb && (empty_piece || !(linear || refined)))
       group = reeb_group(trees, rq.augmented);
   } catch (const std::exception &e) {
     failure = std::string(e.what());
   }
   agree(comm, failure, rank, ranks);
   me.piece_seconds = build_seconds + clock.seconds();
-  me.kept_nodes = static_cast<int64_t>(trees.nodes.size());
+  me.kept_nodes =
+      static_cast<int64_t>(reeb && (linear || refined) ? group.nodes.size() : trees.nodes.size());
   const double tree_start = clock.seconds();
   for (int step = 1; step < ranks; step *= 2) {
     if (rank % (2 * step) == step) {
@@ -498,11 +506,16 @@ DistributedOutcome distributed_tree_on(RankInput in, const MeshInput *whole, con
   }
 
   // 5. Rank 0: the whole tree, finished as compute_tree finishes it.
-  TreeResult tree = reeb ? reeb_graph_of_group(group, rq.augmented, field_scale[0])
+  TreeResult tree = reeb ? reeb_graph_of_group(group, rq.augmented, linear ? 0.0 : field_scale[0])
                     : linear || refined
                         ? pl_tree_of_pieces(trees, rq.augmented, method_name(rq), pl_counts,
                                             linear ? 0.0 : field_scale[0])
                         : tree_of_pieces(trees, rq.augmented, field_scale[0]);
+  if (reeb && (linear || refined)) { // as pl_tree_of_pieces
+    tree.method = method_name(rq);
+    tree.stats.exact.reset();
+    tree.stats.pl = pl_counts;
+  }
   const int64_t ties = tree.stats.seam_paths_nonmonotone.value_or(0);
   if (joined_whole) {
     int need = ties > 0 ? 1 : 0;

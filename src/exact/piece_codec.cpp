@@ -111,8 +111,8 @@ ReebGroup decode_reeb_group(std::span<const std::byte> bytes) {
     throw std::runtime_error("decode_reeb_group: too many chains");
   g.chains.resize(static_cast<std::size_t>(chains));
   for (ReebChain &c : g.chains) {
-    c.lo = r.value<int64_t>();
-    c.hi = r.value<int64_t>();
+    c.lo = r.value<NodeKey>();
+    c.hi = r.value<NodeKey>();
     c.span = r.value<std::array<int32_t, 2>>();
     c.nodes = r.array<int64_t>();
     c.rising = r.array<uint8_t>();

@@ -18,10 +18,13 @@
 #include "exact/piece_trees.hpp"
 #include "mesh/mesh.hpp"
 #include "mesh/mesh_input.hpp"
+#include "pl/pl_mesh.hpp"
 #include "tree/tree_result.hpp"
 
+#include <array>
 #include <cstdint>
 #include <string>
+#include <vector>
 
 namespace hoct {
 
@@ -32,6 +35,23 @@ struct PlPieceTrees {
   // edges' lattice points (K - 1 per edge) the whole's PL vertices.
   int64_t triangles = 0, own_points = 0, cell_points = 0;
 };
+
+// A piece's PL mesh with its vertices named, spanned and placed as the whole's PL mesh does it:
+// `key` and `span` per point of `pl`, `point` the sweeps' vertices (linear: the points the cells
+// use; empty: every point of pl, `local` then empty too; else local[p] is point p's index in it).
+struct PlPieceMesh {
+  PlMesh pl;
+  std::vector<int64_t> point, local;
+  std::vector<NodeKey> key;
+  std::vector<std::array<int32_t, 2>> span;
+  std::vector<int64_t> triangle; // refine: the piece's triangle that places the point
+  const Mesh *refined = nullptr; // refine: the piece's mesh (its cells' origins)
+  int64_t own_points = 0, cell_points = 0;
+};
+PlPieceMesh linear_piece_mesh(const MeshInput &piece, const PiecePlace &place);
+PlPieceMesh refined_piece_mesh(const Mesh &mesh, const PiecePlace &place, int k);
+// Point p of the piece's PL mesh as a kept node (its value left to the caller).
+PieceNode pl_piece_node(const PlPieceMesh &m, const PiecePlace &place, int64_t p);
 
 // One piece's kept trees by the linear method (`augmented`: every vertex kept). Its cells must
 // be Lagrange triangles and quadrilaterals (nodal_lagrange_cells: the split makes no points of

@@ -1,5 +1,6 @@
 #include "exact/reeb_group.hpp"
 
+#include "exact/piece_keys.hpp"
 #include "tree/path_gluing.hpp"
 #include "tree/sweep_contour_tree.hpp"
 #include "util/stopwatch.hpp"
@@ -12,10 +13,6 @@
 
 namespace hoct {
 namespace {
-
-bool within(const std::array<int32_t, 2> &span, int32_t first, int32_t last) {
-  return span[0] >= first && span[1] <= last;
-}
 
 bool below(const PieceNode &x, const PieceNode &y) {
   return std::tie(x.value, x.key) < std::tie(y.value, y.key);
@@ -221,6 +218,20 @@ void settle(ReebGroup &g, bool augmented) {
 } // namespace
 
 ReebGroup reeb_group(const PieceTrees &piece, bool augmented) {
+  std::vector<ReebChain> chains;
+  for (const SharedChain &c : piece.chains) {
+    ReebChain r;
+    r.lo = {NodeKey::Vertex, c.lo, 0, 0};
+    r.hi = {NodeKey::Vertex, c.hi, 0, 0};
+    r.span = c.span;
+    for (const ChainNode &k : c.nodes)
+      r.nodes.push_back(k.node);
+    chains.push_back(std::move(r));
+  }
+  return reeb_group(piece, std::move(chains), augmented);
+}
+
+ReebGroup reeb_group(const PieceTrees &piece, std::vector<ReebChain> chains, bool augmented) {
   ReebGroup g;
   g.first_piece = piece.first_piece;
   g.last_piece = piece.last_piece;
@@ -245,21 +256,16 @@ ReebGroup reeb_group(const PieceTrees &piece, bool augmented) {
   std::sort(g.arcs.begin(), g.arcs.end());
   // Its chains: each segment's path in the disks, and whether it rises.
   std::vector<std::array<int64_t, 2>> ends;
-  for (const SharedChain &c : piece.chains)
+  for (const ReebChain &c : chains)
     for (std::size_t k = 0; k + 1 < c.nodes.size(); ++k)
-      ends.push_back({std::min(c.nodes[k].node, c.nodes[k + 1].node),
-                      std::max(c.nodes[k].node, c.nodes[k + 1].node)});
+      ends.push_back({std::min(c.nodes[k], c.nodes[k + 1]), std::max(c.nodes[k], c.nodes[k + 1])});
   const std::vector<std::vector<int64_t>> paths = forest_paths(graph_of(g), ends);
   std::size_t s = 0;
-  for (const SharedChain &c : piece.chains) {
-    ReebChain r;
-    r.lo = c.lo;
-    r.hi = c.hi;
-    r.span = c.span;
-    r.route_first.push_back(0);
-    for (const ChainNode &k : c.nodes)
-      r.nodes.push_back(k.node);
-    for (std::size_t k = 0; k + 1 < c.nodes.size(); ++k, ++s) {
+  for (ReebChain &r : chains) {
+    r.rising.clear();
+    r.route_first.assign(1, 0);
+    r.route_arcs.clear();
+    for (std::size_t k = 0; k + 1 < r.nodes.size(); ++k, ++s) {
       int64_t at = ends[s][0];
       bool rising = true;
       for (const int64_t a : paths[s]) {
@@ -272,8 +278,8 @@ ReebGroup reeb_group(const PieceTrees &piece, bool augmented) {
         r.route_arcs.insert(r.route_arcs.end(), paths[s].begin(), paths[s].end());
       r.route_first.push_back(static_cast<int64_t>(r.route_arcs.size()));
     }
-    g.chains.push_back(std::move(r));
   }
+  g.chains = std::move(chains);
   std::stable_sort(g.chains.begin(), g.chains.end(), [](const ReebChain &x, const ReebChain &y) {
     return std::tie(x.lo, x.hi) < std::tie(y.lo, y.hi);
   });

@@ -27,7 +27,7 @@ namespace hoct {
 // path's route in the group's graph. A segment that does not rise is glued at its ends only, and
 // counted, as one process's gluing does.
 struct ReebChain {
-  int64_t lo = 0, hi = 0;           // the edge's points in the whole
+  NodeKey lo, hi;                   // the edge's ends (their nodes' keys), lower first
   std::array<int32_t, 2> span{};    // the pieces that may hold the edge
   std::vector<int64_t> nodes;       // indices into ReebGroup::nodes
   std::vector<uint8_t> rising;      // nodes.size() - 1 flags
@@ -48,6 +48,11 @@ struct ReebGroup {
 // One piece's group from its reeb_piece: its disks' contour forest with its own cut glued back,
 // reduced (`augmented`: every node stays).
 ReebGroup reeb_group(const PieceTrees &piece, bool augmented);
+
+// The same from a piece's kept trees of its disks (nodes ascending (value, key), the copies of
+// one point next to each other; piece.chains unused) and the sides of its edges to glue:
+// `chains`' nodes are indices into piece.nodes, their routes and flags left to fill.
+ReebGroup reeb_group(const PieceTrees &piece, std::vector<ReebChain> chains, bool augmented);
 
 // Groups a (pieces first .. k) and b (k + 1 .. last) as one, glued where they meet.
 ReebGroup merge_reeb_groups(const ReebGroup &a, const ReebGroup &b, bool augmented);

@@ -9,8 +9,9 @@ independent truth is hoct's own single-process tree, computed without MPI at all
 generated genus-0 dataset, with plateaus and fallback cells, quadrilaterals, a field at +1e7,
 --augmented and --simplify, the JSON (--no-timings) must be byte-identical to it for 1, 2, 3, 4
 and 7 ranks (--oversubscribe: this machine has 2 cores); the same for the linear and the refine
-method (PL trees, by pieces too), whose Reeb graphs (and the linear method's serendipity cells)
-rank 0 computes from the whole mesh, saying so; so it does for --vtp (the arcs' paths search the
+method (PL trees, by pieces too; the plate's PL Reeb graphs by pieces as well, on 2-7 ranks),
+whose serendipity cells (linear) rank 0 computes from the whole mesh, saying so; so it does for
+--vtp (the arcs' paths search the
 whole graph), the VTP and the JSON one process's. Also checked:
 a broken file is reported as without MPI, and rank 0 alone writes the outputs.
 Bad meshes: inverted cells that a piece finds are named by the whole's cell numbers, as without
@@ -125,9 +126,10 @@ with tempdir() as d:
     run("generate", "plate", "--cells", "2000", "-o", plate)
     reeb_with_shape(r, "plate", plate)
 
-    # What the linear method's pieces do not compute (a Reeb graph; serendipity cells, whose PL
-    # mesh has points of its own): rank 0 computes it from the whole mesh, says so, and the
-    # JSON is one process's.
+    # The PL methods' Reeb graphs by pieces (each rank's PL mesh cut into disks, glued in the
+    # tree of ranks): one process's JSON, no whole mesh on rank 0. What the linear method's
+    # pieces do not compute (serendipity cells, whose PL mesh has points of its own): rank 0
+    # computes it from the whole mesh, says so, and the JSON is one process's.
     import meshio
     import numpy as np
 
@@ -144,19 +146,22 @@ with tempdir() as d:
     xy = np.array([(x / (2 * n8), y / (2 * n8), 0.0) for (x, y) in sorted(grid, key=grid.get)])
     meshio.write(quad8, meshio.Mesh(xy, [("quad8", np.array(cells8))],
                                     point_data={"f": np.sin(5 * xy[:, 0]) * np.cos(4 * xy[:, 1])}))
-    for label, file, flags, why in [
-            ("plate", plate, ["--linear"], "the linear method's Reeb graph"),
-            ("plate", plate, ["--refine", "2"], "the refine method's Reeb graph"),
-            ("serendipity quadrilaterals", quad8, ["--linear"], "Bezier or serendipity")]:
+    for label, file, flags, why, ranks in [
+            ("plate", plate, ["--linear"], None, (2, 3, 4, 7)),
+            ("plate", plate, ["--linear", "--augmented"], None, (2, 3)),
+            ("plate", plate, ["--refine", "2"], None, (2, 3, 4, 7)),
+            ("serendipity quadrilaterals", quad8, ["--linear"], "Bezier or serendipity", (2, 3))]:
         want = os.path.join(d, "linear_whole.json")
         run("tree", file, *flags, "--json", want, "--no-timings", "-q")
-        for n in (2, 3):
+        for n in ranks:
             got = os.path.join(d, f"linear_whole{n}.json")
             p = mpi(n, "tree", file, *flags, "--json", got, "--no-timings")
+            whole = "tree: the whole mesh on rank 0 (" in p.stdout
             r.check(p.returncode == 0 and os.path.exists(got) and read(got) == read(want)
-                    and "tree: the whole mesh on rank 0 (" in p.stdout and why in p.stdout
+                    and (whole and why in p.stdout if why else not whole)
                     and flags[0][2:] in p.stdout.splitlines()[0],
-                    f"{label} {flags}, {n} ranks: one process's JSON, from the whole on rank 0 "
+                    f"{label} {flags}, {n} ranks: one process's JSON, "
+                    f"{'from the whole on rank 0' if why else 'by pieces'} "
                     f"({p.returncode}):\n{p.stdout[-1500:]}{p.stderr[-800:]}")
 
     # Rank 0 alone reads a file the other ranks cannot open: with every other rank given a path
