@@ -33,21 +33,31 @@ PieceTrees kept_trees(const PlPieceMesh &m, const PiecePlace &place,
   for (std::size_t t = 0; t < pl.triangles.size(); ++t)
     for (int k = 0; k < 3; ++k)
       edges[3 * t + k] = {index(pl.triangles[t][k]), index(pl.triangles[t][(k + 1) % 3])};
+  return pl_kept_trees(m, place, values, edges, keep, order, m.point, threads);
+}
+
+} // namespace
+
+PieceTrees pl_kept_trees(const PlPieceMesh &m, const PiecePlace &place,
+                         std::span<const double> values, std::span<const GraphEdge> edges,
+                         std::span<const uint8_t> keep, std::span<const int64_t> order,
+                         std::span<const int64_t> point, int threads, std::vector<int64_t> *kept) {
   const KeptMergeTrees kt = sweep_merge_trees(values, {edges, {}, {}}, keep, threads, order);
+  if (kept)
+    *kept = kt.nodes;
   PieceTrees trees;
   trees.first_piece = trees.last_piece = place.piece;
   trees.join_parent = kt.join_parent;
   trees.split_parent = kt.split_parent;
   trees.nodes.resize(kt.nodes.size());
   for (std::size_t k = 0; k < kt.nodes.size(); ++k) {
+    const int64_t i = kt.nodes[k];
     PieceNode &node = trees.nodes[k];
-    node = pl_piece_node(m, place, at(kt.nodes[k]));
-    node.value = values[kt.nodes[k]];
+    node = pl_piece_node(m, place, point.empty() ? i : point[static_cast<std::size_t>(i)]);
+    node.value = values[i];
   }
   return trees;
 }
-
-} // namespace
 
 PieceNode pl_piece_node(const PlPieceMesh &m, const PiecePlace &place, int64_t p) {
   PieceNode node;

@@ -19,10 +19,12 @@
 #include "mesh/mesh.hpp"
 #include "mesh/mesh_input.hpp"
 #include "pl/pl_mesh.hpp"
+#include "tree/scalar_graph.hpp"
 #include "tree/tree_result.hpp"
 
 #include <array>
 #include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -52,6 +54,15 @@ PlPieceMesh linear_piece_mesh(const MeshInput &piece, const PiecePlace &place);
 PlPieceMesh refined_piece_mesh(const Mesh &mesh, const PiecePlace &place, int k);
 // Point p of the piece's PL mesh as a kept node (its value left to the caller).
 PieceNode pl_piece_node(const PlPieceMesh &m, const PiecePlace &place, int64_t p);
+// The kept join and split trees (sweep_merge_trees) of vertices 0..n-1 over points of the
+// piece's PL mesh (`point[i]`: vertex i's; empty: vertex i is point i), with the values, edges,
+// flags of vertices kept whatever they are and ascending order given, as pl_piece_node's;
+// `kept` (optional): the kept vertices, in the nodes' order.
+PieceTrees pl_kept_trees(const PlPieceMesh &m, const PiecePlace &place,
+                         std::span<const double> values, std::span<const GraphEdge> edges,
+                         std::span<const uint8_t> keep, std::span<const int64_t> order,
+                         std::span<const int64_t> point, int threads,
+                         std::vector<int64_t> *kept = nullptr);
 
 // One piece's kept trees by the linear method (`augmented`: every vertex kept). Its cells must
 // be Lagrange triangles and quadrilaterals (nodal_lagrange_cells: the split makes no points of

@@ -75,18 +75,12 @@ ReebGroup pl_reeb_group(const PlPieceMesh &m, const PiecePlace &place, bool augm
   for (const auto &s : seams)
     for (const int64_t c : s)
       keep[c] = 1;
-  const KeptMergeTrees kt = sweep_merge_trees(values, {edges, {}, {}}, keep, threads, order);
-  PieceTrees trees;
-  trees.first_piece = trees.last_piece = place.piece;
-  trees.join_parent = kt.join_parent;
-  trees.split_parent = kt.split_parent;
-  trees.nodes.resize(kt.nodes.size());
+  std::vector<int64_t> kept_copies;
+  const PieceTrees trees =
+      pl_kept_trees(m, place, values, edges, keep, order, point, threads, &kept_copies);
   std::vector<int64_t> kept(static_cast<std::size_t>(nc), -1);
-  for (std::size_t k = 0; k < kt.nodes.size(); ++k) {
-    trees.nodes[k] = pl_piece_node(m, place, point[kt.nodes[k]]);
-    trees.nodes[k].value = values[kt.nodes[k]];
-    kept[kt.nodes[k]] = static_cast<int64_t>(k);
-  }
+  for (std::size_t k = 0; k < kept_copies.size(); ++k)
+    kept[kept_copies[k]] = static_cast<int64_t>(k);
   // The sides to glue, one PL edge each from its lower key: both copies of each cut edge, and
   // the border edges other pieces may hold (the pieces of an edge's cells hold both its ends).
   std::vector<ReebChain> chains;

@@ -137,14 +137,8 @@ Spliced splice(const ContourTree &g, const std::vector<uint8_t> &keep) {
     }
     arcs.push_back({s.node_at[g.arcs[a][0]], s.node_at[g.arcs[at][1]]});
   }
-  std::vector<int64_t> order(arcs.size()), rank(arcs.size());
-  std::iota(order.begin(), order.end(), int64_t{0});
-  std::stable_sort(order.begin(), order.end(),
-                   [&](int64_t x, int64_t y) { return arcs[x] < arcs[y]; });
-  for (std::size_t k = 0; k < order.size(); ++k) {
-    s.graph.arcs.push_back(arcs[order[k]]);
-    rank[order[k]] = static_cast<int64_t>(k);
-  }
+  const std::vector<int64_t> rank = sort_arcs(arcs);
+  s.graph.arcs = std::move(arcs);
   for (int64_t &a : s.arc_at) {
     if (a < 0)
       throw std::logic_error("reeb_group: a loop of regular nodes");
@@ -316,21 +310,10 @@ ReebGroup merge_reeb_groups(const ReebGroup &a, const ReebGroup &b, bool augment
     g.arcs.push_back({ia[x], ia[y]});
   for (const auto &[x, y] : b.arcs)
     g.arcs.push_back({ib[x], ib[y]});
-  // The arcs in order: a's then b's, both sorted already, merged.
-  std::vector<int64_t> arc_a(a.arcs.size()), arc_b(b.arcs.size());
-  {
-    std::vector<int64_t> order(g.arcs.size());
-    std::iota(order.begin(), order.end(), int64_t{0});
-    std::stable_sort(order.begin(), order.end(),
-                     [&](int64_t x, int64_t y) { return g.arcs[x] < g.arcs[y]; });
-    std::vector<std::array<int64_t, 2>> sorted(g.arcs.size());
-    for (std::size_t k = 0; k < order.size(); ++k) {
-      sorted[k] = g.arcs[order[k]];
-      const std::size_t from = static_cast<std::size_t>(order[k]);
-      (from < a.arcs.size() ? arc_a[from] : arc_b[from - a.arcs.size()]) = static_cast<int64_t>(k);
-    }
-    g.arcs = std::move(sorted);
-  }
+  // The arcs in order (a's, then b's), and where each went.
+  const std::vector<int64_t> rank = sort_arcs(g.arcs);
+  const std::vector<int64_t> arc_a(rank.begin(), rank.begin() + std::ssize(a.arcs)),
+      arc_b(rank.begin() + std::ssize(a.arcs), rank.end());
   std::size_t i = 0, j = 0;
   while (i < a.chains.size() || j < b.chains.size()) {
     const bool take_a = j == b.chains.size() ||

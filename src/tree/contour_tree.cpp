@@ -3,6 +3,7 @@
 #include "tree/union_find.hpp"
 
 #include <algorithm>
+#include <numeric>
 #include <stdexcept>
 
 namespace hoct {
@@ -127,6 +128,20 @@ ContourTree merge_trees(const ScalarGraph &g, const MergeTree &join, const Merge
   }
   std::sort(ct.arcs.begin(), ct.arcs.end());
   return ct;
+}
+
+std::vector<int64_t> sort_arcs(std::vector<std::array<int64_t, 2>> &arcs) {
+  std::vector<int64_t> order(arcs.size()), rank(arcs.size());
+  std::iota(order.begin(), order.end(), int64_t{0});
+  std::stable_sort(order.begin(), order.end(),
+                   [&](int64_t x, int64_t y) { return arcs[x] < arcs[y]; });
+  std::vector<std::array<int64_t, 2>> sorted(arcs.size());
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    sorted[k] = arcs[order[k]];
+    rank[order[k]] = static_cast<int64_t>(k);
+  }
+  arcs = std::move(sorted);
+  return rank;
 }
 
 int64_t graph_loops(const ContourTree &g) {

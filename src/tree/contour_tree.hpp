@@ -45,6 +45,10 @@ ContourTree merge_trees(const ScalarGraph &graph, const MergeTree &join, const M
 // number of independent loops of a Reeb graph.
 int64_t graph_loops(const ContourTree &graph);
 
+// Sorts `arcs` (stably: parallel arcs keep their order) and returns where each went: the new
+// index of arc i is the result's [i].
+std::vector<int64_t> sort_arcs(std::vector<std::array<int64_t, 2>> &arcs);
+
 // Removes regular nodes (exactly one lower and one upper arc), splicing their arcs.
 ContourTree reduce(const ContourTree &augmented);
 

@@ -3,7 +3,6 @@
 #include "tree/union_find.hpp"
 
 #include <algorithm>
-#include <numeric>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -287,16 +286,7 @@ GluedGraph glue_paths(const ContourTree &tree, const PathGluing &gluing, bool re
       g.arcs.push_back({std::min(x, y), std::max(x, y)});
     }
   // Arcs sorted, and where each piece of an input arc went.
-  std::vector<int64_t> order(g.arcs.size()), rank(g.arcs.size());
-  std::iota(order.begin(), order.end(), int64_t{0});
-  std::stable_sort(order.begin(), order.end(),
-                   [&](int64_t x, int64_t y) { return g.arcs[x] < g.arcs[y]; });
-  std::vector<std::array<int64_t, 2>> sorted(g.arcs.size());
-  for (std::size_t k = 0; k < order.size(); ++k) {
-    sorted[k] = g.arcs[order[k]];
-    rank[order[k]] = static_cast<int64_t>(k);
-  }
-  g.arcs = std::move(sorted);
+  const std::vector<int64_t> rank = sort_arcs(g.arcs);
   if (!reduced) {
     out.node_of.resize(static_cast<std::size_t>(n));
     for (int64_t i = 0; i < n; ++i)
