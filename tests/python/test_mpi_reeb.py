@@ -1,5 +1,5 @@
 """`mpirun -np N hoct tree FILE` on a domain that is not a disk or a sphere: the distributed Reeb
-graph (each rank's piece cut into disks, the pieces glued on rank 0).
+graph (each rank's piece cut into disks, the pieces glued in the tree of ranks).
 
 The independent truth is hoct's own single-process Reeb graph, computed without MPI at all
 (`hoct tree FILE --json OUT --no-timings`, itself checked against VTK's level sets by
@@ -10,7 +10,8 @@ plate with 100 holes (degrees 2, 3 and 5, --augmented, --simplify 1%), and the s
 triangles of degrees 1-3 at exact parametric positions, or Gmsh's): annuli (one of 6 cells: ranks
 without cells), tori, Moebius strips, a square and a disk with 3 holes, a double torus, mostly
 with wavy fields (many saddles, ordinary pairs besides the loops), one of them simplified; and
-several components in one file: two annuli, a disk and an annulus, two disks, two of hoct's
+an annulus of bilinear quadrilaterals, exact and by the PL methods (--linear, --refine 3: their
+Reeb graphs by pieces too); several components in one file: two annuli, a disk and an annulus, two disks, two of hoct's
 spheres, a sphere and a disk, a sphere and the plate. The JSON says "kind": "Reeb graph", its
 arc graph has the domain's components and the expected loops (a height-like function: one per hole of a planar domain, g on
 a closed surface of genus g; a wavy field: at most the domain's first Betti number).
@@ -464,8 +465,12 @@ with tempdir() as d:
         meshes[label] = path
         whole_case(f"{label} ({len(mesh[1])} cells)", path, loops, most, comps, extra)
 
-    whole_case("an annulus of bilinear quadrilaterals", quad_annulus(os.path.join(d, "quads.vtu")),
-               1)
+    quads = quad_annulus(os.path.join(d, "quads.vtu"))
+    whole_case("an annulus of bilinear quadrilaterals", quads, 1)
+    # The PL methods' Reeb graphs by pieces too (exact/pl_reeb_pieces): each rank's PL mesh cut
+    # into disks, glued in the tree of ranks.
+    whole_case("the quadrilaterals' annulus, --linear", quads, 1, extra=["--linear"])
+    whole_case("the quadrilaterals' annulus, --refine 3", quads, 1, extra=["--refine", "3"])
 
     # Closed components: hoct's sphere (genus 0) twice, and with hoct's Gaussian disk.
     sphere, gauss = os.path.join(d, "sphere.vtu"), os.path.join(d, "gauss.vtu")
