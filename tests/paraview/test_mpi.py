@@ -171,7 +171,21 @@ def main():
                      f"simplified tree {len(want['nodes'])}")
         # Gathered from both ranks (rank 1's part is empty): the same tree.
         compare_whole(label + ", gathered", tp.fetch(f, 0), tp.fetch(f, 1), tree)
+        straight = local_output(f, 1).GetNumberOfPoints()
         pv.Delete(f)
+    # Arc Paths Over Processes: process 0 joins the whole mesh and draws the arcs on the surface
+    # (the Distribution says so): the same tree, with curved arcs (more points than straight).
+    f = pv.HigherOrderContourTree(Input=spread, ArcPathsOverProcesses=1)
+    errors = catch(f, vtkCommand.ErrorEvent)
+    f.UpdatePipeline()
+    label = "two pieces, arc paths"
+    tp.check(not errors, f"{label}: errors {errors}")
+    compare_whole(label, local_output(f, 0), local_output(f, 1), tree)
+    tp.check("tree: the whole mesh on process 0 (the arcs' paths" in distribution(f),
+             f"{label}: the Distribution says {distribution(f)!r}")
+    curved = local_output(f, 1).GetNumberOfPoints()
+    tp.check(curved > straight, f"{label}: {curved} points on the arcs, straight ones have {straight}")
+    pv.Delete(f)
 
     # A .pvtu of 4 pieces with a ghost level and global ids, each process reading two: the ghost
     # cells are dropped and the copies joined as `hoct tree FILE.pvtu` does; the CLI's tree.

@@ -294,9 +294,10 @@ int vtkHoctContourTree::RequestDistributed(vtkInformationVector **inputVector,
     }
     const int threads = hoct::thread_count(this->Threads);
     // The properties as a request, as `mpirun hoct tree` makes it; the arcs drawn straight
-    // (their paths search the whole graph: distributed_tree would compute the whole on rank 0).
+    // unless asked for (their paths search the whole graph: distributed_tree computes the whole
+    // on rank 0 then).
     hoct::TreeRequest rq = this->MakeRequest();
-    rq.arcs = hoct::ArcGeometry::None;
+    rq.arcs = this->ArcPathsOverProcesses ? hoct::ArcGeometry::AllPaths : hoct::ArcGeometry::None;
     // Each process keeps its own piece, joined with the others' as `mpirun hoct tree` joins a
     // .pvtu's pieces; where the processes cannot join them alone (or one failed), every process
     // gathers the whole mesh, which reports what is wrong as one process would.

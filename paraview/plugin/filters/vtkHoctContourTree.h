@@ -57,6 +57,13 @@ public:
   vtkGetMacro(Force, bool);
   vtkBooleanMacro(Force, bool);
 
+  // On several processes with cells: draw the arcs on the surface, as on one process. Process
+  // 0 then joins the whole mesh from the pieces and computes the tree from it (as `mpirun hoct
+  // tree --vtp` does). Off (the default): the arcs are straight, and no process holds the whole.
+  vtkSetMacro(ArcPathsOverProcesses, bool);
+  vtkGetMacro(ArcPathsOverProcesses, bool);
+  vtkBooleanMacro(ArcPathsOverProcesses, bool);
+
   // Threads for the mesh build, the tree and the arcs (0: all cores). The result does not
   // depend on it.
   vtkSetClampMacro(Threads, int, 0, 1024);
@@ -77,6 +84,7 @@ protected:
   int RefineLevel = 4;
   bool KeepFlat = false;
   bool Force = false;
+  bool ArcPathsOverProcesses = false;
   int Threads = 0;
   bool WarnedPerPiece = false; // the per-piece warning (a build without MPI) is given once
 
