@@ -157,6 +157,45 @@ TEST(ReebPieces, AnnulusMoebiusStripAndTorus) {
   EXPECT_EQ(check_all_piece_counts(surface_grid(40, 12, true, true, false, wavy), "torus"), 1);
 }
 
+TEST(ReebPieces, BytesThatAreNotAReebGroupAreRefused) {
+  // The first of 2 pieces of the plate: a group with open chains and their routes.
+  const MeshInput whole = plate(2, 1500);
+  MeshScales scales;
+  MeshBuildOptions wo;
+  wo.whole_scales = [&](const MeshScales &own) { return scales = own; };
+  (void)build_mesh(whole, wo);
+  double reference = 0;
+  const std::vector<PieceTrees> pieces =
+      testing::pieces_of(whole, 2, scales, false, reference,
+                         [](const Mesh &m, const PiecePlace &p, const ExactTreeOptions &eo,
+                            TreeTimings &time) { return reeb_piece(m, p, eo, time); });
+  const ReebGroup group = reeb_group(pieces[0], false);
+  ASSERT_FALSE(group.chains.empty());
+  const auto bytes = encode_reeb_group(group);
+  EXPECT_NO_THROW(decode_reeb_group(bytes));
+  EXPECT_THROW(decode_reeb_group(std::span(bytes).first(bytes.size() - 1)), std::runtime_error);
+  auto bad = bytes;
+  bad[0] = std::byte{0};
+  EXPECT_THROW(decode_reeb_group(bad), std::runtime_error);
+  auto extra = bytes;
+  extra.push_back(std::byte{0});
+  EXPECT_THROW(decode_reeb_group(extra), std::runtime_error);
+  EXPECT_THROW(decode_piece_trees(bytes), std::runtime_error); // not kept trees
+  // Indices past their arrays: a chain's node, a route's arc, an arc's end.
+  for (int k = 0; k < 3; ++k) {
+    ReebGroup broken = group;
+    auto &c = *std::find_if(broken.chains.begin(), broken.chains.end(),
+                            [](const ReebChain &x) { return !x.route_arcs.empty(); });
+    if (k == 0)
+      c.nodes[0] = static_cast<int64_t>(broken.nodes.size());
+    else if (k == 1)
+      c.route_arcs[0] = static_cast<int64_t>(broken.arcs.size());
+    else
+      broken.arcs[0][1] = -1;
+    EXPECT_THROW(decode_reeb_group(encode_reeb_group(broken)), std::runtime_error) << k;
+  }
+}
+
 TEST(ReebPieces, APointWithTwoFansInAPieceIsCutApart) {
   // Two triangles touching at point 0 only (a bow tie): split there, two copies, two disks.
   MeshInput in;
