@@ -410,11 +410,10 @@ def contour_tree(mesh, simplify=None, threads=None, method="exact", refine=4, ke
                `write_vtp` draws them straight); the other ranks get None. Errors are raised on
                every rank; one that only one rank meets ends the job (MPI_Abort), as the others
                would wait for it. A domain with holes or handles gets its Reeb graph (each
-               rank's pieces cut into disks, glued on rank 0; by methods "linear" and
-               "refine", rank 0 computes it from the whole mesh). `mesh` may also be this
-               rank's Piece (read_pieces,
-               piece_from_arrays): then no rank holds the whole mesh; comm must be the
-               communicator the piece was made on.
+               rank's pieces cut into disks, glued back in the tree of ranks, by every method;
+               the linear method's Bezier or serendipity cells: rank 0, from the whole mesh).
+               `mesh` may also be this rank's Piece (read_pieces, piece_from_arrays): then no
+               rank holds the whole mesh; comm must be the communicator the piece was made on.
 
     The arguments follow the flags' rules: simplify a finite number >= 0 or "N%" with N such a
     number (nan, -1, "-5%" are refused), refine an integer 1..1024, threads 1..1024, the
