@@ -22,6 +22,8 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <numeric>
+#include <random>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -571,16 +573,30 @@ void mpi_section(const Settings &s) {
   const std::vector<int> counts = s.quick ? std::vector<int>{1, 2} : std::vector<int>{1, 2, 4, 8};
   ScratchDir scratch;
   const std::string vtu = scratch.file("random.vtu"), pvtu = scratch.file("random.pvtu"),
-                    plate = scratch.file("plate.vtu");
+                    plate = scratch.file("plate.vtu"), shuffled = scratch.file("shuffled.vtu");
   long long cells = 0, plate_cells = 0;
   {
     DatasetOptions o;
     o.cells = static_cast<long long>(size);
     o.degree = 3;
-    const MeshInput in = generate_dataset("random", o);
+    MeshInput in = generate_dataset("random", o);
     write_vtu(vtu, in);
     write_pieces(pvtu, in, 8);
     cells = static_cast<long long>(in.num_cells());
+    // The same mesh with its points numbered at random (each rank's cells then use points all
+    // over the file).
+    std::vector<int64_t> perm(in.num_points());
+    std::iota(perm.begin(), perm.end(), int64_t{0});
+    std::shuffle(perm.begin(), perm.end(), std::mt19937(3));
+    MeshInput mixed = in;
+    for (std::size_t i = 0; i < perm.size(); ++i) {
+      mixed.points[static_cast<std::size_t>(perm[i])] = in.points[i];
+      mixed.values[static_cast<std::size_t>(perm[i])] = in.values[i];
+    }
+    for (int64_t &q : mixed.cell_nodes)
+      q = perm[static_cast<std::size_t>(q)];
+    in = MeshInput{};
+    write_vtu(shuffled, mixed);
     o.cells = static_cast<long long>(size / 4); // a Reeb graph: the surface cut open, glued back
     const MeshInput holes = generate_dataset("plate", o);
     write_vtu(plate, holes);
@@ -597,28 +613,45 @@ void mpi_section(const Settings &s) {
   struct Input {
     std::string file, label, mesh;
     long long cells;
+    std::vector<std::string> flags;
   };
   const std::vector<Input> inputs = {
-      {vtu, "FILE.vtu (each rank reads its own part)", "random cubic cells", cells},
-      {pvtu, "FILE.pvtu, 8 pieces (each rank reads its own)", "random cubic cells", cells},
-      {plate, "the plate's Reeb graph, FILE.vtu (each rank reads its own part)",
-       "cubic cells of the plate with 100 holes", plate_cells}};
+      {vtu, "FILE.vtu (each rank reads its own part)", "random cubic cells", cells, {}},
+      {pvtu, "FILE.pvtu, 8 pieces (each rank reads its own)", "random cubic cells", cells, {}},
+      {shuffled,
+       "FILE.vtu with its points numbered at random (each rank reads its own cells and share of "
+       "the points)",
+       "random cubic cells",
+       cells,
+       {}},
+      {plate,
+       "the plate's Reeb graph, FILE.vtu (each rank reads its own part)",
+       "cubic cells of the plate with 100 holes",
+       plate_cells,
+       {}},
+      {plate,
+       "the plate's PL Reeb graph, `--linear`, FILE.vtu (each rank reads its own part)",
+       "cubic cells of the plate with 100 holes",
+       plate_cells,
+       {"--linear"}}};
   for (const Input &input : inputs) {
     const std::string plain_json = scratch.file("plain.json");
     std::vector<double> plain;
     std::map<int, std::vector<double>> whole, piece, kept, sent, received, peak;
     std::map<int, bool> same, by_pieces;
     for (int i = 0; i < runs; ++i) {
-      plain.push_back(run_process({hoct, "tree", input.file, "--json", plain_json, "--no-timings",
-                                   "--threads", "1", "-q"})
-                          .seconds);
+      std::vector<std::string> one{hoct,           "tree",      input.file, "--json", plain_json,
+                                   "--no-timings", "--threads", "1",        "-q"};
+      one.insert(one.end(), input.flags.begin(), input.flags.end());
+      plain.push_back(run_process(one).seconds);
       for (int n : counts) {
         const std::string json = scratch.file("mpi.json"), out = scratch.file("mpi.txt"),
                           err = scratch.file("mpi.err");
-        const ProcessPeak p =
-            run_process({"/usr/bin/mpirun", "--oversubscribe", "-np", std::to_string(n), hoct,
-                         "tree", input.file, "--json", json, "--no-timings", "--threads", "1"},
-                        out, err);
+        std::vector<std::string> command{
+            "/usr/bin/mpirun", "--oversubscribe", "-np", std::to_string(n), hoct,        "tree",
+            input.file,        "--json",          json,  "--no-timings",    "--threads", "1"};
+        command.insert(command.end(), input.flags.begin(), input.flags.end());
+        const ProcessPeak p = run_process(command, out, err);
         whole[n].push_back(p.seconds);
         same[n] = (i == 0 || same[n]) && slurp(json) == slurp(plain_json);
         const std::string text = slurp(out);
@@ -648,11 +681,15 @@ void mpi_section(const Settings &s) {
         peak[n].push_back(max_peak);
       }
     }
+    std::string flags;
+    for (const std::string &f : input.flags)
+      flags += " " + f;
     std::printf("## MPI, %s: `mpirun --oversubscribe -np N hoct tree FILE --json J --no-timings "
-                "--threads 1` (HOCT_MPI=1) on %lld %s, a fresh mpirun per run, rank counts "
-                "alternated with one plain process (`hoct tree FILE --threads 1`): medians of %d "
-                "runs; per rank, the largest over the ranks\n\n",
-                input.label.c_str(), input.cells, input.mesh.c_str(), runs);
+                "--threads 1%s` (HOCT_MPI=1) on %lld %s, a fresh mpirun per run, rank counts "
+                "alternated with one plain process (`hoct tree FILE --threads 1%s`): medians of "
+                "%d runs; per rank, the largest over the ranks\n\n",
+                input.label.c_str(), flags.c_str(), input.cells, input.mesh.c_str(), flags.c_str(),
+                runs);
     std::printf("plain process: %.3f s\n\n", median(plain));
     std::printf("| ranks | whole (s) | 1 rank / N ranks | plain / N ranks | piece (s) | kept nodes "
                 "| KiB sent | KiB rank 0 received | peak MiB | JSON as plain | checked and read by "
