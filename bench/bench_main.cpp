@@ -8,6 +8,7 @@
 #include "bench_support.hpp"
 
 #include "datasets/datasets.hpp"
+#include "datasets/shuffled_points.hpp"
 #include "exact/exact_contour_tree.hpp"
 #include "io/vtu_writer.hpp"
 #include "mesh/mesh.hpp"
@@ -22,8 +23,6 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
-#include <numeric>
-#include <random>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -585,16 +584,7 @@ void mpi_section(const Settings &s) {
     cells = static_cast<long long>(in.num_cells());
     // The same mesh with its points numbered at random (each rank's cells then use points all
     // over the file).
-    std::vector<int64_t> perm(in.num_points());
-    std::iota(perm.begin(), perm.end(), int64_t{0});
-    std::shuffle(perm.begin(), perm.end(), std::mt19937(3));
-    MeshInput mixed = in;
-    for (std::size_t i = 0; i < perm.size(); ++i) {
-      mixed.points[static_cast<std::size_t>(perm[i])] = in.points[i];
-      mixed.values[static_cast<std::size_t>(perm[i])] = in.values[i];
-    }
-    for (int64_t &q : mixed.cell_nodes)
-      q = perm[static_cast<std::size_t>(q)];
+    const MeshInput mixed = with_points_shuffled(in, 3);
     in = MeshInput{};
     write_vtu(shuffled, mixed);
     o.cells = static_cast<long long>(size / 4); // a Reeb graph: the surface cut open, glued back

@@ -4,6 +4,7 @@
 // points once. Files it cannot read by parts say why; a part that finds a broken cell or a NaN
 // in its own range throws.
 #include "datasets/datasets.hpp"
+#include "datasets/shuffled_points.hpp"
 #include "io/base64.hpp"
 #include "io/vtu_cell_range.hpp"
 #include "io/vtu_reader.hpp"
@@ -155,16 +156,7 @@ TEST(VtuCellRange, PointsNumberedAtRandomAreLeftToTheirCheckers) {
   int share_only = 0;
   expect_parts_are_the_whole(path, "numbered near", &share_only);
   EXPECT_EQ(share_only, 0);
-  std::vector<int64_t> perm(in.num_points());
-  std::iota(perm.begin(), perm.end(), int64_t{0});
-  std::shuffle(perm.begin(), perm.end(), std::mt19937(11));
-  MeshInput shuffled = in;
-  for (std::size_t i = 0; i < perm.size(); ++i) {
-    shuffled.points[static_cast<std::size_t>(perm[i])] = in.points[i];
-    shuffled.values[static_cast<std::size_t>(perm[i])] = in.values[i];
-  }
-  for (int64_t &q : shuffled.cell_nodes)
-    q = perm[static_cast<std::size_t>(q)];
+  const MeshInput shuffled = with_points_shuffled(in, 11);
   write_vtu(path, shuffled, VtkEncoding::AppendedRaw);
   expect_parts_are_the_whole(path, "numbered at random", &share_only);
   EXPECT_EQ(share_only, 4 + 5 + 6 + 7);
