@@ -506,16 +506,14 @@ DistributedOutcome distributed_tree_on(RankInput in, const MeshInput *whole, con
   }
 
   // 5. Rank 0: the whole tree, finished as compute_tree finishes it.
-  TreeResult tree = reeb ? reeb_graph_of_group(group, rq.augmented, linear ? 0.0 : field_scale[0])
-                    : linear || refined
-                        ? pl_tree_of_pieces(trees, rq.augmented, method_name(rq), pl_counts,
-                                            linear ? 0.0 : field_scale[0])
-                        : tree_of_pieces(trees, rq.augmented, field_scale[0]);
-  if (reeb && (linear || refined)) { // as pl_tree_of_pieces
-    tree.method = method_name(rq);
-    tree.stats.exact.reset();
-    tree.stats.pl = pl_counts;
-  }
+  const double reference = linear ? 0.0 : field_scale[0];
+  TreeResult tree =
+      reeb && (linear || refined)
+          ? pl_reeb_graph_of_group(group, rq.augmented, method_name(rq), pl_counts, reference)
+      : reeb ? reeb_graph_of_group(group, rq.augmented, reference)
+      : linear || refined
+          ? pl_tree_of_pieces(trees, rq.augmented, method_name(rq), pl_counts, reference)
+          : tree_of_pieces(trees, rq.augmented, reference);
   const int64_t ties = tree.stats.seam_paths_nonmonotone.value_or(0);
   if (joined_whole) {
     int need = ties > 0 ? 1 : 0;

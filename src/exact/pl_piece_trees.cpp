@@ -191,10 +191,14 @@ PlCounts whole_pl_counts(int64_t triangles, int64_t own_points, int64_t cell_poi
 TreeResult pl_tree_of_pieces(const PieceTrees &all, bool augmented, const std::string &method,
                              const PlCounts &counts, double reference) {
   TreeResult r = tree_of_pieces(all, augmented, reference);
+  mark_pl_result(r, method, counts);
+  return r;
+}
+
+void mark_pl_result(TreeResult &r, const std::string &method, const PlCounts &counts) {
   r.method = method;
   r.stats.exact.reset();
   r.stats.pl = counts;
-  return r;
 }
 
 } // namespace hoct

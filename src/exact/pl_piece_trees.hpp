@@ -86,4 +86,7 @@ PlCounts whole_pl_counts(int64_t triangles, int64_t own_points, int64_t cell_poi
 TreeResult pl_tree_of_pieces(const PieceTrees &all, bool augmented, const std::string &method,
                              const PlCounts &counts, double reference);
 
+// A tree or graph of pieces made the PL method's result: its name and the PL mesh's counts.
+void mark_pl_result(TreeResult &r, const std::string &method, const PlCounts &counts);
+
 } // namespace hoct

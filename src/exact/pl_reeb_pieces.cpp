@@ -123,4 +123,11 @@ ReebGroup pl_reeb_group(const PlPieceMesh &m, const PiecePlace &place, bool augm
   return reeb_group(trees, std::move(chains), augmented);
 }
 
+TreeResult pl_reeb_graph_of_group(const ReebGroup &all, bool augmented, const std::string &method,
+                                  const PlCounts &counts, double reference) {
+  TreeResult r = reeb_graph_of_group(all, augmented, reference);
+  mark_pl_result(r, method, counts);
+  return r;
+}
+
 } // namespace hoct

@@ -16,4 +16,9 @@ namespace hoct {
 ReebGroup pl_reeb_group(const PlPieceMesh &mesh, const PiecePlace &place, bool augmented,
                         int threads = 1);
 
+// The PL Reeb graph of the whole from the group of all its pieces (`method`: "linear" or
+// "refine k=K"), with the whole's PL mesh's counts; `reference` is added back to the values.
+TreeResult pl_reeb_graph_of_group(const ReebGroup &all, bool augmented, const std::string &method,
+                                  const PlCounts &counts, double reference);
+
 } // namespace hoct

@@ -49,7 +49,9 @@ TreeResult pl_reeb_by_pieces(const MeshInput &whole, int pieces, int k, bool aug
   for (int step = 1; step < pieces; step *= 2)
     for (int r = 0; r + step < pieces; r += 2 * step)
       groups[r] = sent(merge_reeb_groups(groups[r], groups[r + step], augmented));
-  TreeResult graph = reeb_graph_of_group(groups[0], augmented, k == 0 ? 0.0 : reference);
+  TreeResult graph = pl_reeb_graph_of_group(groups[0], augmented,
+                                            k == 0 ? "linear" : "refine k=" + std::to_string(k),
+                                            PlCounts{}, k == 0 ? 0.0 : reference);
   // Flat regions contracted as rank 0 finishes the tree (pipeline/finish_tree).
   return augmented ? graph : contract_flat(std::move(graph));
 }
@@ -73,6 +75,7 @@ void check(const MeshInput &whole, const std::string &name, int64_t loops) {
                                  " pieces";
         const TreeResult got = pl_reeb_by_pieces(whole, pieces, k, augmented);
         testing::expect_same_graph(got, expected, what);
+        EXPECT_EQ(got.method, expected.method) << what;
         EXPECT_EQ(got.loops, expected.loops) << what;
       }
     }
