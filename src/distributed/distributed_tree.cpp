@@ -1,8 +1,10 @@
 #include "distributed/distributed_tree.hpp"
 
+#include "distributed/distributed_arc_paths.hpp"
 #include "distributed/distributed_checks.hpp"
 #include "distributed/mpi_exchange.hpp"
 
+#include "exact/piece_arcs.hpp"
 #include "exact/piece_codec.hpp"
 #include "exact/piece_trees.hpp"
 #include "exact/pl_piece_trees.hpp"
@@ -226,6 +228,38 @@ DistributedOutcome distributed_tree(RankInput in, const TreeRequest &rq, MPI_Com
 
 namespace {
 
+// Rank 0's part of distributed_arc_paths: the arcs of the trees compute_tree draws for `rq` (the
+// reported one; with AllPaths the whole tree's too), named by the group of all pieces' nodes.
+void draw_arcs(MPI_Comm comm, const PieceArcGraph &piece, const PieceTrees &all,
+               const TreeRequest &rq, int threads, DistributedOutcome &d) {
+  std::vector<TreeResult *> drawn;
+  TreeOutcome &o = d.outcome;
+  if (rq.arcs == ArcGeometry::AllPaths || !o.simplified)
+    drawn.push_back(&o.tree);
+  if (o.simplified)
+    drawn.push_back(&*o.simplified);
+  std::vector<ArcEnds> arcs;
+  for (const TreeResult *t : drawn)
+    for (const auto &[lo, hi] : t->arcs) {
+      const PieceNode &x = all.nodes[t->nodes[lo].graph_node],
+                      &y = all.nodes[t->nodes[hi].graph_node];
+      arcs.push_back({x.key, y.key, x.value, y.value});
+    }
+  std::vector<std::vector<Vec3>> paths =
+      distributed_arc_paths(comm, piece, std::move(arcs), threads, &d.arc_paths);
+  std::size_t at = 0;
+  for (TreeResult *t : drawn) {
+    t->arc_paths.resize(t->arcs.size());
+    for (std::size_t i = 0; i < t->arcs.size(); ++i, ++at) {
+      const auto &[lo, hi] = t->arcs[i];
+      t->arc_paths[i] = paths[at].empty()
+                            ? std::vector<Vec3>{t->nodes[lo].position, t->nodes[hi].position}
+                            : std::move(paths[at]);
+    }
+    t->stats.time.arc_paths = d.arc_paths.seconds;
+  }
+}
+
 DistributedOutcome distributed_tree_on(RankInput in, const MeshInput *whole, const TreeRequest &rq,
                                        MPI_Comm comm) {
   DistributedOutcome d;
@@ -372,10 +406,10 @@ DistributedOutcome distributed_tree_on(RankInput in, const MeshInput *whole, con
   double field_scale[2] = {mesh.field.reference(), mesh.field.precision()};
   MPI_Bcast(field_scale, 2, MPI_DOUBLE, source, comm);
   // What the pieces do not compute, rank 0 computes from the whole mesh: the arcs' paths on the
-  // surface (they search the whole graph), and of the PL methods' pieces (pl_piece_trees) their
-  // Reeb graph, the linear method's Bezier or serendipity cells (whose PL mesh has points of its
-  // own) and the refine method's mesh the pieces did not check (its PL vertices are counted with
-  // the whole's Euler characteristic from their check).
+  // surface of a Reeb graph and of the PL methods (the pieces draw the exact contour tree's),
+  // the linear method's Bezier or serendipity cells (whose PL mesh has points of its own) and
+  // the refine method's mesh the pieces did not check (its PL vertices are counted with the
+  // whole's Euler characteristic from their check).
   // Rank 0's tree of the whole mesh, as one process computes it (the mesh checked already, or
   // forced past).
   auto tree_of_whole = [&](const MeshInput &all) {
@@ -385,8 +419,13 @@ DistributedOutcome distributed_tree_on(RankInput in, const MeshInput *whole, con
     return compute_tree(build_mesh(all, bo), rq, &all);
   };
   std::string whole_reason;
-  if (rq.arcs != ArcGeometry::None) {
-    whole_reason = "the arcs' paths on the surface search the whole graph";
+  // The exact contour tree's arcs are drawn by the pieces (distributed_arc_paths); an augmented
+  // tree's are straight, as one process draws them.
+  const bool arcs_drawn = rq.arcs != ArcGeometry::None && !rq.augmented;
+  const bool pieces_draw = arcs_drawn && !reeb && !linear && !refined;
+  if (arcs_drawn && !pieces_draw) {
+    whole_reason = std::string("the arcs' paths of ") + (reeb ? "a Reeb graph" : "the PL methods") +
+                   " search the whole graph";
   } else if (linear || refined) {
     int other_cells = linear && !empty_piece && !nodal_lagrange_cells(piece.input) ? 1 : 0;
     MPI_Allreduce(MPI_IN_PLACE, &other_cells, 1, MPI_INT, MPI_MAX, comm);
@@ -414,7 +453,8 @@ DistributedOutcome distributed_tree_on(RankInput in, const MeshInput *whole, con
   // 3. The piece's kept trees, 4. merged in a binary tree of ranks (a Reeb graph's pieces as
   // groups, glued at every merge).
   PieceTrees trees;
-  ReebGroup group; // a Reeb graph's pieces, glued at every merge (exact/reeb_group)
+  PieceArcGraph arc_graph; // the piece's graph, to draw the arcs (pieces_draw)
+  ReebGroup group;         // a Reeb graph's pieces, glued at every merge (exact/reeb_group)
   TreeTimings time;
   PlPieceTrees pl; // the PL methods' counts: this piece's, then the whole's on rank 0
   try {
@@ -439,7 +479,7 @@ DistributedOutcome distributed_tree_on(RankInput in, const MeshInput *whole, con
     } else if (reeb) {
       trees = reeb_piece(mesh, place, eo, time);
     } else {
-      trees = piece_trees(mesh, place, eo, time);
+      trees = piece_trees(mesh, place, eo, time, pieces_draw ? &arc_graph : nullptr);
     }
     if (reeb && (empty_piece || !(linear || refined)))
       group = reeb_group(trees, rq.augmented);
@@ -502,6 +542,8 @@ DistributedOutcome distributed_tree_on(RankInput in, const MeshInput *whole, con
       MPI_Bcast(&need, 1, MPI_INT, 0, comm);
     if (need)
       in.read_whole();
+    if (pieces_draw)
+      distributed_arc_paths(comm, arc_graph, {}, threads);
     return d;
   }
 
@@ -551,6 +593,8 @@ DistributedOutcome distributed_tree_on(RankInput in, const MeshInput *whole, con
   TreeRequest finish = rq;
   if (!finish.build_seconds)
     finish.build_seconds = build_seconds;
+  if (pieces_draw)
+    finish.arcs = ArcGeometry::None; // drawn below, by the pieces
   d.outcome = finish_tree(std::move(tree), finish, context);
   if (ranks > 1 && whole) {
     InputFingerprint f;
@@ -562,6 +606,8 @@ DistributedOutcome distributed_tree_on(RankInput in, const MeshInput *whole, con
     if (d.outcome.simplified)
       d.outcome.simplified->input = f;
   }
+  if (pieces_draw)
+    draw_arcs(comm, arc_graph, trees, rq, threads, d);
   return d;
 }
 

@@ -10,6 +10,7 @@
 // are thrown on all.
 #pragma once
 
+#include "distributed/distributed_arc_paths.hpp"
 #include "mesh/mesh_input.hpp"
 #include "mesh/mesh_partition.hpp"
 #include "pipeline/tree_request.hpp"
@@ -44,8 +45,10 @@ struct DistributedOutcome {
   std::string whole_check;
   // On rank 0: empty when the pieces computed the tree; else why rank 0 computed it from the
   // whole mesh alone (a Reeb graph whose seams between pieces the gluing could not follow; the
-  // arcs' paths on the surface; what the PL methods' pieces do not compute).
+  // arcs' paths of a Reeb graph or a PL method; what the PL methods' pieces do not compute).
   std::string whole_tree;
+  // On rank 0: how the pieces drew the arcs on the surface (when asked to and they did).
+  ArcPathCounts arc_paths;
 };
 
 // One rank's share of a mesh no rank holds whole (a partitioned file each rank reads its pieces

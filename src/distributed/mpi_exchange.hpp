@@ -1,5 +1,6 @@
-// Records sent between all ranks in one step (MPI_Alltoallv of trivially copyable records), and
-// every rank's bytes gathered on rank 0 (MPI_Gatherv).
+// Records sent between all ranks in one step (MPI_Alltoallv of trivially copyable records),
+// every rank's bytes gathered on rank 0 (MPI_Gatherv) and rank 0's parts scattered to the ranks
+// (MPI_Scatterv).
 #pragma once
 
 #include "util/error.hpp"
@@ -74,6 +75,35 @@ inline std::vector<std::vector<std::byte>> gather_bytes(MPI_Comm comm,
     for (int r = 0; r < ranks; ++r)
       out.emplace_back(all.begin() + offsets[r], all.begin() + offsets[r] + sizes[r]);
   return out;
+}
+
+// Collective: rank 0's parts[r] on rank r (parts is read on rank 0 only, one per rank). Throws
+// hoct::Error on rank 0 where they take 2 GiB or more.
+inline std::vector<std::byte> scatter_bytes(MPI_Comm comm,
+                                            const std::vector<std::vector<std::byte>> &parts) {
+  int rank = 0, ranks = 1;
+  MPI_Comm_rank(comm, &rank);
+  MPI_Comm_size(comm, &ranks);
+  std::vector<int> sizes(static_cast<std::size_t>(ranks)), offsets(static_cast<std::size_t>(ranks));
+  std::vector<std::byte> all;
+  if (rank == 0) {
+    int64_t total = 0;
+    for (int r = 0; r < ranks; ++r) {
+      sizes[r] = static_cast<int>(parts[r].size());
+      offsets[r] = static_cast<int>(std::min<int64_t>(total, INT_MAX));
+      total += static_cast<int64_t>(parts[r].size());
+    }
+    if (total > INT_MAX)
+      throw Error("rank 0's messages to the ranks take 2 GiB or more: use fewer ranks per step");
+    for (const auto &p : parts)
+      all.insert(all.end(), p.begin(), p.end());
+  }
+  int n = 0;
+  MPI_Scatter(sizes.data(), 1, MPI_INT, &n, 1, MPI_INT, 0, comm);
+  std::vector<std::byte> own(static_cast<std::size_t>(n));
+  MPI_Scatterv(all.data(), sizes.data(), offsets.data(), MPI_BYTE, own.data(), n, MPI_BYTE, 0,
+               comm);
+  return own;
 }
 
 // Collective: every rank's bytes on every rank, in rank order. Throws hoct::Error on every rank

@@ -1,8 +1,10 @@
 #include "exact/piece_trees.hpp"
 
 #include "cell/strict_extrema.hpp"
+#include "exact/exact_arc_graph.hpp"
 #include "exact/exact_graph_build.hpp"
 #include "exact/graph_sweeps.hpp"
+#include "exact/piece_arcs.hpp"
 #include "exact/piece_keys.hpp"
 #include "tree/node_order.hpp"
 #include "tree/stand_in_contraction.hpp"
@@ -24,12 +26,12 @@ bool before(const PieceNode &x, const PieceNode &y) {
 } // namespace
 
 PieceTrees piece_trees(const Mesh &mesh, const PiecePlace &place, const ExactTreeOptions &options,
-                       TreeTimings &time) {
+                       TreeTimings &time, PieceArcGraph *arcs) {
   ExactTreeOptions eo = options;
-  eo.arc_geometry = false;
+  eo.arc_geometry = arcs != nullptr;
   eo.cut = nullptr;
-  const ExactGraphBuild b = build_exact_graph(mesh, eo, time);
-  const ExactGraph &g = b.graph;
+  ExactGraphBuild b = build_exact_graph(mesh, eo, time);
+  ExactGraph &g = b.graph;
   const PieceKeys keys(mesh, place, b, lattice_steps(mesh, eo));
   const int64_t n = g.size();
   const int threads = threads_for(n, thread_count(eo.threads), 8 * eo.cells_per_thread);
@@ -60,7 +62,25 @@ PieceTrees piece_trees(const Mesh &mesh, const PiecePlace &place, const ExactTre
   // The listed chains' pieces close common_edges (add_edge_chains): those of shared edges out.
   const auto &lattice = b.degenerate.lattice_on_edge;
   std::vector<GraphEdge> common;
-  {
+  if (eo.arc_geometry) {
+    // The graph lists every chain's pieces (common_edges[chain_first ..], edge by edge): those
+    // of the edges the piece holds alone.
+    common.assign(g.common_edges.begin(),
+                  g.common_edges.begin() + static_cast<std::ptrdiff_t>(g.chain_first));
+    std::size_t at = g.chain_first, l = 0;
+    for (int64_t e = 0; e < topo.num_edges(); ++e) {
+      std::size_t n = static_cast<std::size_t>(1 + en.count(e));
+      for (; l < lattice.size() && std::get<0>(lattice[l]) <= e; ++l)
+        n += std::get<0>(lattice[l]) == e;
+      if (!shared_edge[e])
+        common.insert(common.end(), g.common_edges.begin() + static_cast<std::ptrdiff_t>(at),
+                      g.common_edges.begin() + static_cast<std::ptrdiff_t>(at + n));
+      at += n;
+    }
+    if (at != g.common_edges.size())
+      throw std::logic_error("piece_trees: edge chain pieces miscounted");
+    skip.clear();
+  } else {
     std::size_t listed_pieces = lattice.size();
     for (const int64_t e : listed)
       listed_pieces += static_cast<std::size_t>(1 + en.count(e));
@@ -125,6 +145,26 @@ PieceTrees piece_trees(const Mesh &mesh, const PiecePlace &place, const ExactTre
   });
   out.counts = exact_counts(mesh, b);
   split_cell_time(b.totals, time);
+  if (arcs) {
+    PieceArcGraph &a = *arcs;
+    a.ids = kt.nodes;
+    a.keys.resize(out.nodes.size());
+    a.values.resize(out.nodes.size());
+    a.shared.resize(out.nodes.size());
+    for (std::size_t i = 0; i < out.nodes.size(); ++i) {
+      a.keys[i] = out.nodes[i].key;
+      a.values[i] = out.nodes[i].value;
+      a.shared[i] = !within(keys.span(kt.nodes[i]), place.piece, place.piece);
+    }
+    a.join_parent = kt.join_parent;
+    a.split_parent = kt.split_parent;
+    a.chain_links.clear();
+    for (const SharedChain &c : out.chains)
+      for (std::size_t k = 0; k + 1 < c.nodes.size(); ++k)
+        a.chain_links.push_back({c.nodes[k].node, c.nodes[k + 1].node});
+    a.index_keys();
+    a.graph = exact_arc_graph(mesh, en, g, eo, threads);
+  }
   return out;
 }
 

@@ -87,10 +87,13 @@ struct PiecePlace {
   std::span<const std::array<int32_t, 2>> point_span; // per point of the piece
 };
 
+struct PieceArcGraph; // exact/piece_arcs
+
 // One piece's kept trees (its mesh built with the whole's scales: MeshBuildOptions::whole_scales;
-// options.augmented keeps every node). Fills the exact pipeline's phase times into `time`.
+// options.augmented keeps every node). Fills the exact pipeline's phase times into `time`. With
+// `arcs`, also the piece's graph with geometry there, to draw the whole tree's arcs.
 PieceTrees piece_trees(const Mesh &piece, const PiecePlace &place, const ExactTreeOptions &options,
-                       TreeTimings &time);
+                       TreeTimings &time, PieceArcGraph *arcs = nullptr);
 
 // The counts of two groups of pieces together, before the nodes both hold are counted once.
 ExactCounts sum_counts(const ExactCounts &x, const ExactCounts &y);

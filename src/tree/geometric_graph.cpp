@@ -164,6 +164,49 @@ int64_t GeometricGraph::append_edge(int64_t e, int64_t u, std::vector<Vec3> &out
   return next;
 }
 
+bool GeometricGraph::band_components(std::span<const int64_t> sources, double lo, double hi,
+                                     int64_t max_visits, Search &s,
+                                     std::vector<int64_t> &label) const {
+  // One breadth-first search per source not reached yet; a node's stamp is the generation of
+  // this call, `from` the source whose search reached it.
+  if (s.stamp.size() != value_.size() || s.generation >= UINT32_MAX - 2) {
+    s.stamp.assign(value_.size(), 0);
+    s.from.assign(value_.size(), -1);
+    s.generation = 0;
+  }
+  s.generation += 2;
+  const uint32_t seen = s.generation;
+  label.assign(sources.size(), -1);
+  int64_t visits = 0;
+  std::vector<int64_t> &queue = s.queue;
+  for (std::size_t i = 0; i < sources.size(); ++i) {
+    const int64_t v0 = sources[i];
+    if (s.stamp[v0] == seen) {
+      label[i] = s.from[v0];
+      continue;
+    }
+    label[i] = static_cast<int64_t>(i);
+    s.stamp[v0] = seen;
+    s.from[v0] = static_cast<int64_t>(i);
+    queue.assign(1, v0);
+    for (std::size_t h = 0; h < queue.size(); ++h) {
+      if (++visits > max_visits)
+        return false;
+      const int64_t v = queue[h];
+      for (int64_t k = offset_[v]; k < offset_[v + 1]; ++k) {
+        const int64_t w = adj_[k];
+        if (s.stamp[w] == seen || value_[w] < lo || value_[w] > hi ||
+            (!s.avoid.empty() && s.avoid[w]))
+          continue;
+        s.stamp[w] = seen;
+        s.from[w] = static_cast<int64_t>(i);
+        queue.push_back(w);
+      }
+    }
+  }
+  return true;
+}
+
 std::vector<Vec3> GeometricGraph::search(int64_t a, int64_t b, double lo, double hi,
                                          int64_t max_visits, Search &s) const {
   // Breadth-first from both ends at once, each step on the side with fewer nodes waiting, until

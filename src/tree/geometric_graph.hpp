@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <memory>
 #include <mutex>
+#include <span>
 #include <vector>
 
 namespace hoct {
@@ -92,6 +93,25 @@ public:
   // The searches within the values and below them alone (no forest, no path beyond):
   // scratch.nodes is empty where they fail.
   std::vector<Vec3> near_path(int64_t a, int64_t b, Search &scratch, int64_t below_visits) const;
+
+  // The search within explicit values [lo, hi] (a piece of a partitioned mesh draws its stretch
+  // of an arc whose band the whole tree gives): scratch.nodes is empty where it fails.
+  std::vector<Vec3> band_path(int64_t a, int64_t b, double lo, double hi, int64_t max_visits,
+                              Search &scratch) const {
+    return search(a, b, lo, hi, max_visits, scratch);
+  }
+  // The components of the nodes with values within [lo, hi] that hold `sources` (nodes within
+  // the values): label[i] is the index of the first source in source i's component. False, and
+  // `label` unspecified, when the searches would visit more than max_visits nodes.
+  bool band_components(std::span<const int64_t> sources, double lo, double hi, int64_t max_visits,
+                       Search &scratch, std::vector<int64_t> &label) const;
+  // The forests' path (the sublevel one if it stays at or below hi, else the superlevel one if
+  // it stays at or above lo; the shorter if both do): scratch.nodes is empty where neither does.
+  std::vector<Vec3> minimax_path(int64_t a, int64_t b, double lo, double hi,
+                                 Search &scratch) const {
+    return forest_path(a, b, lo, hi, scratch);
+  }
+  double value(int64_t v) const { return value_[v]; }
 
 private:
   std::vector<Vec3> search(int64_t a, int64_t b, double lo, double hi, int64_t max_visits,

@@ -10,9 +10,9 @@ generated genus-0 dataset, with plateaus and fallback cells, quadrilaterals, a f
 --augmented and --simplify, the JSON (--no-timings) must be byte-identical to it for 1, 2, 3, 4
 and 7 ranks (--oversubscribe: this machine has 2 cores); the same for the linear and the refine
 method (PL trees, by pieces too; the plate's PL Reeb graphs by pieces as well, on 2-7 ranks),
-whose serendipity cells (linear) rank 0 computes from the whole mesh, saying so; so it does for
---vtp (the arcs' paths search the
-whole graph), the VTP and the JSON one process's. Also checked:
+whose serendipity cells (linear) rank 0 computes from the whole mesh, saying so. With --vtp
+the pieces draw the arcs over the surface (exact/piece_arcs): the JSON is one process's and
+every arc a polyline without a jump. Also checked:
 a broken file is reported as without MPI, and rank 0 alone writes the outputs.
 Bad meshes: inverted cells that a piece finds are named by the whole's cell numbers, as without
 MPI, and --force past them gives the same JSON; a crack between pieces and a slit from the border
@@ -90,19 +90,40 @@ with tempdir() as d:
         r.check(len(rows) == n and cells == 12324,
                 f"{n} ranks: per-rank report ({len(rows)} rows, {cells} cells):\n{p.stdout}")
 
-    # Not distributed yet: refused with one message, non-zero exit, nothing written.
-    # --vtp: the arcs' paths search the whole graph: rank 0 computes the tree from the whole mesh,
-    # says so, and writes one process's VTP and JSON.
+    # --vtp: the pieces draw the arcs (exact/piece_arcs): the JSON is one process's, no rank
+    # holds the whole mesh, and each arc is a polyline over the surface with as many lines as
+    # one process draws, none of whose steps is longer than one process's longest (a route
+    # joined wrongly across pieces would jump).
+    import vtk
+
+    def polylines(file):
+        reader = vtk.vtkXMLPolyDataReader()
+        reader.SetFileName(file)
+        reader.Update()
+        poly = reader.GetOutput()
+        lines, ids, out = poly.GetLines(), vtk.vtkIdList(), []
+        lines.InitTraversal()
+        while lines.GetNextCell(ids):
+            out.append([poly.GetPoint(ids.GetId(k)) for k in range(ids.GetNumberOfIds())])
+        return out
+
+    def longest_step(lines):
+        return max(sum((a - b) ** 2 for a, b in zip(p, q)) ** 0.5
+                   for line in lines for p, q in zip(line, line[1:]))
+
     run("tree", path, "--vtp", os.path.join(d, "plain.vtp"), "--json", os.path.join(d, "plain.json"),
         "--no-timings", "-q")
-    for n in (2, 3):
+    plain = polylines(os.path.join(d, "plain.vtp"))
+    for n in (2, 3, 7):
         got_vtp, got_json = os.path.join(d, f"x{n}.vtp"), os.path.join(d, f"x{n}.json")
         p = mpi(n, "tree", path, "--vtp", got_vtp, "--json", got_json, "--no-timings")
-        r.check(p.returncode == 0 and os.path.exists(got_vtp)
-                and read(got_vtp) == read(os.path.join(d, "plain.vtp"))
-                and read(got_json) == read(os.path.join(d, "plain.json"))
-                and "tree: the whole mesh on rank 0 (the arcs' paths" in p.stdout,
-                f"--vtp, {n} ranks: one process's VTP and JSON, from the whole on rank 0 "
+        lines = polylines(got_vtp) if os.path.exists(got_vtp) else []
+        r.check(p.returncode == 0 and read(got_json) == read(os.path.join(d, "plain.json"))
+                and "tree: the whole mesh" not in p.stdout
+                and "arcs' paths: by the ranks" in p.stdout and " 0 straight" in p.stdout
+                and len(lines) == len(plain) and sum(len(l) > 2 for l in lines) > len(lines) // 2
+                and longest_step(lines) <= 1.5 * longest_step(plain),
+                f"--vtp, {n} ranks: the arcs drawn by the pieces, one process's JSON "
                 f"({p.returncode}):\n{p.stdout[-800:]}{p.stderr[-800:]}")
     # --refine past the memory budget: refused on every rank before refining, once, no output.
     big = os.path.join(d, "big_refine.json")
@@ -165,8 +186,8 @@ with tempdir() as d:
                     f"({p.returncode}):\n{p.stdout[-1500:]}{p.stderr[-800:]}")
 
     # Rank 0 alone reads a file the other ranks cannot open: with every other rank given a path
-    # that does not exist (mpirun's MPMD form), the run still gives one process's JSON (the same
-    # run with --vtp, which needs the whole again, on rank 0).
+    # that does not exist (mpirun's MPMD form), the run still gives one process's JSON (with
+    # --vtp too).
     gone = os.path.join(d, "not-there.vtu")
     want = os.path.join(d, "alone_want.json")
     run("tree", path, "--json", want, "--no-timings", "-q")

@@ -294,8 +294,8 @@ int vtkHoctContourTree::RequestDistributed(vtkInformationVector **inputVector,
     }
     const int threads = hoct::thread_count(this->Threads);
     // The properties as a request, as `mpirun hoct tree` makes it; the arcs drawn straight
-    // unless asked for (their paths search the whole graph: distributed_tree computes the whole
-    // on rank 0 then).
+    // unless asked for (the pieces draw a contour tree's: distributed_arc_paths; a Reeb graph's
+    // and the PL methods' need the whole on rank 0).
     hoct::TreeRequest rq = this->MakeRequest();
     rq.arcs = this->ArcPathsOverProcesses ? hoct::ArcGeometry::AllPaths : hoct::ArcGeometry::None;
     // Each process keeps its own piece, joined with the others' as `mpirun hoct tree` joins a
@@ -348,6 +348,9 @@ int vtkHoctContourTree::RequestDistributed(vtkInformationVector **inputVector,
       distribution += "; checks: the whole mesh on process 0 (" + d.whole_check + ")";
     if (!d.whole_tree.empty())
       distribution += "; tree: the whole mesh on process 0 (" + d.whole_tree + ")";
+    if (d.arc_paths.arcs > 0)
+      distribution += "; arcs: drawn by the processes' pieces (" +
+                      std::to_string(d.arc_paths.straight) + " straight)";
     add_string(points, "Distribution", distribution);
     add_string(arcs, "Distribution", distribution);
     if (simplified_output)

@@ -57,9 +57,9 @@ public:
   vtkGetMacro(Force, bool);
   vtkBooleanMacro(Force, bool);
 
-  // On several processes with cells: draw the arcs on the surface, as on one process. Process
-  // 0 then joins the whole mesh from the pieces and computes the tree from it (as `mpirun hoct
-  // tree --vtp` does). Off (the default): the arcs are straight, and no process holds the whole.
+  // On several processes with cells: draw the arcs on the surface, as on one process (as
+  // `mpirun hoct tree --vtp` does): the pieces draw a contour tree's arcs together; for a Reeb
+  // graph's or a PL method's, process 0 joins the whole mesh. Off (the default): straight arcs.
   vtkSetMacro(ArcPathsOverProcesses, bool);
   vtkGetMacro(ArcPathsOverProcesses, bool);
   vtkBooleanMacro(ArcPathsOverProcesses, bool);

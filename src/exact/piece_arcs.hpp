@@ -1,0 +1,111 @@
+// The arcs of a partitioned mesh's tree drawn on the surface by its pieces (docs/ALGORITHM.md
+// §8, "The arcs' paths by pieces"): no piece holds the whole graph, so an arc whose path leaves
+// the piece of its ends is drawn in stretches, one per piece it crosses, between nodes two
+// pieces share (portals).
+//
+// Each arc is drawn, as one process draws it, through graph nodes within its values if any
+// path there joins its ends; else below its upper end's value (the join tree joins its ends
+// there); else above its lower end's. In each round:
+//  1. a piece that holds both ends searches there (draw_local_arcs; below, a short search, as
+//     one process's first pass does);
+//  2. for each arc no piece drew, each piece lists the components of its graph within the
+//     round's values that hold two or more of its portals and ends (piece_components: by a
+//     search within the arc's values; below or above them by its kept join or split tree and
+//     its shared edges' chains, which together connect its kept nodes as its graph does);
+//  3. the components of all pieces, joined at their shared keys, give a route from end to end
+//     (route_arcs: the shortest in pieces), a stretch per piece;
+//  4. each piece draws its stretches within the round's values (draw_stretches), and the
+//     stretches are joined end to end (join_stretches).
+// An arc no round routes is drawn straight and counted.
+#pragma once
+
+#include "exact/piece_trees.hpp"
+#include "tree/geometric_graph.hpp"
+#include "util/vec.hpp"
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <vector>
+
+namespace hoct {
+
+// A piece's graph with geometry, and how its kept nodes (exact/piece_trees) are found in it.
+struct PieceArcGraph {
+  std::shared_ptr<const GeometricGraph> graph;
+  // The kept nodes ascending (value, key): graph node, key, value (relative, as the pieces'
+  // trees hold them), whether other pieces may hold it, and the kept join and split trees.
+  std::vector<int64_t> ids;
+  std::vector<NodeKey> keys;
+  std::vector<double> values;
+  std::vector<uint8_t> shared;
+  std::vector<int64_t> join_parent, split_parent;
+  // Consecutive nodes along the edges other pieces hold (indices into ids): the kept trees do
+  // not have them (the group with all the edge's cells joins them).
+  std::vector<std::array<int64_t, 2>> chain_links;
+
+  // The kept node with this key (index into ids), or -1.
+  int64_t find(const NodeKey &key) const;
+  // Sorted copy of keys with their indices (built by index_keys).
+  std::vector<std::pair<NodeKey, int64_t>> by_key;
+  void index_keys();
+};
+
+// An arc of the whole tree: its lower and upper end and their values (relative).
+struct ArcEnds {
+  NodeKey lo_key, hi_key;
+  double lo = 0, hi = 0;
+};
+
+// The rounds after the local one, in order.
+enum class ArcRound : int32_t { Band = 0, Below = 1, Above = 2 };
+constexpr int kArcRounds = 3;
+
+// The values a round's paths stay within.
+std::array<double, 2> round_values(const ArcEnds &arc, ArcRound round);
+
+// 1. Of arcs `which`, those whose ends this piece both holds and joins by a search within the
+// round's values visiting at most max_visits nodes: paths[k] (for which[k]) non-empty where
+// drawn.
+std::vector<std::vector<Vec3>> draw_local_arcs(const PieceArcGraph &piece,
+                                               std::span<const ArcEnds> arcs,
+                                               std::span<const int64_t> which, ArcRound round,
+                                               int64_t max_visits, int threads);
+
+// 2. The piece's components for arcs `which` in `round`, as bytes for route_arcs. A search
+// within an arc's values visits at most max_visits nodes (past that, the piece lists none for
+// that arc).
+std::vector<std::byte> piece_components(const PieceArcGraph &piece, std::span<const ArcEnds> arcs,
+                                        std::span<const int64_t> which, ArcRound round,
+                                        int64_t max_visits = GeometricGraph::kMaxVisits);
+
+// A piece's stretch of an arc: its place in the arc's route, and the keys it runs between.
+struct Stretch {
+  int64_t arc = 0;
+  int32_t step = 0, steps = 0;
+  NodeKey from, to;
+};
+
+// 3. From every piece's components (by piece), the stretches each piece draws (by piece);
+// routed[k] set for the arcs which[k] that have a route.
+std::vector<std::vector<Stretch>> route_arcs(std::span<const std::vector<std::byte>> components,
+                                             std::span<const int64_t> which,
+                                             std::span<const ArcEnds> arcs,
+                                             std::vector<uint8_t> &routed);
+
+// 4. The piece's stretches drawn within the round's values, as bytes for join_stretches.
+std::vector<std::byte> draw_stretches(const PieceArcGraph &piece, std::span<const ArcEnds> arcs,
+                                      std::span<const Stretch> stretches, ArcRound round);
+
+// The stretches of all pieces (their draw_stretches bytes) joined into paths[arc] (the arcs
+// routed this round; each path was empty).
+void join_stretches(std::span<const std::vector<std::byte>> drawn,
+                    std::vector<std::vector<Vec3>> &paths);
+
+// Stretches as bytes, and back (a piece's share of route_arcs' answer).
+std::vector<std::byte> encode_stretches(std::span<const Stretch> stretches);
+std::vector<Stretch> decode_stretches(std::span<const std::byte> bytes);
+
+} // namespace hoct
