@@ -51,6 +51,41 @@ def read(path):
         return f.read()
 
 
+def polylines(path):
+    """The lines of a VTP file (hoct tree --vtp: one per arc), each a list of points."""
+    import vtk
+
+    reader = vtk.vtkXMLPolyDataReader()
+    reader.SetFileName(path)
+    reader.Update()
+    poly = reader.GetOutput()
+    lines, ids, out = poly.GetLines(), vtk.vtkIdList(), []
+    lines.InitTraversal()
+    while lines.GetNextCell(ids):
+        out.append([poly.GetPoint(ids.GetId(k)) for k in range(ids.GetNumberOfIds())])
+    return out
+
+
+def longest_step(lines):
+    """The longest segment of any of the lines."""
+    return max(sum((a - b) ** 2 for a, b in zip(p, q)) ** 0.5
+               for line in lines for p, q in zip(line, line[1:]))
+
+
+def arcs_drawn_by_pieces(r, label, p, got_vtp, plain_vtp):
+    """A run with --vtp whose pieces drew the arcs: no whole mesh on rank 0, none straight, as
+    many lines as one process's, most of them over the surface, and no step longer than one
+    process's longest (a route joined wrongly across pieces would jump)."""
+    lines = polylines(got_vtp) if os.path.exists(got_vtp) else []
+    plain = polylines(plain_vtp)
+    r.check(p.returncode == 0 and "tree: the whole mesh" not in p.stdout
+            and "arcs' paths: by the ranks" in p.stdout and " 0 straight" in p.stdout
+            and len(lines) == len(plain) and sum(len(l) > 2 for l in lines) > len(lines) // 2
+            and longest_step(lines) <= 1.5 * longest_step(plain),
+            f"{label}: the arcs drawn by the pieces ({p.returncode}):\n"
+            f"{p.stdout[-800:]}{p.stderr[-800:]}")
+
+
 def shape_counts(text):
     """(Euler characteristic, boundary loops, components) as hoct info states them."""
     return tuple(int(re.search(pattern, text).group(1)) for pattern in
