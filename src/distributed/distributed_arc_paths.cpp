@@ -31,7 +31,7 @@ int64_t total_size(const std::vector<std::vector<std::byte>> &parts) {
 
 } // namespace
 
-std::vector<std::vector<Vec3>> distributed_arc_paths(MPI_Comm comm, const PieceArcGraph &piece,
+std::vector<std::vector<Vec3>> distributed_arc_paths(MPI_Comm comm, PieceArcGraph &piece,
                                                      std::vector<ArcEnds> arcs, int threads,
                                                      ArcPathCounts *counts) {
   const Stopwatch clock;
@@ -45,6 +45,14 @@ std::vector<std::vector<Vec3>> distributed_arc_paths(MPI_Comm comm, const PieceA
   c.bytes_sent += static_cast<int64_t>(n * sizeof(ArcEnds)) * (ranks - 1);
   std::vector<std::vector<Vec3>> paths(rank == 0 ? n : 0);
 
+  // The nodes each rank holds with each other rank (their keys, once).
+  piece.piece = rank;
+  int64_t to_neighbours = 0; // this rank's bytes to the others, rank 0 excepted
+  auto exchange = [&](const std::vector<std::vector<std::byte>> &out) {
+    to_neighbours += total_size(out) - (rank == 0 ? 0 : static_cast<int64_t>(out[0].size()));
+    return exchange_bytes(comm, out);
+  };
+  meet_neighbours(piece, exchange(border_offers(piece, ranks)));
   std::vector<int64_t> which(n);
   for (std::size_t i = 0; i < n; ++i)
     which[i] = static_cast<int64_t>(i);
@@ -92,13 +100,16 @@ std::vector<std::vector<Vec3>> distributed_arc_paths(MPI_Comm comm, const PieceA
       local_step(r, r == ArcRound::Band ? GeometricGraph::kMaxVisits : 1024);
     if (which.empty())
       break;
-    const auto components = gather_bytes(comm, piece_components(piece, arcs, which, r));
+    const ArcComponents components = piece_components(piece, arcs, which, r);
+    const auto labels = exchange(neighbour_labels(piece, components, arcs, which, r));
+    const auto reports =
+        gather_bytes(comm, component_report(piece, components, arcs, which, r, labels));
     std::vector<uint8_t> routed;
     std::vector<std::vector<std::byte>> parts;
     if (rank == 0) {
-      c.component_bytes += total_size(components) - static_cast<int64_t>(components[0].size());
-      c.bytes_received += total_size(components) - static_cast<int64_t>(components[0].size());
-      for (const std::vector<Stretch> &s : route_arcs(components, which, arcs, routed))
+      c.component_bytes += total_size(reports) - static_cast<int64_t>(reports[0].size());
+      c.bytes_received += total_size(reports) - static_cast<int64_t>(reports[0].size());
+      for (const std::vector<Stretch> &s : route_arcs(reports, which, arcs, routed))
         parts.push_back(encode_stretches(s));
       c.bytes_sent += total_size(parts) - static_cast<int64_t>(parts[0].size());
     }
@@ -119,6 +130,7 @@ std::vector<std::vector<Vec3>> distributed_arc_paths(MPI_Comm comm, const PieceA
     which = std::move(left);
   }
   c.straight = static_cast<int64_t>(which.size());
+  MPI_Reduce(&to_neighbours, &c.neighbour_bytes, 1, MPI_INT64_T, MPI_MAX, 0, comm);
   c.seconds = clock.seconds();
   if (counts && rank == 0)
     *counts = c;

@@ -230,8 +230,8 @@ namespace {
 
 // Rank 0's part of distributed_arc_paths: the arcs of the trees compute_tree draws for `rq` (the
 // reported one; with AllPaths the whole tree's too), named by the group of all pieces' nodes.
-void draw_arcs(MPI_Comm comm, const PieceArcGraph &piece, const PieceTrees &all,
-               const TreeRequest &rq, int threads, DistributedOutcome &d) {
+void draw_arcs(MPI_Comm comm, PieceArcGraph &piece, const PieceTrees &all, const TreeRequest &rq,
+               int threads, DistributedOutcome &d) {
   std::vector<TreeResult *> drawn;
   TreeOutcome &o = d.outcome;
   if (rq.arcs == ArcGeometry::AllPaths || !o.simplified)
@@ -406,7 +406,7 @@ DistributedOutcome distributed_tree_on(RankInput in, const MeshInput *whole, con
   double field_scale[2] = {mesh.field.reference(), mesh.field.precision()};
   MPI_Bcast(field_scale, 2, MPI_DOUBLE, source, comm);
   // What the pieces do not compute, rank 0 computes from the whole mesh: the arcs' paths on the
-  // surface of a Reeb graph and of the PL methods (the pieces draw the exact contour tree's),
+  // surface of a Reeb graph (the pieces draw a contour tree's),
   // the linear method's Bezier or serendipity cells (whose PL mesh has points of its own) and
   // the refine method's mesh the pieces did not check (its PL vertices are counted with the
   // whole's Euler characteristic from their check).
@@ -419,13 +419,12 @@ DistributedOutcome distributed_tree_on(RankInput in, const MeshInput *whole, con
     return compute_tree(build_mesh(all, bo), rq, &all);
   };
   std::string whole_reason;
-  // The exact contour tree's arcs are drawn by the pieces (distributed_arc_paths); an augmented
-  // tree's are straight, as one process draws them.
+  // A contour tree's arcs are drawn by the pieces (distributed_arc_paths; the PL methods' too);
+  // an augmented tree's are straight, as one process draws them.
   const bool arcs_drawn = rq.arcs != ArcGeometry::None && !rq.augmented;
-  const bool pieces_draw = arcs_drawn && !reeb && !linear && !refined;
+  const bool pieces_draw = arcs_drawn && !reeb;
   if (arcs_drawn && !pieces_draw) {
-    whole_reason = std::string("the arcs' paths of ") + (reeb ? "a Reeb graph" : "the PL methods") +
-                   " search the whole graph";
+    whole_reason = "the arcs' paths of a Reeb graph search the whole graph";
   } else if (linear || refined) {
     int other_cells = linear && !empty_piece && !nodal_lagrange_cells(piece.input) ? 1 : 0;
     MPI_Allreduce(MPI_IN_PLACE, &other_cells, 1, MPI_INT, MPI_MAX, comm);
@@ -473,8 +472,9 @@ DistributedOutcome distributed_tree_on(RankInput in, const MeshInput *whole, con
       pl.cell_points = m.cell_points;
       group = pl_reeb_group(m, place, rq.augmented, threads);
     } else if (linear || refined) {
-      pl = linear ? pl_piece_trees(piece.input, place, rq.augmented, threads)
-                  : refined_piece_trees(mesh, place, rq.refine, rq.augmented, threads);
+      PieceArcGraph *arcs = pieces_draw ? &arc_graph : nullptr;
+      pl = linear ? pl_piece_trees(piece.input, place, rq.augmented, threads, arcs)
+                  : refined_piece_trees(mesh, place, rq.refine, rq.augmented, threads, arcs);
       trees = std::move(pl.trees);
     } else if (reeb) {
       trees = reeb_piece(mesh, place, eo, time);

@@ -1,4 +1,4 @@
-// Records sent between all ranks in one step (MPI_Alltoallv of trivially copyable records),
+// Records or bytes sent between all ranks in one step (MPI_Alltoallv),
 // every rank's bytes gathered on rank 0 (MPI_Gatherv) and rank 0's parts scattered to the ranks
 // (MPI_Scatterv).
 #pragma once
@@ -104,6 +104,39 @@ inline std::vector<std::byte> scatter_bytes(MPI_Comm comm,
   MPI_Scatterv(all.data(), sizes.data(), offsets.data(), MPI_BYTE, own.data(), n, MPI_BYTE, 0,
                comm);
   return own;
+}
+
+// Collective: sends out[r] to rank r (one per rank) and returns what every rank sent here, by
+// rank. Throws hoct::Error where one step would carry 2 GiB or more to or from a rank.
+inline std::vector<std::vector<std::byte>>
+exchange_bytes(MPI_Comm comm, const std::vector<std::vector<std::byte>> &out) {
+  const int ranks = static_cast<int>(out.size());
+  std::vector<int> send_counts(out.size()), send_offsets(out.size()), receive_counts(out.size()),
+      receive_offsets(out.size());
+  std::vector<std::byte> sending;
+  for (int r = 0; r < ranks; ++r) {
+    if (sending.size() + out[r].size() > static_cast<std::size_t>(INT_MAX))
+      throw Error("a rank sends more than 2 GiB in one exchange: use more ranks");
+    send_offsets[r] = static_cast<int>(sending.size());
+    send_counts[r] = static_cast<int>(out[r].size());
+    sending.insert(sending.end(), out[r].begin(), out[r].end());
+  }
+  MPI_Alltoall(send_counts.data(), 1, MPI_INT, receive_counts.data(), 1, MPI_INT, comm);
+  int64_t total = 0;
+  for (int r = 0; r < ranks; ++r) {
+    receive_offsets[r] = static_cast<int>(std::min<int64_t>(total, INT_MAX));
+    total += receive_counts[r];
+  }
+  if (total > INT_MAX)
+    throw Error("a rank receives more than 2 GiB in one exchange: use more ranks");
+  std::vector<std::byte> received(static_cast<std::size_t>(total));
+  MPI_Alltoallv(sending.data(), send_counts.data(), send_offsets.data(), MPI_BYTE, received.data(),
+                receive_counts.data(), receive_offsets.data(), MPI_BYTE, comm);
+  std::vector<std::vector<std::byte>> in;
+  for (int r = 0; r < ranks; ++r)
+    in.emplace_back(received.begin() + receive_offsets[r],
+                    received.begin() + receive_offsets[r] + receive_counts[r]);
+  return in;
 }
 
 // Collective: every rank's bytes on every rank, in rank order. Throws hoct::Error on every rank

@@ -102,29 +102,62 @@ private:
 
 } // namespace
 
-std::vector<std::byte> piece_components(const PieceArcGraph &piece, std::span<const ArcEnds> arcs,
-                                        std::span<const int64_t> which, ArcRound round,
-                                        int64_t max_visits) {
-  // Per component: its arc, and its keys (components[k] .. components[k + 1]).
-  std::vector<int64_t> arc_of, offset{0};
-  std::vector<NodeKey> keys;
+std::vector<std::vector<std::byte>> border_offers(const PieceArcGraph &piece, int pieces) {
+  std::vector<std::vector<NodeKey>> keys(static_cast<std::size_t>(pieces));
+  for (std::size_t x = 0; x < piece.ids.size(); ++x)
+    if (piece.shared[x])
+      for (int32_t r = std::max(piece.spans[x][0], 0); r <= piece.spans[x][1] && r < pieces; ++r)
+        if (r != piece.piece)
+          keys[r].push_back(piece.keys[x]);
+  std::vector<std::vector<std::byte>> out;
+  for (std::vector<NodeKey> &k : keys) {
+    std::sort(k.begin(), k.end());
+    ByteWriter w;
+    w.array(k);
+    out.push_back(std::move(w.out));
+  }
+  return out;
+}
+
+void meet_neighbours(PieceArcGraph &piece, std::span<const std::vector<std::byte>> offers) {
+  piece.common.assign(offers.size(), {});
+  for (std::size_t r = 0; r < offers.size(); ++r) {
+    ByteReader in(offers[r], "arc border offers");
+    const std::vector<NodeKey> keys = in.array<NodeKey>();
+    if (!in.done() || !std::is_sorted(keys.begin(), keys.end()))
+      throw std::runtime_error("arc border offers: malformed");
+    if (static_cast<int32_t>(r) == piece.piece)
+      continue;
+    // Both pieces hold these: each lists them in key order.
+    for (const NodeKey &k : keys)
+      if (const int64_t x = piece.find(k); x >= 0 && piece.shared[x])
+        piece.common[r].push_back(x);
+  }
+}
+
+ArcComponents piece_components(const PieceArcGraph &piece, std::span<const ArcEnds> arcs,
+                               std::span<const int64_t> which, ArcRound round, int64_t max_visits) {
+  ArcComponents out;
+  out.label.resize(which.size());
+  out.count.assign(which.size(), 0);
+  out.ends.assign(which.size(), {-1, -1});
   GeometricGraph::Search scratch;
   StampedSets sets(piece.ids.size());
   std::vector<int64_t> sources, graph_sources, label;
-  for (const int64_t i : which) {
-    const ArcEnds &arc = arcs[i];
+  for (std::size_t k = 0; k < which.size(); ++k) {
+    const ArcEnds &arc = arcs[which[k]];
     const auto [lo, hi] = round_values(arc, round);
     // The sources: the ends the piece holds, and its shared kept nodes within the values.
+    const int64_t ends[2] = {piece.find(arc.lo_key), piece.find(arc.hi_key)};
     sources.clear();
-    for (const NodeKey &k : {arc.lo_key, arc.hi_key})
-      if (const int64_t x = piece.find(k); x >= 0)
+    for (const int64_t x : ends)
+      if (x >= 0)
         sources.push_back(x);
     const auto first = std::lower_bound(piece.values.begin(), piece.values.end(), lo),
                last = std::upper_bound(piece.values.begin(), piece.values.end(), hi);
     for (auto it = first; it != last; ++it) {
       const int64_t x = it - piece.values.begin();
-      if (piece.shared[x] && (sources.empty() || x != sources[0]) &&
-          (sources.size() < 2 || x != sources[1]))
+      if (piece.shared[x] && x != ends[0] && x != ends[1])
         sources.push_back(x);
     }
     if (sources.size() < 2 || !piece.graph)
@@ -158,111 +191,223 @@ std::vector<std::byte> piece_components(const PieceArcGraph &piece, std::span<co
       for (std::size_t s = 0; s < sources.size(); ++s)
         label[s] = sets.find(sources[s]);
     }
-    // Components with two or more sources, each listed once.
+    // The components with two or more sources, numbered from 0; their nodes by kept index.
     std::vector<std::pair<int64_t, int64_t>> by_label(sources.size());
     for (std::size_t s = 0; s < sources.size(); ++s)
       by_label[s] = {label[s], static_cast<int64_t>(s)};
     std::sort(by_label.begin(), by_label.end());
+    std::vector<std::pair<int64_t, int32_t>> &nodes = out.label[k];
     for (std::size_t s = 0; s < by_label.size();) {
       std::size_t e = s;
       while (e < by_label.size() && by_label[e].first == by_label[s].first)
         ++e;
       if (e - s >= 2) {
-        arc_of.push_back(i);
-        for (std::size_t k = s; k < e; ++k)
-          keys.push_back(piece.keys[sources[by_label[k].second]]);
-        offset.push_back(static_cast<int64_t>(keys.size()));
+        const int32_t c = out.count[k]++;
+        for (std::size_t j = s; j < e; ++j) {
+          const int64_t x = sources[by_label[j].second];
+          nodes.push_back({x, c});
+          for (int end = 0; end < 2; ++end)
+            if (x == ends[end])
+              out.ends[k][end] = c;
+        }
       }
       s = e;
     }
+    std::sort(nodes.begin(), nodes.end());
   }
+  return out;
+}
+
+namespace {
+
+// The shared nodes `piece` holds with piece r, within [lo, hi], in key order, and each one's
+// component (-1: none) for arc k.
+template <class Visit>
+void common_within(const PieceArcGraph &piece, const ArcComponents &components, std::size_t k,
+                   std::size_t r, double lo, double hi, Visit visit) {
+  const auto &nodes = components.label[k];
+  for (const int64_t x : piece.common[r]) {
+    if (piece.values[x] < lo || piece.values[x] > hi)
+      continue;
+    const auto it = std::lower_bound(nodes.begin(), nodes.end(), std::pair(x, int32_t{-1}));
+    visit(x, it != nodes.end() && it->first == x ? it->second : int32_t{-1});
+  }
+}
+
+// One component's touch of a neighbour's: at node `witness`.
+struct Touch {
+  NodeKey witness;
+  int32_t piece = 0, theirs = 0, mine = 0, unused = 0;
+};
+
+} // namespace
+
+std::vector<std::vector<std::byte>>
+neighbour_labels(const PieceArcGraph &piece, const ArcComponents &components,
+                 std::span<const ArcEnds> arcs, std::span<const int64_t> which, ArcRound round) {
+  std::vector<std::vector<std::byte>> out(piece.common.size());
+  for (std::size_t r = 0; r < piece.common.size(); ++r) {
+    if (piece.common[r].empty())
+      continue;
+    std::vector<int32_t> labels;
+    for (std::size_t k = 0; k < which.size(); ++k) {
+      const auto [lo, hi] = round_values(arcs[which[k]], round);
+      common_within(piece, components, k, r, lo, hi,
+                    [&](int64_t, int32_t c) { labels.push_back(c); });
+    }
+    ByteWriter w;
+    w.array(labels);
+    out[r] = std::move(w.out);
+  }
+  return out;
+}
+
+std::vector<std::byte> component_report(const PieceArcGraph &piece, const ArcComponents &components,
+                                        std::span<const ArcEnds> arcs,
+                                        std::span<const int64_t> which, ArcRound round,
+                                        std::span<const std::vector<std::byte>> labels) {
+  std::vector<std::vector<int32_t>> theirs(labels.size());
+  std::vector<std::size_t> at(labels.size(), 0);
+  for (std::size_t r = 0; r < labels.size(); ++r) {
+    if (labels[r].empty())
+      continue;
+    ByteReader in(labels[r], "arc component labels");
+    theirs[r] = in.array<int32_t>();
+    if (!in.done())
+      throw std::runtime_error("arc component labels: malformed");
+  }
+  std::vector<int64_t> offset{0};
+  std::vector<Touch> touches;
+  for (std::size_t k = 0; k < which.size(); ++k) {
+    const auto [lo, hi] = round_values(arcs[which[k]], round);
+    const std::size_t first = touches.size();
+    for (std::size_t r = 0; r < piece.common.size() && r < labels.size(); ++r)
+      common_within(piece, components, k, r, lo, hi, [&](int64_t x, int32_t mine) {
+        if (at[r] >= theirs[r].size())
+          throw std::runtime_error("arc component labels: fewer than the nodes shared");
+        const int32_t other = theirs[r][at[r]++];
+        if (mine >= 0 && other >= 0)
+          touches.push_back({piece.keys[x], static_cast<int32_t>(r), other, mine, 0});
+      });
+    // One touch per pair of components.
+    std::sort(touches.begin() + static_cast<std::ptrdiff_t>(first), touches.end(),
+              [](const Touch &a, const Touch &b) {
+                return std::tie(a.piece, a.theirs, a.mine, a.witness) <
+                       std::tie(b.piece, b.theirs, b.mine, b.witness);
+              });
+    touches.erase(std::unique(touches.begin() + static_cast<std::ptrdiff_t>(first), touches.end(),
+                              [](const Touch &a, const Touch &b) {
+                                return a.piece == b.piece && a.theirs == b.theirs &&
+                                       a.mine == b.mine;
+                              }),
+                  touches.end());
+    offset.push_back(static_cast<int64_t>(touches.size()));
+  }
+  for (std::size_t r = 0; r < labels.size(); ++r)
+    if (at[r] != theirs[r].size())
+      throw std::runtime_error("arc component labels: more than the nodes shared");
   ByteWriter w;
-  w.array(arc_of);
+  w.value<int32_t>(piece.piece);
+  w.array(components.count);
+  w.array(components.ends);
   w.array(offset);
-  w.array(keys);
+  w.array(touches);
   return std::move(w.out);
 }
 
-std::vector<std::vector<Stretch>> route_arcs(std::span<const std::vector<std::byte>> components,
+std::vector<std::vector<Stretch>> route_arcs(std::span<const std::vector<std::byte>> reports,
                                              std::span<const int64_t> which,
                                              std::span<const ArcEnds> arcs,
                                              std::vector<uint8_t> &routed) {
-  // Every piece's components, by the arc's place in `which` (ascending).
-  struct Component {
-    int32_t piece;
-    std::vector<NodeKey> keys;
+  struct Report {
+    std::vector<int32_t> count;
+    std::vector<std::array<int32_t, 2>> ends;
+    std::vector<int64_t> offset;
+    std::vector<Touch> touches;
   };
-  std::vector<std::vector<Component>> of(which.size());
-  for (std::size_t p = 0; p < components.size(); ++p) {
-    ByteReader r(components[p], "arc components");
-    const auto arc_of = r.array<int64_t>();
-    const auto offset = r.array<int64_t>();
-    const auto keys = r.array<NodeKey>();
-    if (!r.done() || offset.size() != arc_of.size() + 1 || offset.front() != 0 ||
-        offset.back() != static_cast<int64_t>(keys.size()))
-      throw std::runtime_error("arc components: malformed");
-    for (std::size_t c = 0; c < arc_of.size(); ++c) {
-      const auto at = std::lower_bound(which.begin(), which.end(), arc_of[c]);
-      if (at == which.end() || *at != arc_of[c] || offset[c + 1] < offset[c])
-        throw std::runtime_error("arc components: an arc not asked for");
-      of[static_cast<std::size_t>(at - which.begin())].push_back(
-          {static_cast<int32_t>(p),
-           std::vector<NodeKey>(keys.begin() + offset[c], keys.begin() + offset[c + 1])});
+  const std::size_t pieces = reports.size();
+  std::vector<Report> rep(pieces);
+  for (std::size_t p = 0; p < pieces; ++p) {
+    ByteReader in(reports[p], "arc component reports");
+    Report &r = rep[p];
+    const int32_t number = in.value<int32_t>();
+    r.count = in.array<int32_t>();
+    r.ends = in.array<std::array<int32_t, 2>>();
+    r.offset = in.array<int64_t>();
+    r.touches = in.array<Touch>();
+    bool ok = in.done() && number == static_cast<int32_t>(p) && r.count.size() == which.size() &&
+              r.ends.size() == which.size() && r.offset.size() == which.size() + 1 &&
+              r.offset.front() == 0 && r.offset.back() == static_cast<int64_t>(r.touches.size());
+    for (std::size_t k = 0; ok && k < which.size(); ++k) {
+      ok = r.count[k] >= 0 && r.offset[k] <= r.offset[k + 1] && r.ends[k][0] < r.count[k] &&
+           r.ends[k][1] < r.count[k];
     }
+    if (!ok)
+      throw std::runtime_error("arc component reports: malformed");
   }
-  std::vector<std::vector<Stretch>> out(components.size());
-  routed.assign(which.size(), 0);
-  for (std::size_t k = 0; k < which.size(); ++k) {
-    const std::vector<Component> &comps = of[k];
-    // A graph of keys (0 .. K) and components (K ..): breadth-first from the lower end.
-    std::vector<NodeKey> names;
-    for (const Component &c : comps)
-      names.insert(names.end(), c.keys.begin(), c.keys.end());
-    std::sort(names.begin(), names.end());
-    names.erase(std::unique(names.begin(), names.end()), names.end());
-    auto name = [&](const NodeKey &key) {
-      const auto it = std::lower_bound(names.begin(), names.end(), key);
-      return it != names.end() && *it == key ? static_cast<int64_t>(it - names.begin()) : -1;
-    };
-    const ArcEnds &arc = arcs[which[k]];
-    const int64_t from = name(arc.lo_key), to = name(arc.hi_key);
-    if (from < 0 || to < 0)
-      continue;
-    const int64_t K = static_cast<int64_t>(names.size());
-    std::vector<std::vector<int64_t>> key_comps(names.size());
-    for (std::size_t c = 0; c < comps.size(); ++c)
-      for (const NodeKey &key : comps[c].keys)
-        key_comps[name(key)].push_back(static_cast<int64_t>(c));
-    std::vector<int64_t> back(names.size() + comps.size(), -2);
-    std::vector<int64_t> queue{from};
-    back[from] = -1;
-    for (std::size_t h = 0; h < queue.size() && back[to] == -2; ++h) {
-      const int64_t v = queue[h];
-      if (v < K) {
-        for (const int64_t c : key_comps[v])
-          if (back[K + c] == -2) {
-            back[K + c] = v;
-            queue.push_back(K + c);
-          }
-      } else {
-        for (const NodeKey &key : comps[v - K].keys)
-          if (const int64_t x = name(key); back[x] == -2) {
-            back[x] = v;
-            queue.push_back(x);
-          }
+  for (std::size_t p = 0; p < pieces; ++p) // touches name components that exist
+    for (std::size_t k = 0; k < which.size(); ++k)
+      for (int64_t t = rep[p].offset[k]; t < rep[p].offset[k + 1]; ++t) {
+        const Touch &x = rep[p].touches[t];
+        if (x.piece < 0 || static_cast<std::size_t>(x.piece) >= pieces || x.mine < 0 ||
+            x.mine >= rep[p].count[k] || x.theirs < 0 || x.theirs >= rep[x.piece].count[k])
+          throw std::runtime_error("arc component reports: a touch of no component");
       }
+  std::vector<std::vector<Stretch>> out(pieces);
+  routed.assign(which.size(), 0);
+  std::vector<int64_t> first(pieces + 1);
+  for (std::size_t k = 0; k < which.size(); ++k) {
+    // The components of all pieces as one graph: piece p's c is first[p] + c.
+    for (std::size_t p = 0; p < pieces; ++p)
+      first[p + 1] = first[p] + rep[p].count[k];
+    const int64_t n = first[pieces];
+    std::vector<int64_t> piece_of(static_cast<std::size_t>(n));
+    for (std::size_t p = 0; p < pieces; ++p)
+      for (int64_t v = first[p]; v < first[p + 1]; ++v)
+        piece_of[v] = static_cast<int64_t>(p);
+    std::vector<std::vector<std::pair<int64_t, NodeKey>>> next(static_cast<std::size_t>(n));
+    for (std::size_t p = 0; p < pieces; ++p)
+      for (int64_t t = rep[p].offset[k]; t < rep[p].offset[k + 1]; ++t) {
+        const Touch &x = rep[p].touches[t];
+        const int64_t a = first[p] + x.mine, b = first[x.piece] + x.theirs;
+        next[a].push_back({b, x.witness});
+        next[b].push_back({a, x.witness});
+      }
+    // Breadth-first from every component with the lower end to one with the upper end.
+    std::vector<int64_t> back(static_cast<std::size_t>(n), -2), queue;
+    std::vector<NodeKey> via(static_cast<std::size_t>(n));
+    for (std::size_t p = 0; p < pieces; ++p)
+      if (const int32_t c = rep[p].ends[k][0]; c >= 0) {
+        back[first[p] + c] = -1;
+        queue.push_back(first[p] + c);
+      }
+    int64_t goal = -1;
+    for (std::size_t h = 0; h < queue.size() && goal < 0; ++h) {
+      const int64_t v = queue[h];
+      if (rep[piece_of[v]].ends[k][1] == v - first[piece_of[v]]) {
+        goal = v;
+        break;
+      }
+      for (const auto &[w, key] : next[v])
+        if (back[w] == -2) {
+          back[w] = v;
+          via[w] = key;
+          queue.push_back(w);
+        }
     }
-    if (back[to] == -2)
+    if (goal < 0)
       continue;
-    // The route back from the upper end: key, component, key, ...
     std::vector<int64_t> route;
-    for (int64_t v = to; v != -1; v = back[v])
+    for (int64_t v = goal; v != -1; v = back[v])
       route.push_back(v);
     std::reverse(route.begin(), route.end());
-    const int32_t steps = static_cast<int32_t>(route.size() / 2);
+    const ArcEnds &arc = arcs[which[k]];
+    const int32_t steps = static_cast<int32_t>(route.size());
     for (int32_t s = 0; s < steps; ++s) {
-      const Component &c = comps[route[2 * s + 1] - K];
-      out[c.piece].push_back({which[k], s, steps, names[route[2 * s]], names[route[2 * s + 2]]});
+      const int64_t v = route[s];
+      const NodeKey from = s == 0 ? arc.lo_key : via[v],
+                    to = s + 1 == steps ? arc.hi_key : via[route[s + 1]];
+      out[piece_of[v]].push_back({which[k], s, steps, from, to});
     }
     routed[k] = 1;
   }

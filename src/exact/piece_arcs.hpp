@@ -1,19 +1,21 @@
 // The arcs of a partitioned mesh's tree drawn on the surface by its pieces (docs/ALGORITHM.md
 // §8, "The arcs' paths by pieces"): no piece holds the whole graph, so an arc whose path leaves
 // the piece of its ends is drawn in stretches, one per piece it crosses, between nodes two
-// pieces share (portals).
+// pieces share.
 //
 // Each arc is drawn, as one process draws it, through graph nodes within its values if any
 // path there joins its ends; else below its upper end's value (the join tree joins its ends
 // there); else above its lower end's. In each round:
 //  1. a piece that holds both ends searches there (draw_local_arcs; below, a short search, as
 //     one process's first pass does);
-//  2. for each arc no piece drew, each piece lists the components of its graph within the
-//     round's values that hold two or more of its portals and ends (piece_components: by a
-//     search within the arc's values; below or above them by its kept join or split tree and
-//     its shared edges' chains, which together connect its kept nodes as its graph does);
-//  3. the components of all pieces, joined at their shared keys, give a route from end to end
-//     (route_arcs: the shortest in pieces), a stretch per piece;
+//  2. for each arc no piece drew, each piece finds the components of its graph within the
+//     round's values that hold two or more of its ends and shared nodes (piece_components),
+//     tells each neighbour the components of the nodes they share (neighbour_labels; the keys
+//     of those nodes were exchanged once, border_offers), and reports to rank 0 only its
+//     components, their ends and the neighbours' components they touch (component_report):
+//     what rank 0 receives grows with the components, not with the pieces' borders;
+//  3. rank 0 finds a route from end to end through the fewest components (route_arcs), a
+//     stretch per piece, between nodes two pieces share;
 //  4. each piece draws its stretches within the round's values (draw_stretches), and the
 //     stretches are joined end to end (join_stretches).
 // An arc no round routes is drawn straight and counted.
@@ -45,6 +47,11 @@ struct PieceArcGraph {
   // Consecutive nodes along the edges other pieces hold (indices into ids): the kept trees do
   // not have them (the group with all the edge's cells joins them).
   std::vector<std::array<int64_t, 2>> chain_links;
+  // The piece's number, the pieces that may hold each kept node (PieceKeys::span), and (set by
+  // meet_neighbours) the kept nodes it holds with each piece, in key order (both list them so).
+  int32_t piece = 0;
+  std::vector<std::array<int32_t, 2>> spans;
+  std::vector<std::vector<int64_t>> common;
 
   // The kept node with this key (index into ids), or -1.
   int64_t find(const NodeKey &key) const;
@@ -74,12 +81,35 @@ std::vector<std::vector<Vec3>> draw_local_arcs(const PieceArcGraph &piece,
                                                std::span<const int64_t> which, ArcRound round,
                                                int64_t max_visits, int threads);
 
-// 2. The piece's components for arcs `which` in `round`, as bytes for route_arcs. A search
-// within an arc's values visits at most max_visits nodes (past that, the piece lists none for
-// that arc).
-std::vector<std::byte> piece_components(const PieceArcGraph &piece, std::span<const ArcEnds> arcs,
+// 0. Once: the keys of the piece's shared nodes each other piece may hold, as bytes (by piece),
+// and from what every piece offered this one (by piece), PieceArcGraph::common.
+std::vector<std::vector<std::byte>> border_offers(const PieceArcGraph &piece, int pieces);
+void meet_neighbours(PieceArcGraph &piece, std::span<const std::vector<std::byte>> offers);
+
+// 2. The piece's components for arcs `which` in `round`: of each arc, the components of the
+// piece's graph within the round's values that hold two or more of its ends and shared nodes
+// (by a search within the arc's values, visiting at most max_visits nodes, past which the piece
+// has none for that arc; below or above by its kept join or split tree and its shared edges'
+// chains: two kept nodes are joined below h where their climbs up the join tree below h meet).
+struct ArcComponents {
+  std::vector<std::vector<std::pair<int64_t, int32_t>>> label; // per arc: (kept node, component)
+  std::vector<int32_t> count;                                  // per arc: its components
+  std::vector<std::array<int32_t, 2>> ends;                    // per arc: the ends' (-1: none)
+};
+ArcComponents piece_components(const PieceArcGraph &piece, std::span<const ArcEnds> arcs,
+                               std::span<const int64_t> which, ArcRound round,
+                               int64_t max_visits = GeometricGraph::kMaxVisits);
+// 2b. The components of the nodes the piece holds with each other piece (within each arc's
+// values, in key order), as bytes for that piece (by piece).
+std::vector<std::vector<std::byte>>
+neighbour_labels(const PieceArcGraph &piece, const ArcComponents &components,
+                 std::span<const ArcEnds> arcs, std::span<const int64_t> which, ArcRound round);
+// 2c. From its neighbours' labels (by piece): the piece's components, their ends, and which of
+// its neighbours' components each touches (at which node), as bytes for route_arcs.
+std::vector<std::byte> component_report(const PieceArcGraph &piece, const ArcComponents &components,
+                                        std::span<const ArcEnds> arcs,
                                         std::span<const int64_t> which, ArcRound round,
-                                        int64_t max_visits = GeometricGraph::kMaxVisits);
+                                        std::span<const std::vector<std::byte>> labels);
 
 // A piece's stretch of an arc: its place in the arc's route, and the keys it runs between.
 struct Stretch {

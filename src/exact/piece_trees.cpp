@@ -151,10 +151,13 @@ PieceTrees piece_trees(const Mesh &mesh, const PiecePlace &place, const ExactTre
     a.keys.resize(out.nodes.size());
     a.values.resize(out.nodes.size());
     a.shared.resize(out.nodes.size());
+    a.spans.resize(out.nodes.size());
+    a.piece = place.piece;
     for (std::size_t i = 0; i < out.nodes.size(); ++i) {
       a.keys[i] = out.nodes[i].key;
       a.values[i] = out.nodes[i].value;
-      a.shared[i] = !within(keys.span(kt.nodes[i]), place.piece, place.piece);
+      a.spans[i] = keys.span(kt.nodes[i]);
+      a.shared[i] = !within(a.spans[i], place.piece, place.piece);
     }
     a.join_parent = kt.join_parent;
     a.split_parent = kt.split_parent;

@@ -1,5 +1,6 @@
 #include "exact/pl_piece_trees.hpp"
 
+#include "exact/piece_arcs.hpp"
 #include "exact/piece_keys.hpp"
 #include "pl/pl_mesh.hpp"
 #include "pl/refinement.hpp"
@@ -13,9 +14,10 @@ namespace hoct {
 namespace {
 
 // The kept trees of a piece's PL mesh (linear_piece_mesh, refined_piece_mesh) over its sweeps'
-// vertices, ordered as the whole orders them; keep[i]: vertex i is kept whatever it is.
+// vertices, ordered as the whole orders them; keep[i]: vertex i is kept whatever it is. With
+// `arcs`, the piece's PL graph there (its 1-skeleton), to draw the whole tree's arcs.
 PieceTrees kept_trees(const PlPieceMesh &m, const PiecePlace &place,
-                      const std::vector<uint8_t> &keep, int threads) {
+                      const std::vector<uint8_t> &keep, int threads, PieceArcGraph *arcs) {
   const PlMesh &pl = m.pl;
   const bool all = m.point.empty();
   auto at = [&](int64_t i) { return all ? i : m.point[i]; };
@@ -33,7 +35,37 @@ PieceTrees kept_trees(const PlPieceMesh &m, const PiecePlace &place,
   for (std::size_t t = 0; t < pl.triangles.size(); ++t)
     for (int k = 0; k < 3; ++k)
       edges[3 * t + k] = {index(pl.triangles[t][k]), index(pl.triangles[t][(k + 1) % 3])};
-  return pl_kept_trees(m, place, values, edges, keep, order, m.point, threads);
+  std::vector<int64_t> kept;
+  PieceTrees trees = pl_kept_trees(m, place, values, edges, keep, order, m.point, threads, &kept);
+  if (arcs) {
+    PieceArcGraph &a = *arcs;
+    const ScalarGraph g = pl.graph();
+    auto graph = std::make_shared<GeometricGraph>(pl.points, pl.values);
+    for (int64_t v = 0; v < g.size(); ++v)
+      for (const int64_t u : g.neighbors(v))
+        if (u > v)
+          graph->add_edge(v, u);
+    graph->finish();
+    a.graph = std::move(graph);
+    a.ids.resize(kept.size());
+    a.keys.resize(kept.size());
+    a.values.resize(kept.size());
+    a.shared.resize(kept.size());
+    a.spans.resize(kept.size());
+    a.piece = place.piece;
+    for (std::size_t k = 0; k < kept.size(); ++k) {
+      a.ids[k] = at(kept[k]);
+      a.keys[k] = trees.nodes[k].key;
+      a.values[k] = trees.nodes[k].value;
+      a.shared[k] = trees.nodes[k].shared;
+      a.spans[k] = trees.nodes[k].span;
+    }
+    a.join_parent = trees.join_parent;
+    a.split_parent = trees.split_parent;
+    a.chain_links.clear(); // the sweeps have every PL edge, shared or not
+    a.index_keys();
+  }
+  return trees;
 }
 
 } // namespace
@@ -150,27 +182,27 @@ PlPieceMesh refined_piece_mesh(const Mesh &mesh, const PiecePlace &place, int k)
 }
 
 PlPieceTrees pl_piece_trees(const MeshInput &piece, const PiecePlace &place, bool augmented,
-                            int threads) {
+                            int threads, PieceArcGraph *arcs) {
   const PlPieceMesh m = linear_piece_mesh(piece, place);
   std::vector<uint8_t> keep(m.point.size());
   for (std::size_t i = 0; i < m.point.size(); ++i)
     keep[i] = augmented || !within(m.span[m.point[i]], place.piece, place.piece);
   PlPieceTrees out;
-  out.trees = kept_trees(m, place, keep, threads);
+  out.trees = kept_trees(m, place, keep, threads, arcs);
   out.own_points = m.own_points;
   out.triangles = static_cast<int64_t>(m.pl.triangles.size());
   return out;
 }
 
 PlPieceTrees refined_piece_trees(const Mesh &mesh, const PiecePlace &place, int k, bool augmented,
-                                 int threads) {
+                                 int threads, PieceArcGraph *arcs) {
   const PlPieceMesh m = refined_piece_mesh(mesh, place, k);
   const int64_t np = m.pl.num_vertices();
   std::vector<uint8_t> keep(static_cast<std::size_t>(np));
   for (int64_t p = 0; p < np; ++p)
     keep[p] = augmented || !within(m.span[p], place.piece, place.piece);
   PlPieceTrees out;
-  out.trees = kept_trees(m, place, keep, threads);
+  out.trees = kept_trees(m, place, keep, threads, arcs);
   out.own_points = m.own_points;
   out.cell_points = m.cell_points;
   out.triangles = static_cast<int64_t>(m.pl.triangles.size());

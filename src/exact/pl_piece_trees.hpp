@@ -66,14 +66,15 @@ PieceTrees pl_kept_trees(const PlPieceMesh &m, const PiecePlace &place,
 
 // One piece's kept trees by the linear method (`augmented`: every vertex kept). Its cells must
 // be Lagrange triangles and quadrilaterals (nodal_lagrange_cells: the split makes no points of
-// its own).
+// its own). With `arcs`, the piece's PL graph there, to draw the whole tree's arcs
+// (exact/piece_arcs).
 PlPieceTrees pl_piece_trees(const MeshInput &piece, const PiecePlace &place, bool augmented,
-                            int threads = 1);
+                            int threads = 1, PieceArcGraph *arcs = nullptr);
 
 // One piece's kept trees by the refine method (`mesh`: the piece's, built with the whole's
-// scales), K = `k` sub-triangles per triangle edge.
+// scales), K = `k` sub-triangles per triangle edge; `arcs` as above.
 PlPieceTrees refined_piece_trees(const Mesh &mesh, const PiecePlace &place, int k, bool augmented,
-                                 int threads = 1);
+                                 int threads = 1, PieceArcGraph *arcs = nullptr);
 
 // The whole's PL mesh's counts from the sums of its pieces' counts (`k`: the refine method's K;
 // 0 for the linear method) and the whole surface's Euler characteristic (refine: its edges

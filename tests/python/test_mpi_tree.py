@@ -11,8 +11,8 @@ generated genus-0 dataset, with plateaus and fallback cells, quadrilaterals, a f
 and 7 ranks (--oversubscribe: this machine has 2 cores); the same for the linear and the refine
 method (PL trees, by pieces too; the plate's PL Reeb graphs by pieces as well, on 2-7 ranks),
 whose serendipity cells (linear) rank 0 computes from the whole mesh, saying so. With --vtp
-the pieces draw the arcs over the surface (exact/piece_arcs): the JSON is one process's and
-every arc a polyline without a jump. Also checked:
+(exact, linear, refine) the pieces draw the arcs over the surface (exact/piece_arcs): the JSON
+is one process's and every arc a polyline without a jump. Also checked:
 a broken file is reported as without MPI, and rank 0 alone writes the outputs.
 Bad meshes: inverted cells that a piece finds are named by the whole's cell numbers, as without
 MPI, and --force past them gives the same JSON; a crack between pieces and a slit from the border
@@ -95,13 +95,15 @@ with tempdir() as d:
     # holds the whole mesh, and each arc is a polyline over the surface with as many lines as
     # one process draws, none of whose steps is longer than one process's longest (a route
     # joined wrongly across pieces would jump).
-    run("tree", path, "--vtp", os.path.join(d, "plain.vtp"), "--json", os.path.join(d, "plain.json"),
-        "--no-timings", "-q")
-    for n in (2, 3, 7):
-        got_vtp, got_json = os.path.join(d, f"x{n}.vtp"), os.path.join(d, f"x{n}.json")
-        p = mpi(n, "tree", path, "--vtp", got_vtp, "--json", got_json, "--no-timings")
-        r.check(read(got_json) == read(os.path.join(d, "plain.json")), f"--vtp, {n} ranks: the JSON")
-        arcs_drawn_by_pieces(r, f"--vtp, {n} ranks", p, got_vtp, os.path.join(d, "plain.vtp"))
+    for flags, ranks in [([], (2, 3, 7)), (["--linear"], (2, 7)), (["--refine", "2"], (2, 7))]:
+        plain_vtp, plain_json = os.path.join(d, "plain.vtp"), os.path.join(d, "plain.json")
+        run("tree", path, *flags, "--vtp", plain_vtp, "--json", plain_json, "--no-timings", "-q")
+        for n in ranks:
+            got_vtp, got_json = os.path.join(d, f"x{n}.vtp"), os.path.join(d, f"x{n}.json")
+            p = mpi(n, "tree", path, *flags, "--vtp", got_vtp, "--json", got_json, "--no-timings")
+            label = f"--vtp {' '.join(flags)}, {n} ranks"
+            r.check(read(got_json) == read(plain_json), f"{label}: the JSON")
+            arcs_drawn_by_pieces(r, label, p, got_vtp, plain_vtp)
     # --refine past the memory budget: refused on every rank before refining, once, no output.
     big = os.path.join(d, "big_refine.json")
     p = mpi(2, "tree", path, "--refine", "1000", "--max-memory", "1G", "--json", big)

@@ -1,13 +1,16 @@
 // The arcs of a partitioned mesh's tree drawn by its pieces (exact/piece_arcs), against the whole
-// mesh's graph: cut into 1-7 pieces, each arc must run from its lower node to its upper node
-// through points no farther apart than a cell, and be drawn within its values exactly where a
-// search of the whole mesh's graph finds a path within them (the pieces' graphs, joined at the
-// nodes they share, are the whole's).
+// mesh's graph (the exact one, and the refine method's PL mesh): cut into 1-7 pieces, each arc must
+// run from its lower node to its upper node through points no farther apart than a cell, and be
+// drawn within its values exactly where a search of the whole mesh's graph finds a path within them
+// (the pieces' graphs, joined at the nodes they share, are the whole's).
 #include "datasets/datasets.hpp"
 #include "exact/exact_contour_tree.hpp"
 #include "exact/piece_arcs.hpp"
 #include "exact/piece_trees.hpp"
+#include "exact/pl_piece_trees.hpp"
 #include "mesh/mesh.hpp"
+#include "pl/pl_contour_tree.hpp"
+#include "pl/refinement.hpp"
 #include "util/byte_codec.hpp"
 
 #include "test_pieces.hpp"
@@ -25,10 +28,27 @@ constexpr int kStraight = kArcRounds;
 
 // The pieces' steps run one piece after the other, as the ranks run them at once
 // (distributed/distributed_arc_paths).
-std::vector<std::vector<Vec3>> draw_by_pieces(const std::vector<PieceArcGraph> &pieces,
+// What each piece sends each piece (out[from][to]), as each receives it (by sender).
+std::vector<std::vector<std::vector<std::byte>>>
+delivered(const std::vector<std::vector<std::vector<std::byte>>> &out) {
+  std::vector<std::vector<std::vector<std::byte>>> in(out.size());
+  for (std::size_t to = 0; to < out.size(); ++to)
+    for (std::size_t from = 0; from < out.size(); ++from)
+      in[to].push_back(out[from].size() > to ? out[from][to] : std::vector<std::byte>{});
+  return in;
+}
+
+std::vector<std::vector<Vec3>> draw_by_pieces(std::vector<PieceArcGraph> &pieces,
                                               const std::vector<ArcEnds> &arcs,
                                               std::vector<int> &how, std::vector<uint8_t> &across) {
   const std::size_t n = arcs.size();
+  const int count = static_cast<int>(pieces.size());
+  std::vector<std::vector<std::vector<std::byte>>> offers;
+  for (const PieceArcGraph &p : pieces)
+    offers.push_back(border_offers(p, count));
+  const auto offered = delivered(offers);
+  for (std::size_t p = 0; p < pieces.size(); ++p)
+    meet_neighbours(pieces[p], offered[p]);
   std::vector<std::vector<Vec3>> paths(n);
   how.assign(n, kStraight);
   across.assign(n, 0);
@@ -55,11 +75,18 @@ std::vector<std::vector<Vec3>> draw_by_pieces(const std::vector<PieceArcGraph> &
     which = undrawn();
     if (which.empty())
       break;
-    std::vector<std::vector<std::byte>> components;
-    for (const PieceArcGraph &p : pieces)
+    std::vector<ArcComponents> components;
+    std::vector<std::vector<std::vector<std::byte>>> labels;
+    for (const PieceArcGraph &p : pieces) {
       components.push_back(piece_components(p, arcs, which, r));
+      labels.push_back(neighbour_labels(p, components.back(), arcs, which, r));
+    }
+    const auto received = delivered(labels);
+    std::vector<std::vector<std::byte>> reports;
+    for (std::size_t p = 0; p < pieces.size(); ++p)
+      reports.push_back(component_report(pieces[p], components[p], arcs, which, r, received[p]));
     std::vector<uint8_t> routed;
-    const std::vector<std::vector<Stretch>> stretches = route_arcs(components, which, arcs, routed);
+    const std::vector<std::vector<Stretch>> stretches = route_arcs(reports, which, arcs, routed);
     std::vector<std::vector<std::byte>> drawn;
     for (std::size_t p = 0; p < pieces.size(); ++p)
       drawn.push_back(
@@ -78,7 +105,8 @@ double distance(const Vec3 &a, const Vec3 &b) {
   return std::hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]);
 }
 
-void check_arcs(const MeshInput &whole, const std::string &name) {
+// By the exact method, or (refine > 0) the refine method's PL mesh of K = refine.
+void check_arcs(const MeshInput &whole, const std::string &name, int refine = 0) {
   MeshScales scales;
   MeshBuildOptions bo;
   bo.throw_on_error = false;
@@ -87,7 +115,9 @@ void check_arcs(const MeshInput &whole, const std::string &name) {
   ExactTreeOptions eo;
   eo.threads = 1;
   eo.arc_geometry = true;
-  TreeResult expected = exact_contour_tree(mesh, eo);
+  TreeResult expected = refine > 0
+                            ? pl_contour_tree(hoct::refine(mesh, refine), false, "refine", true, 1)
+                            : exact_contour_tree(mesh, eo);
   for (TreeNode &n : expected.nodes) // the input's cells, as the pieces report them
     if (!mesh.origins.identity()) {
       const CellPlace p = mesh.origins.to_input(n.cell, n.uv);
@@ -112,7 +142,8 @@ void check_arcs(const MeshInput &whole, const std::string &name) {
         whole, pieces, scales, false, reference,
         [&](const Mesh &m, const PiecePlace &p, const ExactTreeOptions &o, TreeTimings &time) {
           graphs.emplace_back();
-          return piece_trees(m, p, o, time, &graphs.back());
+          return refine > 0 ? refined_piece_trees(m, p, refine, false, 1, &graphs.back()).trees
+                            : piece_trees(m, p, o, time, &graphs.back());
         });
     for (int s = 1; s < pieces; s *= 2)
       for (int r = 0; r + s < pieces; r += 2 * s)
@@ -170,6 +201,18 @@ TEST(PieceArcs, ArcsAreDrawnThroughThePiecesWithinTheirValuesWhereTheWholeGraphI
   }
 }
 
+TEST(PieceArcs, ThePlMethodsArcsToo) {
+  for (const std::string name : {"heater", "sphere"}) {
+    DatasetOptions o;
+    o.cells = 800;
+    check_arcs(generate_dataset(name, o), name + " refined K = 2", 2);
+  }
+  DatasetOptions o;
+  o.cells = 1500;
+  o.plateau = 30;
+  check_arcs(generate_dataset("random", o), "random with a plateau refined K = 1", 1);
+}
+
 TEST(PieceArcs, NoisyFieldsPlateausAndCurvedCells) {
   DatasetOptions o;
   o.cells = 3000;
@@ -182,7 +225,7 @@ TEST(PieceArcs, NoisyFieldsPlateausAndCurvedCells) {
   check_arcs(generate_dataset("random", q), "random quadrilaterals");
 }
 
-TEST(PieceArcs, BytesThatAreNotComponentsOrStretchesAreRefused) {
+TEST(PieceArcs, BytesThatAreNotReportsOrStretchesAreRefused) {
   const std::vector<ArcEnds> arcs(2);
   const std::vector<int64_t> which{0};
   std::vector<uint8_t> routed;
@@ -191,19 +234,32 @@ TEST(PieceArcs, BytesThatAreNotComponentsOrStretchesAreRefused) {
   EXPECT_THROW(decode_stretches(junk[0]), std::runtime_error);
   std::vector<std::vector<Vec3>> paths(2);
   EXPECT_THROW(join_stretches(junk, paths), std::runtime_error);
-  // Components of an arc that was not asked for, and keys past their array.
-  ByteWriter w;
-  w.array(std::vector<int64_t>{1});
-  w.array(std::vector<int64_t>{0, 2});
-  w.array(std::vector<NodeKey>(2));
-  EXPECT_THROW(route_arcs(std::vector<std::vector<std::byte>>{w.out}, which, arcs, routed),
-               std::runtime_error);
-  ByteWriter past;
-  past.array(std::vector<int64_t>{0});
-  past.array(std::vector<int64_t>{0, 3});
-  past.array(std::vector<NodeKey>(2));
-  EXPECT_THROW(route_arcs(std::vector<std::vector<std::byte>>{past.out}, which, arcs, routed),
-               std::runtime_error);
+  PieceArcGraph none;
+  none.index_keys();
+  EXPECT_THROW(meet_neighbours(none, junk), std::runtime_error);
+  // One piece's report: `count` components, the ends' components, and a touch (piece, theirs,
+  // mine) of a neighbour's.
+  auto report = [](int32_t count, std::array<int32_t, 2> ends, std::vector<int32_t> touch) {
+    ByteWriter w;
+    w.value<int32_t>(0);
+    w.array(std::vector<int32_t>{count});
+    w.array(std::vector<std::array<int32_t, 2>>{ends});
+    w.array(std::vector<int64_t>{0, touch.empty() ? 0 : 1});
+    std::vector<int32_t> record(12, 0); // a NodeKey, then piece, theirs, mine, unused
+    std::copy(touch.begin(), touch.end(), record.begin() + 8);
+    w.value<uint64_t>(touch.empty() ? 0 : 1);
+    if (!touch.empty()) {
+      const auto *b = reinterpret_cast<const std::byte *>(record.data());
+      w.out.insert(w.out.end(), b, b + record.size() * sizeof(int32_t));
+    }
+    return std::vector<std::vector<std::byte>>{w.out};
+  };
+  EXPECT_NO_THROW(route_arcs(report(1, {0, 0}, {}), which, arcs, routed));
+  EXPECT_EQ(routed, std::vector<uint8_t>{1}); // both ends in its one component
+  EXPECT_THROW(route_arcs(report(1, {1, 0}, {}), which, arcs, routed), std::runtime_error);
+  EXPECT_THROW(route_arcs(report(1, {0, -1}, {0, 3, 0}), which, arcs, routed), std::runtime_error);
+  EXPECT_NO_THROW(route_arcs(report(1, {0, -1}, {0, 0, 0}), which, arcs, routed));
+  EXPECT_EQ(routed, std::vector<uint8_t>{0}); // no component with the upper end
 }
 
 } // namespace
