@@ -196,14 +196,15 @@ void report(const DistributedTreeRun &run, const DistributedOutcome &d,
       std::printf("  tree: the whole mesh on rank 0 (%s)\n", d.whole_tree.c_str());
     if (const ArcPathCounts &a = d.arc_paths; a.arcs > 0)
       std::printf("  arcs' paths: by the ranks, %lld by a rank holding both ends, %lld across "
-                  "ranks within their values, %lld below, %lld above, %lld straight; rank 0 "
+                  "ranks within their values, %lld below, %lld above, %lld anywhere, %lld "
+                  "straight; rank 0 "
                   "received %.1f KiB (components %.1f), sent %.1f KiB; a rank sent the others "
                   "at most %.1f KiB; %.3f s\n",
                   static_cast<long long>(a.local), static_cast<long long>(a.routed[0]),
                   static_cast<long long>(a.routed[1]), static_cast<long long>(a.routed[2]),
-                  static_cast<long long>(a.straight), a.bytes_received / 1024.0,
-                  a.component_bytes / 1024.0, a.bytes_sent / 1024.0, a.neighbour_bytes / 1024.0,
-                  a.seconds);
+                  static_cast<long long>(a.routed[3]), static_cast<long long>(a.straight),
+                  a.bytes_received / 1024.0, a.component_bytes / 1024.0, a.bytes_sent / 1024.0,
+                  a.neighbour_bytes / 1024.0, a.seconds);
     if (d.whole_check.empty())
       std::printf("  checks: by the pieces together (seams, shape, duplicate vertices)\n");
     else

@@ -229,9 +229,11 @@ DistributedOutcome distributed_tree(RankInput in, const TreeRequest &rq, MPI_Com
 namespace {
 
 // Rank 0's part of distributed_arc_paths: the arcs of the trees compute_tree draws for `rq` (the
-// reported one; with AllPaths the whole tree's too), named by the group of all pieces' nodes.
-void draw_arcs(MPI_Comm comm, PieceArcGraph &piece, const PieceTrees &all, const TreeRequest &rq,
-               int threads, DistributedOutcome &d) {
+// reported one; with AllPaths the whole tree's too), named by the group of all pieces' nodes
+// (`all`: PieceTrees::nodes or ReebGroup::nodes); parallel arcs in groups, by level in the
+// order one process draws them (compute_arc_paths).
+void draw_arcs(MPI_Comm comm, PieceArcGraph &piece, std::span<const PieceNode> all,
+               const TreeRequest &rq, int threads, DistributedOutcome &d) {
   std::vector<TreeResult *> drawn;
   TreeOutcome &o = d.outcome;
   if (rq.arcs == ArcGeometry::AllPaths || !o.simplified)
@@ -239,12 +241,11 @@ void draw_arcs(MPI_Comm comm, PieceArcGraph &piece, const PieceTrees &all, const
   if (o.simplified)
     drawn.push_back(&*o.simplified);
   std::vector<ArcEnds> arcs;
-  for (const TreeResult *t : drawn)
-    for (const auto &[lo, hi] : t->arcs) {
-      const PieceNode &x = all.nodes[t->nodes[lo].graph_node],
-                      &y = all.nodes[t->nodes[hi].graph_node];
-      arcs.push_back({x.key, y.key, x.value, y.value});
-    }
+  int32_t groups = 0;
+  for (const TreeResult *t : drawn) {
+    const std::vector<ArcEnds> more = tree_arc_ends(*t, all, groups);
+    arcs.insert(arcs.end(), more.begin(), more.end());
+  }
   std::vector<std::vector<Vec3>> paths =
       distributed_arc_paths(comm, piece, std::move(arcs), threads, &d.arc_paths);
   std::size_t at = 0;
@@ -422,9 +423,9 @@ DistributedOutcome distributed_tree_on(RankInput in, const MeshInput *whole, con
   // A contour tree's arcs are drawn by the pieces (distributed_arc_paths; the PL methods' too);
   // an augmented tree's are straight, as one process draws them.
   const bool arcs_drawn = rq.arcs != ArcGeometry::None && !rq.augmented;
-  const bool pieces_draw = arcs_drawn && !reeb;
+  const bool pieces_draw = arcs_drawn && !(reeb && (linear || refined));
   if (arcs_drawn && !pieces_draw) {
-    whole_reason = "the arcs' paths of a Reeb graph search the whole graph";
+    whole_reason = "the arcs' paths of a PL Reeb graph search the whole graph";
   } else if (linear || refined) {
     int other_cells = linear && !empty_piece && !nodal_lagrange_cells(piece.input) ? 1 : 0;
     MPI_Allreduce(MPI_IN_PLACE, &other_cells, 1, MPI_INT, MPI_MAX, comm);
@@ -477,7 +478,7 @@ DistributedOutcome distributed_tree_on(RankInput in, const MeshInput *whole, con
                   : refined_piece_trees(mesh, place, rq.refine, rq.augmented, threads, arcs);
       trees = std::move(pl.trees);
     } else if (reeb) {
-      trees = reeb_piece(mesh, place, eo, time);
+      trees = reeb_piece(mesh, place, eo, time, pieces_draw ? &arc_graph : nullptr);
     } else {
       trees = piece_trees(mesh, place, eo, time, pieces_draw ? &arc_graph : nullptr);
     }
@@ -607,7 +608,7 @@ DistributedOutcome distributed_tree_on(RankInput in, const MeshInput *whole, con
       d.outcome.simplified->input = f;
   }
   if (pieces_draw)
-    draw_arcs(comm, arc_graph, trees, rq, threads, d);
+    draw_arcs(comm, arc_graph, reeb ? group.nodes : trees.nodes, rq, threads, d);
   return d;
 }
 

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <stdexcept>
 #include <tuple>
@@ -32,18 +33,43 @@ std::array<double, 2> round_values(const ArcEnds &arc, ArcRound round) {
     return {-inf, arc.hi};
   case ArcRound::Above:
     return {arc.lo, inf};
+  case ArcRound::Anywhere:
+    return {-inf, inf};
   }
   throw std::invalid_argument("round_values: no such round");
 }
 
-std::vector<std::vector<Vec3>> draw_local_arcs(const PieceArcGraph &piece,
-                                               std::span<const ArcEnds> arcs,
-                                               std::span<const int64_t> which, ArcRound round,
-                                               int64_t max_visits, int threads) {
+namespace {
+
+// Sets s.avoid to the graph nodes of arc i's lower levels' paths in this piece (none: cleared);
+// whether its group has lower levels.
+bool avoid_lower_levels(std::span<const ArcEnds> arcs, int64_t i, const ArcTrail *trail,
+                        int64_t graph_size, GeometricGraph::Search &s) {
+  s.avoid.clear();
+  const ArcEnds &a = arcs[i];
+  if (!trail || a.group < 0 || a.level == 0)
+    return false;
+  s.avoid.assign(static_cast<std::size_t>(graph_size), 0);
+  for (const auto &[j, nodes] : *trail)
+    if (arcs[j].group == a.group && arcs[j].level < a.level)
+      for (const int64_t v : nodes)
+        s.avoid[v] = 1;
+  return true;
+}
+
+} // namespace
+
+std::vector<std::vector<Vec3>>
+draw_local_arcs(const PieceArcGraph &piece, std::span<const ArcEnds> arcs,
+                std::span<const int64_t> which, ArcRound round, int64_t max_visits, int threads,
+                const ArcTrail *trail, std::vector<std::vector<int64_t>> *nodes) {
   const int64_t n = static_cast<int64_t>(which.size());
   std::vector<std::vector<Vec3>> paths(which.size());
+  if (nodes)
+    nodes->assign(which.size(), {});
   if (!piece.graph || n == 0)
     return paths;
+  const GeometricGraph &g = *piece.graph;
   const int used = threads_for(n, thread_count(threads), 16);
   std::vector<GeometricGraph::Search> scratch(static_cast<std::size_t>(used));
   parallel_chunks(n, std::min<int64_t>(n, int64_t{used} * 256), used,
@@ -54,11 +80,15 @@ std::vector<std::vector<Vec3>> draw_local_arcs(const PieceArcGraph &piece,
                       const int64_t a = piece.find(arc.lo_key), b = piece.find(arc.hi_key);
                       if (a < 0 || b < 0)
                         continue;
+                      avoid_lower_levels(arcs, which[k], trail, g.size(), s);
                       const auto [lo, hi] = round_values(arc, round);
                       std::vector<Vec3> p =
-                          piece.graph->band_path(piece.ids[a], piece.ids[b], lo, hi, max_visits, s);
-                      if (!s.nodes.empty())
+                          g.band_path(piece.ids[a], piece.ids[b], lo, hi, max_visits, s);
+                      if (!s.nodes.empty()) {
                         paths[k] = std::move(p);
+                        if (nodes)
+                          (*nodes)[k] = s.nodes;
+                      }
                     }
                   });
   return paths;
@@ -111,7 +141,8 @@ std::vector<std::vector<std::byte>> border_offers(const PieceArcGraph &piece, in
           keys[r].push_back(piece.keys[x]);
   std::vector<std::vector<std::byte>> out;
   for (std::vector<NodeKey> &k : keys) {
-    std::sort(k.begin(), k.end());
+    std::sort(k.begin(), k.end()); // (a point the piece's cut split: its copies' key once)
+    k.erase(std::unique(k.begin(), k.end()), k.end());
     ByteWriter w;
     w.array(k);
     out.push_back(std::move(w.out));
@@ -124,7 +155,8 @@ void meet_neighbours(PieceArcGraph &piece, std::span<const std::vector<std::byte
   for (std::size_t r = 0; r < offers.size(); ++r) {
     ByteReader in(offers[r], "arc border offers");
     const std::vector<NodeKey> keys = in.array<NodeKey>();
-    if (!in.done() || !std::is_sorted(keys.begin(), keys.end()))
+    if (!in.done() ||
+        std::adjacent_find(keys.begin(), keys.end(), std::greater_equal<>()) != keys.end())
       throw std::runtime_error("arc border offers: malformed");
     if (static_cast<int32_t>(r) == piece.piece)
       continue;
@@ -136,7 +168,8 @@ void meet_neighbours(PieceArcGraph &piece, std::span<const std::vector<std::byte
 }
 
 ArcComponents piece_components(const PieceArcGraph &piece, std::span<const ArcEnds> arcs,
-                               std::span<const int64_t> which, ArcRound round, int64_t max_visits) {
+                               std::span<const int64_t> which, ArcRound round,
+                               const ArcTrail *trail, int64_t max_visits) {
   ArcComponents out;
   out.label.resize(which.size());
   out.count.assign(which.size(), 0);
@@ -149,6 +182,8 @@ ArcComponents piece_components(const PieceArcGraph &piece, std::span<const ArcEn
     const auto [lo, hi] = round_values(arc, round);
     // The sources: the ends the piece holds, and its shared kept nodes within the values.
     const int64_t ends[2] = {piece.find(arc.lo_key), piece.find(arc.hi_key)};
+    const bool avoiding =
+        piece.graph && avoid_lower_levels(arcs, which[k], trail, piece.graph->size(), scratch);
     sources.clear();
     for (const int64_t x : ends)
       if (x >= 0)
@@ -157,13 +192,14 @@ ArcComponents piece_components(const PieceArcGraph &piece, std::span<const ArcEn
                last = std::upper_bound(piece.values.begin(), piece.values.end(), hi);
     for (auto it = first; it != last; ++it) {
       const int64_t x = it - piece.values.begin();
-      if (piece.shared[x] && x != ends[0] && x != ends[1])
+      if (piece.shared[x] && x != ends[0] && x != ends[1] &&
+          !(avoiding && scratch.avoid[piece.ids[x]]))
         sources.push_back(x);
     }
     if (sources.size() < 2 || !piece.graph)
       continue;
     label.assign(sources.size(), 0);
-    if (round == ArcRound::Band) {
+    if (round == ArcRound::Band || avoiding) {
       graph_sources.resize(sources.size());
       for (std::size_t s = 0; s < sources.size(); ++s)
         graph_sources[s] = piece.ids[sources[s]];
@@ -171,8 +207,9 @@ ArcComponents piece_components(const PieceArcGraph &piece, std::span<const ArcEn
         continue;
     } else {
       // Below (above) the values: the kept join (split) tree joins two kept nodes where their
-      // climbs up (down) it within the values meet; the shared edges' chains join the rest.
-      const bool below = round == ArcRound::Below;
+      // climbs up (down) it within the values meet (anywhere: their roots); the shared edges'
+      // chains and the links of a cut point's copies join the rest.
+      const bool below = round != ArcRound::Above;
       const std::vector<int64_t> &parent = below ? piece.join_parent : piece.split_parent;
       auto within = [&](int64_t x) { return piece.values[x] >= lo && piece.values[x] <= hi; };
       sets.reset();
@@ -415,7 +452,8 @@ std::vector<std::vector<Stretch>> route_arcs(std::span<const std::vector<std::by
 }
 
 std::vector<std::byte> draw_stretches(const PieceArcGraph &piece, std::span<const ArcEnds> arcs,
-                                      std::span<const Stretch> stretches, ArcRound round) {
+                                      std::span<const Stretch> stretches, ArcRound round,
+                                      ArcTrail *trail) {
   std::vector<int64_t> arc, step, offset{0};
   std::vector<Vec3> points;
   GeometricGraph::Search s;
@@ -428,9 +466,11 @@ std::vector<std::byte> draw_stretches(const PieceArcGraph &piece, std::span<cons
     const int64_t x = piece.ids[a], y = piece.ids[b];
     const auto [lo, hi] = round_values(arcs[st.arc], round);
     // Within the round's values: a search (the piece's components joined the two there), below
-    // or above first within a short search, then the forest's path that stays there.
+    // or above first within a short search, then the forest's path that stays there (not
+    // while avoiding nodes: the forests know nothing of them).
+    const bool avoiding = avoid_lower_levels(arcs, st.arc, trail, g.size(), s);
     std::vector<Vec3> p;
-    if (round == ArcRound::Band) {
+    if (round == ArcRound::Band || round == ArcRound::Anywhere || avoiding) {
       p = g.band_path(x, y, lo, hi, std::numeric_limits<int64_t>::max(), s);
     } else {
       p = g.band_path(x, y, lo, hi, 1024, s);
@@ -440,6 +480,10 @@ std::vector<std::byte> draw_stretches(const PieceArcGraph &piece, std::span<cons
     }
     if (s.nodes.empty()) // not expected: the components said the piece joins them there
       p = g.band_path(x, y, -inf, inf, std::numeric_limits<int64_t>::max(), s);
+    if (trail && arcs[st.arc].group >= 0) {
+      std::vector<int64_t> &used = (*trail)[st.arc];
+      used.insert(used.end(), s.nodes.begin(), s.nodes.end());
+    }
     arc.push_back(st.arc);
     step.push_back(st.step);
     points.insert(points.end(), p.begin(), p.end());

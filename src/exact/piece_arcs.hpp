@@ -5,7 +5,8 @@
 //
 // Each arc is drawn, as one process draws it, through graph nodes within its values if any
 // path there joins its ends; else below its upper end's value (the join tree joins its ends
-// there); else above its lower end's. In each round:
+// there); else above its lower end's; else anywhere. Parallel arcs avoid their lower levels'
+// paths (ArcEnds). The rounds are run over all pieces by exact/piece_arc_rounds. In each round:
 //  1. a piece that holds both ends searches there (draw_local_arcs; below, a short search, as
 //     one process's first pass does);
 //  2. for each arc no piece drew, each piece finds the components of its graph within the
@@ -30,6 +31,7 @@
 #include <cstdint>
 #include <memory>
 #include <span>
+#include <unordered_map>
 #include <vector>
 
 namespace hoct {
@@ -60,26 +62,36 @@ struct PieceArcGraph {
   void index_keys();
 };
 
-// An arc of the whole tree: its lower and upper end and their values (relative).
+// An arc of the whole tree: its lower and upper end and their values (relative). Parallel arcs
+// (a Reeb graph's loops) have a group (else -1) and a level in it: each is drawn avoiding the
+// graph nodes of its group's lower levels' paths, as one process draws them.
 struct ArcEnds {
   NodeKey lo_key, hi_key;
   double lo = 0, hi = 0;
+  int32_t group = -1, level = 0;
 };
 
-// The rounds after the local one, in order.
-enum class ArcRound : int32_t { Band = 0, Below = 1, Above = 2 };
-constexpr int kArcRounds = 3;
+// The rounds, in order: within the arc's values, below the upper one, above the lower one,
+// anywhere.
+enum class ArcRound : int32_t { Band = 0, Below = 1, Above = 2, Anywhere = 3 };
+constexpr int kArcRounds = 4;
+
+// The graph nodes of a piece that its parallel arcs' paths went through, by arc: what the
+// higher levels of their groups avoid.
+using ArcTrail = std::unordered_map<int64_t, std::vector<int64_t>>;
 
 // The values a round's paths stay within.
 std::array<double, 2> round_values(const ArcEnds &arc, ArcRound round);
 
 // 1. Of arcs `which`, those whose ends this piece both holds and joins by a search within the
-// round's values visiting at most max_visits nodes: paths[k] (for which[k]) non-empty where
-// drawn.
+// round's values visiting at most max_visits nodes (avoiding the lower levels' nodes in
+// `trail`): paths[k] (for which[k]) non-empty where drawn, and (`nodes`) their graph nodes.
 std::vector<std::vector<Vec3>> draw_local_arcs(const PieceArcGraph &piece,
                                                std::span<const ArcEnds> arcs,
                                                std::span<const int64_t> which, ArcRound round,
-                                               int64_t max_visits, int threads);
+                                               int64_t max_visits, int threads,
+                                               const ArcTrail *trail = nullptr,
+                                               std::vector<std::vector<int64_t>> *nodes = nullptr);
 
 // 0. Once: the keys of the piece's shared nodes each other piece may hold, as bytes (by piece),
 // and from what every piece offered this one (by piece), PieceArcGraph::common.
@@ -96,8 +108,10 @@ struct ArcComponents {
   std::vector<int32_t> count;                                  // per arc: its components
   std::vector<std::array<int32_t, 2>> ends;                    // per arc: the ends' (-1: none)
 };
+// An arc with nodes to avoid is searched in every round (the kept trees know nothing of them).
 ArcComponents piece_components(const PieceArcGraph &piece, std::span<const ArcEnds> arcs,
                                std::span<const int64_t> which, ArcRound round,
+                               const ArcTrail *trail = nullptr,
                                int64_t max_visits = GeometricGraph::kMaxVisits);
 // 2b. The components of the nodes the piece holds with each other piece (within each arc's
 // values, in key order), as bytes for that piece (by piece).
@@ -125,9 +139,11 @@ std::vector<std::vector<Stretch>> route_arcs(std::span<const std::vector<std::by
                                              std::span<const ArcEnds> arcs,
                                              std::vector<uint8_t> &routed);
 
-// 4. The piece's stretches drawn within the round's values, as bytes for join_stretches.
+// 4. The piece's stretches drawn within the round's values (avoiding their lower levels' nodes
+// in `trail`, where the parallel arcs' nodes are added), as bytes for join_stretches.
 std::vector<std::byte> draw_stretches(const PieceArcGraph &piece, std::span<const ArcEnds> arcs,
-                                      std::span<const Stretch> stretches, ArcRound round);
+                                      std::span<const Stretch> stretches, ArcRound round,
+                                      ArcTrail *trail = nullptr);
 
 // The stretches of all pieces (their draw_stretches bytes) joined into paths[arc] (the arcs
 // routed this round; each path was empty).

@@ -1,7 +1,9 @@
 #include "exact/reeb_pieces.hpp"
 
+#include "exact/exact_arc_graph.hpp"
 #include "exact/exact_graph_build.hpp"
 #include "exact/graph_sweeps.hpp"
+#include "exact/piece_arcs.hpp"
 #include "exact/piece_keys.hpp"
 #include "exact/seam_gluing.hpp"
 #include "mesh/cut_surface.hpp"
@@ -16,9 +18,9 @@
 namespace hoct {
 
 PieceTrees reeb_piece(const Mesh &mesh, const PiecePlace &place, const ExactTreeOptions &options,
-                      TreeTimings &time) {
+                      TreeTimings &time, PieceArcGraph *arcs) {
   ExactTreeOptions eo = options;
-  eo.arc_geometry = false;
+  eo.arc_geometry = arcs != nullptr; // (the sweeps then take the chains' listed pieces)
   eo.cut = nullptr;
   Stopwatch clock;
   // The piece cut into disks: along its own cut graph, and apart at the points it shares with
@@ -33,8 +35,8 @@ PieceTrees reeb_piece(const Mesh &mesh, const PiecePlace &place, const ExactTree
   time.cut = clock.lap();
 
   const Mesh &m = cut.mesh;
-  const ExactGraphBuild b = build_exact_graph(m, eo, time);
-  const ExactGraph &g = b.graph;
+  ExactGraphBuild b = build_exact_graph(m, eo, time);
+  ExactGraph &g = b.graph;
   const PieceKeys keys(m, place, b, lattice_steps(m, eo), &topo, cut.vertex_origin);
   const int64_t n = g.size();
   const int threads = threads_for(n, thread_count(eo.threads), 8 * eo.cells_per_thread);
@@ -88,6 +90,35 @@ PieceTrees reeb_piece(const Mesh &mesh, const PiecePlace &place, const ExactTree
   out.counts = exact_counts(m, b);
   count_copies_once(cut, en, out.counts);
   split_cell_time(b.totals, time);
+  if (arcs) {
+    PieceArcGraph &a = *arcs;
+    const std::size_t n_kept = out.nodes.size();
+    a.piece = place.piece;
+    a.ids = kt.nodes;
+    a.keys.resize(n_kept);
+    a.values.resize(n_kept);
+    a.spans.resize(n_kept);
+    a.shared.resize(n_kept);
+    for (std::size_t i = 0; i < n_kept; ++i) {
+      a.keys[i] = out.nodes[i].key;
+      a.values[i] = out.nodes[i].value;
+      a.spans[i] = keys.span(kt.nodes[i]);
+      a.shared[i] = !within(a.spans[i], place.piece, place.piece);
+    }
+    a.join_parent = kt.join_parent;
+    a.split_parent = kt.split_parent;
+    // The copies of one point (one key, next to each other) are one point of the surface: a
+    // link in the graph, and joined in the components.
+    std::vector<std::array<int64_t, 2>> links;
+    a.chain_links.clear();
+    for (std::size_t i = 1; i < n_kept; ++i)
+      if (a.keys[i] == a.keys[i - 1]) {
+        a.chain_links.push_back({static_cast<int64_t>(i - 1), static_cast<int64_t>(i)});
+        links.push_back({kt.nodes[i - 1], kt.nodes[i]});
+      }
+    a.index_keys();
+    a.graph = exact_arc_graph(m, b.edge_nodes, g, eo, threads, links);
+  }
   return out;
 }
 

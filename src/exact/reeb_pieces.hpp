@@ -25,7 +25,9 @@ namespace hoct {
 // the edges it shares with other pieces (PieceTrees::chains: each edge's ends and edge nodes,
 // one chain per copy; a point's copies are kept nodes with one key). Counts count each of the
 // piece's own copies once.
+// With `arcs`, also the piece's graph with geometry there (its cut's copies of a point linked),
+// to draw the whole graph's arcs (exact/piece_arcs).
 PieceTrees reeb_piece(const Mesh &piece, const PiecePlace &place, const ExactTreeOptions &options,
-                      TreeTimings &time);
+                      TreeTimings &time, PieceArcGraph *arcs = nullptr);
 
 } // namespace hoct

@@ -5,7 +5,8 @@ The independent truth is hoct's own single-process Reeb graph, computed without 
 (`hoct tree FILE --json OUT --no-timings`, itself checked against VTK's level sets by
 test_reeb_graphs): for 1, 2, 3, 4 and 7 ranks on hoct's plate (2, 3 and 7 with --augmented and
 --simplify), 2 and 7 on the other shapes, 2 and 3 on the cell orders below (--oversubscribe:
-this machine has 2 cores), the run exits 0 and its JSON is byte-identical. The cases: hoct's
+this machine has 2 cores), the run exits 0 and its JSON is byte-identical (with --vtp on the
+plate too, the pieces drawing the arcs: no jump, none straight). The cases: hoct's
 plate with 100 holes (degrees 2, 3 and 5, --augmented, --simplify 1%), and the surfaces of test_reeb_graphs (reeb_meshes: Lagrange
 triangles of degrees 1-3 at exact parametric positions, or Gmsh's): annuli (one of 6 cells: ranks
 without cells), tori, Moebius strips, a square and a disk with 3 holes, a double torus, mostly
@@ -45,7 +46,7 @@ import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from hoct_testing import Results, run, tempdir  # noqa: E402
-from mpi_testing import mpi, read, require_mpi_hoct  # noqa: E402
+from mpi_testing import arcs_drawn_by_pieces, mpi, read, require_mpi_hoct  # noqa: E402
 
 try:
     import numpy as np
@@ -421,6 +422,16 @@ with tempdir() as d:
         path = os.path.join(d, f"plate{degree}.vtu")
         run("generate", "plate", "--cells", str(cells), "--degree", str(degree), "-o", path)
         whole_case(f"plate {cells} cells, degree {degree}", path, 100, ranks=RANKS)
+    # --vtp: the pieces draw the graph's arcs, each loop's two arcs around its hole apart (the
+    # JSON one process's; every arc a polyline over the surface without a jump).
+    plain_vtp, plain_json = os.path.join(d, "plate.vtp"), os.path.join(d, "plate_vtp.json")
+    run("tree", plate, "--vtp", plain_vtp, "--json", plain_json, "--no-timings", "-q")
+    for n in (2, 3, 7):
+        got_vtp, got_json = os.path.join(d, f"plate{n}.vtp"), os.path.join(d, f"plate{n}.json")
+        p = mpi(n, "tree", plate, "--vtp", got_vtp, "--json", got_json, "--no-timings")
+        r.check(os.path.exists(got_json) and read(got_json) == read(plain_json),
+                f"plate --vtp, {n} ranks: the JSON")
+        arcs_drawn_by_pieces(r, f"plate --vtp, {n} ranks", p, got_vtp, plain_vtp)
 
     # (label, mesh, field, loops (None: at most max_loops), max_loops, components, VTK type,
     # extra flags)

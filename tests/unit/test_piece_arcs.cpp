@@ -5,9 +5,12 @@
 // (the pieces' graphs, joined at the nodes they share, are the whole's).
 #include "datasets/datasets.hpp"
 #include "exact/exact_contour_tree.hpp"
-#include "exact/piece_arcs.hpp"
+#include "exact/piece_arc_rounds.hpp"
 #include "exact/piece_trees.hpp"
 #include "exact/pl_piece_trees.hpp"
+#include "exact/reeb_group.hpp"
+#include "exact/reeb_pieces.hpp"
+#include "mesh/cut_surface.hpp"
 #include "mesh/mesh.hpp"
 #include "pl/pl_contour_tree.hpp"
 #include "pl/refinement.hpp"
@@ -23,90 +26,14 @@
 namespace hoct {
 namespace {
 
-// How each arc was drawn: the round (kArcRounds: straight), and whether across pieces.
-constexpr int kStraight = kArcRounds;
-
-// The pieces' steps run one piece after the other, as the ranks run them at once
-// (distributed/distributed_arc_paths).
-// What each piece sends each piece (out[from][to]), as each receives it (by sender).
-std::vector<std::vector<std::vector<std::byte>>>
-delivered(const std::vector<std::vector<std::vector<std::byte>>> &out) {
-  std::vector<std::vector<std::vector<std::byte>>> in(out.size());
-  for (std::size_t to = 0; to < out.size(); ++to)
-    for (std::size_t from = 0; from < out.size(); ++from)
-      in[to].push_back(out[from].size() > to ? out[from][to] : std::vector<std::byte>{});
-  return in;
-}
-
-std::vector<std::vector<Vec3>> draw_by_pieces(std::vector<PieceArcGraph> &pieces,
-                                              const std::vector<ArcEnds> &arcs,
-                                              std::vector<int> &how, std::vector<uint8_t> &across) {
-  const std::size_t n = arcs.size();
-  const int count = static_cast<int>(pieces.size());
-  std::vector<std::vector<std::vector<std::byte>>> offers;
-  for (const PieceArcGraph &p : pieces)
-    offers.push_back(border_offers(p, count));
-  const auto offered = delivered(offers);
-  for (std::size_t p = 0; p < pieces.size(); ++p)
-    meet_neighbours(pieces[p], offered[p]);
-  std::vector<std::vector<Vec3>> paths(n);
-  how.assign(n, kStraight);
-  across.assign(n, 0);
-  for (int round = 0; round < kArcRounds; ++round) {
-    const auto r = static_cast<ArcRound>(round);
-    auto undrawn = [&] {
-      std::vector<int64_t> which;
-      for (std::size_t i = 0; i < n; ++i)
-        if (paths[i].empty())
-          which.push_back(static_cast<int64_t>(i));
-      return which;
-    };
-    std::vector<int64_t> which = undrawn();
-    if (r != ArcRound::Above)
-      for (const PieceArcGraph &p : pieces) {
-        const int64_t visits = r == ArcRound::Band ? GeometricGraph::kMaxVisits : 1024;
-        std::vector<std::vector<Vec3>> local = draw_local_arcs(p, arcs, which, r, visits, 1);
-        for (std::size_t k = 0; k < which.size(); ++k)
-          if (paths[which[k]].empty() && !local[k].empty()) {
-            paths[which[k]] = std::move(local[k]);
-            how[which[k]] = round;
-          }
-      }
-    which = undrawn();
-    if (which.empty())
-      break;
-    std::vector<ArcComponents> components;
-    std::vector<std::vector<std::vector<std::byte>>> labels;
-    for (const PieceArcGraph &p : pieces) {
-      components.push_back(piece_components(p, arcs, which, r));
-      labels.push_back(neighbour_labels(p, components.back(), arcs, which, r));
-    }
-    const auto received = delivered(labels);
-    std::vector<std::vector<std::byte>> reports;
-    for (std::size_t p = 0; p < pieces.size(); ++p)
-      reports.push_back(component_report(pieces[p], components[p], arcs, which, r, received[p]));
-    std::vector<uint8_t> routed;
-    const std::vector<std::vector<Stretch>> stretches = route_arcs(reports, which, arcs, routed);
-    std::vector<std::vector<std::byte>> drawn;
-    for (std::size_t p = 0; p < pieces.size(); ++p)
-      drawn.push_back(
-          draw_stretches(pieces[p], arcs, decode_stretches(encode_stretches(stretches[p])), r));
-    join_stretches(drawn, paths);
-    for (std::size_t k = 0; k < which.size(); ++k)
-      if (routed[k]) {
-        how[which[k]] = round;
-        across[which[k]] = 1;
-      }
-  }
-  return paths;
-}
-
 double distance(const Vec3 &a, const Vec3 &b) {
   return std::hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]);
 }
 
-// By the exact method, or (refine > 0) the refine method's PL mesh of K = refine.
-void check_arcs(const MeshInput &whole, const std::string &name, int refine = 0) {
+// By the exact method, or (refine > 0) the refine method's PL mesh of K = refine, or (reeb) the
+// exact Reeb graph of a surface cut open (the pieces' groups glued: exact/reeb_group).
+void check_arcs(const MeshInput &whole, const std::string &name, int refine = 0,
+                bool reeb = false) {
   MeshScales scales;
   MeshBuildOptions bo;
   bo.throw_on_error = false;
@@ -115,9 +42,14 @@ void check_arcs(const MeshInput &whole, const std::string &name, int refine = 0)
   ExactTreeOptions eo;
   eo.threads = 1;
   eo.arc_geometry = true;
+  std::optional<CutSurface> cut;
+  if (reeb) {
+    cut = cut_open(mesh, cut_graph_edges(mesh.topology));
+    eo.cut = &*cut;
+  }
   TreeResult expected = refine > 0
                             ? pl_contour_tree(hoct::refine(mesh, refine), false, "refine", true, 1)
-                            : exact_contour_tree(mesh, eo);
+                            : exact_contour_tree(reeb ? cut->mesh : mesh, eo);
   for (TreeNode &n : expected.nodes) // the input's cells, as the pieces report them
     if (!mesh.origins.identity()) {
       const CellPlace p = mesh.origins.to_input(n.cell, n.uv);
@@ -143,23 +75,36 @@ void check_arcs(const MeshInput &whole, const std::string &name, int refine = 0)
         [&](const Mesh &m, const PiecePlace &p, const ExactTreeOptions &o, TreeTimings &time) {
           graphs.emplace_back();
           return refine > 0 ? refined_piece_trees(m, p, refine, false, 1, &graphs.back()).trees
+                 : reeb     ? reeb_piece(m, p, o, time, &graphs.back())
                             : piece_trees(m, p, o, time, &graphs.back());
         });
+    std::vector<ReebGroup> glued;
+    for (const PieceTrees &p : groups)
+      glued.push_back(reeb ? reeb_group(p, false) : ReebGroup{});
     for (int s = 1; s < pieces; s *= 2)
       for (int r = 0; r + s < pieces; r += 2 * s)
-        groups[r] = merge_piece_trees(groups[r], groups[r + s], false);
-    const TreeResult tree = tree_of_pieces(groups[0], false, reference);
+        if (reeb)
+          glued[r] = merge_reeb_groups(glued[r], glued[r + s], false);
+        else
+          groups[r] = merge_piece_trees(groups[r], groups[r + s], false);
+    const TreeResult tree = reeb ? reeb_graph_of_group(glued[0], false, reference)
+                                 : tree_of_pieces(groups[0], false, reference);
     // With the graph's geometry the pieces' trees are still the whole's.
     testing::expect_same_graph(tree, expected, what);
-    std::vector<ArcEnds> arcs;
-    for (const auto &[lo, hi] : tree.arcs) {
-      const PieceNode &x = groups[0].nodes[tree.nodes[lo].graph_node],
-                      &y = groups[0].nodes[tree.nodes[hi].graph_node];
-      arcs.push_back({x.key, y.key, x.value, y.value});
+    int32_t parallel_groups = 0;
+    const std::vector<ArcEnds> arcs = tree_arc_ends(
+        tree, reeb ? std::span<const PieceNode>(glued[0].nodes) : groups[0].nodes, parallel_groups);
+    if (reeb) {
+      EXPECT_GT(parallel_groups, 0) << what; // loops: parallel arcs
     }
-    std::vector<int> how;
-    std::vector<uint8_t> across;
-    const std::vector<std::vector<Vec3>> paths = draw_by_pieces(graphs, arcs, how, across);
+    std::vector<PieceArcGraph *> local;
+    for (PieceArcGraph &p : graphs)
+      local.push_back(&p);
+    InProcessLinks links(pieces);
+    ArcPathCounts counts;
+    std::vector<ArcDrawn> how;
+    const std::vector<std::vector<Vec3>> paths =
+        draw_arcs_by_pieces(local, arcs, links, 1, &counts, &how);
     int64_t crossing = 0;
     GeometricGraph::Search s;
     for (std::size_t i = 0; i < arcs.size(); ++i) {
@@ -170,13 +115,17 @@ void check_arcs(const MeshInput &whole, const std::string &name, int refine = 0)
       const bool band = !s.nodes.empty();
       // (Not on a plateau's arcs of zero length: a piece without the fallback cell beyond its
       // edge joins the edge's ends directly, where the whole mesh's graph passes through the
-      // cell's lattice nodes, whose values may round apart. finish_tree contracts those arcs.)
-      if (arcs[i].lo < arcs[i].hi) {
-        EXPECT_EQ(how[i] == static_cast<int>(ArcRound::Band), band)
-            << arc << " drawn by " << how[i];
+      // cell's lattice nodes, whose values may round apart. finish_tree contracts those arcs.
+      // Nor a higher level of parallel arcs: it avoids its lower levels' paths.)
+      if (arcs[i].lo < arcs[i].hi && arcs[i].level == 0) {
+        EXPECT_EQ(how[i].round == static_cast<int>(ArcRound::Band), band)
+            << arc << " drawn in round " << how[i].round;
       }
-      EXPECT_NE(how[i], kStraight) << arc; // the join tree joins the ends below the upper one
-      crossing += across[i] && how[i] == static_cast<int>(ArcRound::Band);
+      if (arcs[i].level == 0) // the join tree joins the ends below the upper one
+        EXPECT_LE(how[i].round, static_cast<int>(ArcRound::Below)) << arc;
+      else
+        EXPECT_LT(how[i].round, kArcRounds) << arc;
+      crossing += how[i].across && how[i].round == static_cast<int>(ArcRound::Band);
       const std::vector<Vec3> &p = paths[i];
       ASSERT_GE(p.size(), 2u) << arc;
       const double tolerance = 1e-9 * (1 + step);
@@ -185,6 +134,18 @@ void check_arcs(const MeshInput &whole, const std::string &name, int refine = 0)
       for (std::size_t k = 1; k < p.size(); ++k)
         ASSERT_LE(distance(p[k - 1], p[k]), step * (1 + 1e-9)) << arc << " point " << k;
     }
+    // Parallel arcs go around their hole on different sides: no point inside one is inside a
+    // lower level's.
+    for (std::size_t i = 0; i < arcs.size(); ++i)
+      for (std::size_t j = 0; j < arcs.size(); ++j) {
+        if (arcs[i].group < 0 || arcs[j].group != arcs[i].group || arcs[j].level >= arcs[i].level)
+          continue;
+        const std::vector<Vec3> &p = paths[i], &q = paths[j];
+        for (std::size_t a = 1; a + 1 < p.size(); ++a)
+          for (std::size_t b = 1; b + 1 < q.size(); ++b)
+            ASSERT_GT(distance(p[a], q[b]), 1e-12 * step)
+                << what << ": parallel arcs " << j << " and " << i << " meet inside";
+      }
     // Arcs drawn within their values across pieces (one piece draws them all itself).
     if (pieces == 1)
       EXPECT_EQ(crossing, 0) << what;
@@ -211,6 +172,12 @@ TEST(PieceArcs, ThePlMethodsArcsToo) {
   o.cells = 1500;
   o.plateau = 30;
   check_arcs(generate_dataset("random", o), "random with a plateau refined K = 1", 1);
+}
+
+TEST(PieceArcs, AReebGraphsParallelArcsGoAroundTheirHoles) {
+  DatasetOptions o;
+  o.cells = 3000;
+  check_arcs(generate_dataset("plate", o), "plate", 0, true);
 }
 
 TEST(PieceArcs, NoisyFieldsPlateausAndCurvedCells) {
