@@ -406,11 +406,10 @@ DistributedOutcome distributed_tree_on(RankInput in, const MeshInput *whole, con
   MPI_Allreduce(MPI_IN_PLACE, &source, 1, MPI_INT, MPI_MIN, comm);
   double field_scale[2] = {mesh.field.reference(), mesh.field.precision()};
   MPI_Bcast(field_scale, 2, MPI_DOUBLE, source, comm);
-  // What the pieces do not compute, rank 0 computes from the whole mesh: the arcs' paths on the
-  // surface of a Reeb graph (the pieces draw a contour tree's),
-  // the linear method's Bezier or serendipity cells (whose PL mesh has points of its own) and
-  // the refine method's mesh the pieces did not check (its PL vertices are counted with the
-  // whole's Euler characteristic from their check).
+  // What the pieces do not compute, rank 0 computes from the whole mesh: the linear method's
+  // Bezier or serendipity cells (whose PL mesh has points of its own) and the refine method's
+  // mesh the pieces did not check (its PL vertices are counted with the whole's Euler
+  // characteristic from their check).
   // Rank 0's tree of the whole mesh, as one process computes it (the mesh checked already, or
   // forced past).
   auto tree_of_whole = [&](const MeshInput &all) {
@@ -420,13 +419,10 @@ DistributedOutcome distributed_tree_on(RankInput in, const MeshInput *whole, con
     return compute_tree(build_mesh(all, bo), rq, &all);
   };
   std::string whole_reason;
-  // A contour tree's arcs are drawn by the pieces (distributed_arc_paths; the PL methods' too);
-  // an augmented tree's are straight, as one process draws them.
-  const bool arcs_drawn = rq.arcs != ArcGeometry::None && !rq.augmented;
-  const bool pieces_draw = arcs_drawn && !(reeb && (linear || refined));
-  if (arcs_drawn && !pieces_draw) {
-    whole_reason = "the arcs' paths of a PL Reeb graph search the whole graph";
-  } else if (linear || refined) {
+  // The arcs are drawn by the pieces (distributed_arc_paths); an augmented tree's are straight,
+  // as one process draws them.
+  const bool pieces_draw = rq.arcs != ArcGeometry::None && !rq.augmented;
+  if (linear || refined) {
     int other_cells = linear && !empty_piece && !nodal_lagrange_cells(piece.input) ? 1 : 0;
     MPI_Allreduce(MPI_IN_PLACE, &other_cells, 1, MPI_INT, MPI_MAX, comm);
     const std::string method = linear ? "the linear method's" : "the refine method's";
@@ -471,7 +467,7 @@ DistributedOutcome distributed_tree_on(RankInput in, const MeshInput *whole, con
       pl.triangles = static_cast<int64_t>(m.pl.triangles.size());
       pl.own_points = m.own_points;
       pl.cell_points = m.cell_points;
-      group = pl_reeb_group(m, place, rq.augmented, threads);
+      group = pl_reeb_group(m, place, rq.augmented, threads, pieces_draw ? &arc_graph : nullptr);
     } else if (linear || refined) {
       PieceArcGraph *arcs = pieces_draw ? &arc_graph : nullptr;
       pl = linear ? pl_piece_trees(piece.input, place, rq.augmented, threads, arcs)

@@ -12,9 +12,11 @@
 
 namespace hoct {
 
-// The piece's group (`augmented`: every vertex kept).
+// The piece's group (`augmented`: every vertex kept). With `arcs`, the piece's PL graph there
+// (its uncut 1-skeleton; the kept copies of one point joined), to draw the whole graph's arcs
+// (exact/piece_arcs).
 ReebGroup pl_reeb_group(const PlPieceMesh &mesh, const PiecePlace &place, bool augmented,
-                        int threads = 1);
+                        int threads = 1, PieceArcGraph *arcs = nullptr);
 
 // The PL Reeb graph of the whole from the group of all its pieces (`method`: "linear" or
 // "refine k=K"), with the whole's PL mesh's counts; `reference` is added back to the values.

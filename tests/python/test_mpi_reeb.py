@@ -6,7 +6,7 @@ The independent truth is hoct's own single-process Reeb graph, computed without 
 test_reeb_graphs): for 1, 2, 3, 4 and 7 ranks on hoct's plate (2, 3 and 7 with --augmented and
 --simplify), 2 and 7 on the other shapes, 2 and 3 on the cell orders below (--oversubscribe:
 this machine has 2 cores), the run exits 0 and its JSON is byte-identical (with --vtp on the
-plate too, the pieces drawing the arcs: no jump, none straight). The cases: hoct's
+plate too, exact and --linear, the pieces drawing the arcs: no jump, none straight). The cases: hoct's
 plate with 100 holes (degrees 2, 3 and 5, --augmented, --simplify 1%), and the surfaces of test_reeb_graphs (reeb_meshes: Lagrange
 triangles of degrees 1-3 at exact parametric positions, or Gmsh's): annuli (one of 6 cells: ranks
 without cells), tori, Moebius strips, a square and a disk with 3 holes, a double torus, mostly
@@ -424,14 +424,15 @@ with tempdir() as d:
         whole_case(f"plate {cells} cells, degree {degree}", path, 100, ranks=RANKS)
     # --vtp: the pieces draw the graph's arcs, each loop's two arcs around its hole apart (the
     # JSON one process's; every arc a polyline over the surface without a jump).
-    plain_vtp, plain_json = os.path.join(d, "plate.vtp"), os.path.join(d, "plate_vtp.json")
-    run("tree", plate, "--vtp", plain_vtp, "--json", plain_json, "--no-timings", "-q")
-    for n in (2, 3, 7):
-        got_vtp, got_json = os.path.join(d, f"plate{n}.vtp"), os.path.join(d, f"plate{n}.json")
-        p = mpi(n, "tree", plate, "--vtp", got_vtp, "--json", got_json, "--no-timings")
-        r.check(os.path.exists(got_json) and read(got_json) == read(plain_json),
-                f"plate --vtp, {n} ranks: the JSON")
-        arcs_drawn_by_pieces(r, f"plate --vtp, {n} ranks", p, got_vtp, plain_vtp)
+    for flags, ranks in (([], (2, 3, 7)), (["--linear"], (2, 7))):
+        plain_vtp, plain_json = os.path.join(d, "plate.vtp"), os.path.join(d, "plate_vtp.json")
+        run("tree", plate, *flags, "--vtp", plain_vtp, "--json", plain_json, "--no-timings", "-q")
+        for n in ranks:
+            got_vtp, got_json = os.path.join(d, f"plate{n}.vtp"), os.path.join(d, f"plate{n}.json")
+            p = mpi(n, "tree", plate, *flags, "--vtp", got_vtp, "--json", got_json, "--no-timings")
+            label = f"plate --vtp {' '.join(flags)}, {n} ranks"
+            r.check(os.path.exists(got_json) and read(got_json) == read(plain_json), f"{label}: the JSON")
+            arcs_drawn_by_pieces(r, label, p, got_vtp, plain_vtp)
 
     # (label, mesh, field, loops (None: at most max_loops), max_loops, components, VTK type,
     # extra flags)

@@ -8,6 +8,7 @@
 #include "exact/piece_arc_rounds.hpp"
 #include "exact/piece_trees.hpp"
 #include "exact/pl_piece_trees.hpp"
+#include "exact/pl_reeb_pieces.hpp"
 #include "exact/reeb_group.hpp"
 #include "exact/reeb_pieces.hpp"
 #include "mesh/cut_surface.hpp"
@@ -47,9 +48,9 @@ void check_arcs(const MeshInput &whole, const std::string &name, int refine = 0,
     cut = cut_open(mesh, cut_graph_edges(mesh.topology));
     eo.cut = &*cut;
   }
-  TreeResult expected = refine > 0
-                            ? pl_contour_tree(hoct::refine(mesh, refine), false, "refine", true, 1)
-                            : exact_contour_tree(reeb ? cut->mesh : mesh, eo);
+  TreeResult expected =
+      refine > 0 ? pl_contour_tree(hoct::refine(mesh, refine), false, "refine", true, 1, reeb)
+                 : exact_contour_tree(reeb ? cut->mesh : mesh, eo);
   for (TreeNode &n : expected.nodes) // the input's cells, as the pieces report them
     if (!mesh.origins.identity()) {
       const CellPlace p = mesh.origins.to_input(n.cell, n.uv);
@@ -69,18 +70,26 @@ void check_arcs(const MeshInput &whole, const std::string &name, int refine = 0,
   for (const int pieces : {1, 2, 3, 4, 7}) {
     const std::string what = name + ", " + std::to_string(pieces) + " pieces";
     std::vector<PieceArcGraph> graphs;
+    std::vector<ReebGroup> pl_glued;
     double reference = 0;
     std::vector<PieceTrees> groups = testing::pieces_of(
         whole, pieces, scales, false, reference,
         [&](const Mesh &m, const PiecePlace &p, const ExactTreeOptions &o, TreeTimings &time) {
           graphs.emplace_back();
+          if (refine > 0 && reeb) { // the PL mesh cut into disks: its group
+            pl_glued.push_back(
+                pl_reeb_group(refined_piece_mesh(m, p, refine), p, false, 1, &graphs.back()));
+            return PieceTrees{};
+          }
           return refine > 0 ? refined_piece_trees(m, p, refine, false, 1, &graphs.back()).trees
                  : reeb     ? reeb_piece(m, p, o, time, &graphs.back())
                             : piece_trees(m, p, o, time, &graphs.back());
         });
     std::vector<ReebGroup> glued;
-    for (const PieceTrees &p : groups)
-      glued.push_back(reeb ? reeb_group(p, false) : ReebGroup{});
+    for (std::size_t p = 0; p < groups.size(); ++p)
+      glued.push_back(!reeb        ? ReebGroup{}
+                      : refine > 0 ? pl_glued[p]
+                                   : reeb_group(groups[p], false));
     for (int s = 1; s < pieces; s *= 2)
       for (int r = 0; r + s < pieces; r += 2 * s)
         if (reeb)
@@ -178,6 +187,8 @@ TEST(PieceArcs, AReebGraphsParallelArcsGoAroundTheirHoles) {
   DatasetOptions o;
   o.cells = 3000;
   check_arcs(generate_dataset("plate", o), "plate", 0, true);
+  o.cells = 1500;
+  check_arcs(generate_dataset("plate", o), "plate refined K = 2", 2, true);
 }
 
 TEST(PieceArcs, NoisyFieldsPlateausAndCurvedCells) {

@@ -294,8 +294,7 @@ int vtkHoctContourTree::RequestDistributed(vtkInformationVector **inputVector,
     }
     const int threads = hoct::thread_count(this->Threads);
     // The properties as a request, as `mpirun hoct tree` makes it; the arcs drawn straight
-    // unless asked for (the pieces draw them: distributed_arc_paths; a PL method's Reeb graph's
-    // need the whole on rank 0).
+    // unless asked for (the pieces draw them: distributed_arc_paths).
     hoct::TreeRequest rq = this->MakeRequest();
     rq.arcs = this->ArcPathsOverProcesses ? hoct::ArcGeometry::AllPaths : hoct::ArcGeometry::None;
     // Each process keeps its own piece, joined with the others' as `mpirun hoct tree` joins a

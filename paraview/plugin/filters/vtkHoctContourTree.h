@@ -58,8 +58,8 @@ public:
   vtkBooleanMacro(Force, bool);
 
   // On several processes with cells: draw the arcs on the surface, as on one process (as
-  // `mpirun hoct tree --vtp` does): the pieces draw the arcs together; for a PL method's Reeb
-  // graph, process 0 joins the whole mesh. Off (the default): straight arcs.
+  // `mpirun hoct tree --vtp` does): the pieces draw the arcs together, no process holding the
+  // whole mesh. Off (the default): straight arcs.
   vtkSetMacro(ArcPathsOverProcesses, bool);
   vtkGetMacro(ArcPathsOverProcesses, bool);
   vtkBooleanMacro(ArcPathsOverProcesses, bool);
