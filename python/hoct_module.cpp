@@ -300,7 +300,8 @@ PYBIND11_MODULE(_hoct, m) {
           py::arg("threshold"), py::arg("loops") = false)
       .def("arc_paths",
            [](PyTree &t) {
-             compute_arc_paths(t.tree, 0); // every hardware thread: the same paths
+             if (t.tree.graph || t.tree.arc_paths.empty()) // (drawn already by MPI ranks)
+               compute_arc_paths(t.tree, 0);               // every hardware thread: the same paths
              std::vector<std::vector<std::array<double, 3>>> out;
              for (const auto &p : t.tree.arc_paths)
                out.emplace_back(p.begin(), p.end());

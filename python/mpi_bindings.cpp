@@ -82,9 +82,10 @@ template <class F> auto collective(MPI_Comm comm, F &&f) {
 }
 
 // The tree over `comm` for contour_tree's request, by `compute` (a distributed_tree
-// call, the GIL released): the Tree on rank 0, None on the others.
-template <class F> py::object tree_over(MPI_Comm comm, TreeRequest rq, F compute) {
-  rq.arcs = ArcGeometry::None; // the arcs' paths need the whole graph on one rank
+// call, the GIL released): the Tree on rank 0, None on the others. With `arc_paths`, the ranks'
+// pieces draw the reported tree's arcs on the surface (no rank holds the whole graph).
+template <class F> py::object tree_over(MPI_Comm comm, TreeRequest rq, bool arc_paths, F compute) {
+  rq.arcs = arc_paths ? ArcGeometry::Paths : ArcGeometry::None;
   std::optional<DistributedOutcome> d;
   {
     py::gil_scoped_release release;
@@ -307,15 +308,15 @@ PyPiece piece_from_arrays(const DoubleArray &points, const std::vector<IndexArra
 // rank holds the whole mesh and calls this; rank 0 gets the tree, the others None.
 py::object contour_tree_mpi(const PyMesh &m, long long fortran_comm, const std::string &method,
                             int refine, int threads, bool keep_flat, bool force, bool augmented,
-                            const std::string &simplify) {
+                            const std::string &simplify, bool arc_paths) {
 #ifdef HOCT_WITH_MPI
   const MPI_Comm comm = running_comm(fortran_comm, "contour_tree");
-  return tree_over(comm,
-                   tree_request(method, refine, threads, keep_flat, force, augmented, simplify),
-                   [&](const TreeRequest &rq) { return distributed_tree(m.input, rq, comm); });
+  return tree_over(
+      comm, tree_request(method, refine, threads, keep_flat, force, augmented, simplify), arc_paths,
+      [&](const TreeRequest &rq) { return distributed_tree(m.input, rq, comm); });
 #else
   (void)m, (void)fortran_comm, (void)method, (void)refine, (void)threads, (void)keep_flat,
-      (void)force, (void)augmented, (void)simplify;
+      (void)force, (void)augmented, (void)simplify, (void)arc_paths;
   no_mpi("contour_tree");
 #endif
 }
@@ -324,7 +325,7 @@ py::object contour_tree_mpi(const PyMesh &m, long long fortran_comm, const std::
 // congruent with it).
 py::object contour_tree_piece(const PyPiece &p, long long fortran_comm, const std::string &method,
                               int refine, int threads, bool keep_flat, bool force, bool augmented,
-                              const std::string &simplify) {
+                              const std::string &simplify, bool arc_paths) {
 #ifdef HOCT_WITH_MPI
   const MPI_Comm comm = running_comm(fortran_comm, "contour_tree");
   int same = MPI_UNEQUAL;
@@ -333,13 +334,13 @@ py::object contour_tree_piece(const PyPiece &p, long long fortran_comm, const st
     throw Error("contour_tree: comm is not the communicator the piece was made on");
   return tree_over(comm,
                    tree_request(method, refine, threads, keep_flat, force, augmented, simplify),
-                   [&](const TreeRequest &rq) {
+                   arc_paths, [&](const TreeRequest &rq) {
                      return p.share ? distributed_tree(RankInput(*p.share), rq, comm)
                                     : distributed_tree(*p.whole, rq, comm);
                    });
 #else
   (void)p, (void)fortran_comm, (void)method, (void)refine, (void)threads, (void)keep_flat,
-      (void)force, (void)augmented, (void)simplify;
+      (void)force, (void)augmented, (void)simplify, (void)arc_paths;
   no_mpi("contour_tree");
 #endif
 }

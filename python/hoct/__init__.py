@@ -388,7 +388,7 @@ def from_meshio(mesh, scalar=None, component=None, merge_duplicates=None):
 
 
 def contour_tree(mesh, simplify=None, threads=None, method="exact", refine=4, keep_flat=False,
-                 force=False, augmented=False, comm=None):
+                 force=False, augmented=False, comm=None, arc_paths=False):
     """The contour tree of `mesh`, as `hoct tree` computes it (the same library call); on a
     domain that is not one disk or one sphere its Reeb graph (`kind`, `loops`), by every method:
 
@@ -401,13 +401,16 @@ def contour_tree(mesh, simplify=None, threads=None, method="exact", refine=4, ke
     augmented  keep the regular nodes (`--augmented`; no simplification then)
     force      compute what is well defined past inverted or folded cells and unmerged
                duplicate vertices (`--force`); without it such a mesh raises HoctError
+    arc_paths  with comm: the ranks' pieces draw the arcs on the surface together (no rank
+               holds the whole graph), for Tree.arc_paths() and write_vtp (`mpirun hoct tree
+               --vtp`); without comm the Tree draws them when asked
 
     comm       an mpi4py communicator (`from mpi4py import MPI; comm=MPI.COMM_WORLD`): the
                tree computed over its ranks, as `mpirun -np N hoct tree` does. Every rank
                calls this with the same whole mesh (each reads the file); each computes the tree
                of its share of the cells and the ranks merge their join and split trees. Rank 0
-               gets the tree (the same as without comm, and its arcs not drawn on the surface:
-               `write_vtp` draws them straight); the other ranks get None. Errors are raised on
+               gets the tree (the same as without comm; its arcs drawn on the surface with
+               arc_paths=True, else straight in `write_vtp`); the other ranks get None. Errors are raised on
                every rank; one that only one rank meets ends the job (MPI_Abort), as the others
                would wait for it. A domain with holes or handles gets its Reeb graph (each
                rank's pieces cut into disks, glued back in the tree of ranks, by every method;
@@ -430,7 +433,10 @@ def contour_tree(mesh, simplify=None, threads=None, method="exact", refine=4, ke
                       _args.threads(threads, what), _args.flag(keep_flat, what + ": keep_flat"),
                       _args.flag(force, what + ": force"),
                       _args.flag(augmented, what + ": augmented"),
-                      _args.threshold(simplify, what + ": simplify"))
+                      _args.threshold(simplify, what + ": simplify"),
+                      _args.flag(arc_paths, what + ": arc_paths"))
+    if arc_paths is not False:  # without comm the Tree draws its arcs when asked
+        _args.flag(arc_paths, what + ": arc_paths")
     return _hoct.contour_tree(mesh, _args.text(method, what + ": method"),
                               _args.integer(refine, what + ": refine", 1, _args.MAX_REFINE),
                               _args.threads(threads, what), _args.flag(keep_flat, what + ": keep_flat"),

@@ -28,6 +28,10 @@ from vtkmodules.util.vtkConstants import VTK_STRING  # noqa: E402
 from vtkmodules.vtkCommonCore import vtkCommand  # noqa: E402
 
 
+# The field data Distribution of a run where each process keeps its piece and the pieces draw
+# the arcs (Arc Paths Over Processes, the default).
+OWN_PIECE = "each process its own piece; arcs: drawn by the processes' pieces (0 straight)"
+
 def local_output(proxy, port):
     """Rank 0's own output (not gathered from the other ranks)."""
     return dsa.WrapDataObject(proxy.GetClientSideObject().GetOutputDataObject(port))
@@ -154,7 +158,8 @@ def main():
     # CLI's up to the numbering of cells (the gathered pieces number them their own way).
     spread = pv.RedistributeDataSet(Input=reader)
     for threshold in (0.0, 1.0):
-        f = pv.HigherOrderContourTree(Input=spread, PersistenceThreshold=threshold)
+        f = pv.HigherOrderContourTree(Input=spread, PersistenceThreshold=threshold,
+                                      ArcPathsOverProcesses=0)
         errors = catch(f, vtkCommand.ErrorEvent)
         warnings = catch(f, vtkCommand.WarningEvent)
         f.UpdatePipeline()
@@ -173,17 +178,16 @@ def main():
         compare_whole(label + ", gathered", tp.fetch(f, 0), tp.fetch(f, 1), tree)
         straight = local_output(f, 1).GetNumberOfPoints()
         pv.Delete(f)
-    # Arc Paths Over Processes: the pieces draw the arcs on the surface together, no process
-    # holding the whole mesh (the Distribution says so): the same tree, with curved arcs (more
-    # points than straight).
-    f = pv.HigherOrderContourTree(Input=spread, ArcPathsOverProcesses=1)
+    # Arc Paths Over Processes (the default): the pieces draw the arcs on the surface together,
+    # no process holding the whole mesh (the Distribution says so): the same tree, with curved
+    # arcs (more points than straight).
+    f = pv.HigherOrderContourTree(Input=spread)
     errors = catch(f, vtkCommand.ErrorEvent)
     f.UpdatePipeline()
     label = "two pieces, arc paths"
     tp.check(not errors, f"{label}: errors {errors}")
     compare_whole(label, local_output(f, 0), local_output(f, 1), tree)
-    tp.check(distribution(f) == "each process its own piece; arcs: drawn by the processes' "
-             "pieces (0 straight)",
+    tp.check(distribution(f) == OWN_PIECE,
              f"{label}: the Distribution says {distribution(f)!r}")
     curved = local_output(f, 1).GetNumberOfPoints()
     tp.check(curved > straight, f"{label}: {curved} points on the arcs, straight ones have {straight}")
@@ -201,7 +205,7 @@ def main():
     label = "4 pieces with ghosts"
     tp.check(not errors and not warnings, f"{label}: errors {errors}, warnings {warnings}")
     compare_whole(label, local_output(f, 0), local_output(f, 1), want)
-    tp.check(distribution(f) == "each process its own piece",
+    tp.check(distribution(f) == OWN_PIECE,
              f"{label}: each process keeps its pieces, not {distribution(f)!r}")
     pv.Delete(f)
     # The linear method by the same pieces: the CLI's --linear tree.
@@ -216,7 +220,7 @@ def main():
     places = [sorted(tuple(round(x, 9) for x in n["position"]) for n in t["nodes"])
               for t in (want, tp.cli_tree(pvtu))]
     tp.check(places[0] != places[1], f"{label}: the linear tree differs from the exact one here")
-    tp.check(distribution(f) == "each process its own piece",
+    tp.check(distribution(f) == OWN_PIECE,
              f"{label}: each process keeps its pieces, not {distribution(f)!r}")
     pv.Delete(f)
     # And the refine method, K = 2.
@@ -228,7 +232,7 @@ def main():
     label = "4 pieces with ghosts, refine 2"
     tp.check(not errors, f"{label}: errors {errors}")
     compare_whole(label, local_output(f, 0), local_output(f, 1), want)
-    tp.check(distribution(f) == "each process its own piece",
+    tp.check(distribution(f) == OWN_PIECE,
              f"{label}: each process keeps its pieces, not {distribution(f)!r}")
     pv.Delete(f)
 
@@ -266,7 +270,7 @@ def main():
         label = "DOLFINx P3 over two processes"
         tp.check(not errors, f"{label}: errors {errors}")
         compare_whole(label, local_output(f, 0), local_output(f, 1), tp.cli_tree(p3))
-        tp.check(distribution(f) == "each process its own piece",
+        tp.check(distribution(f) == OWN_PIECE,
                  f"{label}: each process keeps its piece, not {distribution(f)!r}")
         notes = local_output(f, 0).GetFieldData().GetAbstractArray("Notes")
         tp.check(notes is not None and "Gauss-Lobatto-Legendre" in notes.GetValue(0),

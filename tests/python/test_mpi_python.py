@@ -6,7 +6,8 @@ generated genus-0 datasets (plateaus, quadrilaterals, a field at +1e7 with --sim
 --augmented, the linear and the refine method on a plateau) and a plate with 100 holes (its Reeb graph) the JSON rank 0 writes
 (`write_json(timings=False)`) must be byte-identical to `hoct tree --json --no-timings` for 1,
 2 and 3 ranks (the command line's test takes 1, 2, 3, 4 and 7 through the same library call),
-and the other ranks get None. The communicator is the one given: four ranks
+and the other ranks get None; with arc_paths=True rank 0's tree has every arc drawn on the
+surface by the ranks' pieces (no jump longer than the command line's). The communicator is the one given: four ranks
 split into two groups of two compute two different trees at once, each group's rank 0 matching
 its own file's. Refusals are raised on every rank as HoctError with one message
 (a method that is none, a comm that is no mpi4py communicator), and no rank is left waiting.
@@ -56,6 +57,10 @@ SCRIPT = textwrap.dedent('''
     tree = hoct.contour_tree(mesh, comm=comm, threads=1, **kwargs)
     if comm.rank == 0:
         tree.write_json(out, timings=False)
+        if kwargs.get("arc_paths"):
+            tree.write_vtp(out + ".vtp")
+            paths = tree.arc_paths()
+            print(f"\\nPATHS {len(paths)} {sum(len(p) > 2 for p in paths)}", flush=True)
     elif tree is not None:
         print(f"rank {world.rank} got a tree", flush=True)
         sys.exit(3)
@@ -135,6 +140,24 @@ with tempdir() as d:
         r.check(read(got_a) == read(want_a), "split communicators: group 0's tree differs")
         r.check(read(got_b) == read(want_b), "split communicators: group 1's tree differs")
     print("split communicators checked", flush=True)
+
+    # arc_paths=True: the ranks' pieces draw the arcs (exact/piece_arcs): one polyline per arc,
+    # most over the surface, none with a step longer than the command line's longest.
+    from mpi_testing import longest_step, polylines
+    heater_vtp = os.path.join(d, "heater_cli.vtp")
+    run("tree", heater, "--vtp", heater_vtp, "-q")
+    for n in (2, 3):
+        got = os.path.join(d, f"arcs_{n}.json")
+        p = mpi(n, "trees", json.dumps({"arc_paths": True}), heater, got)
+        counts = re.search(r"PATHS (\d+) (\d+)", p.stdout)
+        lines = polylines(got + ".vtp") if os.path.exists(got + ".vtp") else []
+        arcs = len(json.load(open(got))["arcs"]) if os.path.exists(got) else -1
+        r.check(p.returncode == 0 and counts and int(counts[1]) == arcs == len(lines)
+                and int(counts[2]) > arcs // 2 and longest_step(lines) <= 1.5 * longest_step(
+                    polylines(heater_vtp)),
+                f"arc_paths=True, {n} ranks: the pieces' arcs ({p.returncode}, {arcs} arcs, "
+                f"{len(lines)} lines):\n{p.stdout[-500:]}{p.stderr[-1500:]}")
+    print("arc_paths checked", flush=True)
 
     # Refusals: raised on every rank, with one message, and the job ends normally.
     for label, path, kwargs, text in [

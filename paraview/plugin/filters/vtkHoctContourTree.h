@@ -59,7 +59,7 @@ public:
 
   // On several processes with cells: draw the arcs on the surface, as on one process (as
   // `mpirun hoct tree --vtp` does): the pieces draw the arcs together, no process holding the
-  // whole mesh. Off (the default): straight arcs.
+  // whole mesh (the default). Off: straight arcs.
   vtkSetMacro(ArcPathsOverProcesses, bool);
   vtkGetMacro(ArcPathsOverProcesses, bool);
   vtkBooleanMacro(ArcPathsOverProcesses, bool);
@@ -84,7 +84,7 @@ protected:
   int RefineLevel = 4;
   bool KeepFlat = false;
   bool Force = false;
-  bool ArcPathsOverProcesses = false;
+  bool ArcPathsOverProcesses = true;
   int Threads = 0;
   bool WarnedPerPiece = false; // the per-piece warning (a build without MPI) is given once
 
