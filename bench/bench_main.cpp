@@ -572,7 +572,8 @@ void mpi_section(const Settings &s) {
   const std::vector<int> counts = s.quick ? std::vector<int>{1, 2} : std::vector<int>{1, 2, 4, 8};
   ScratchDir scratch;
   const std::string vtu = scratch.file("random.vtu"), pvtu = scratch.file("random.pvtu"),
-                    plate = scratch.file("plate.vtu"), shuffled = scratch.file("shuffled.vtu");
+                    plate = scratch.file("plate.vtu"), shuffled = scratch.file("shuffled.vtu"),
+                    vtp = scratch.file("arcs.vtp");
   long long cells = 0, plate_cells = 0;
   {
     DatasetOptions o;
@@ -623,11 +624,23 @@ void mpi_section(const Settings &s) {
        "the plate's PL Reeb graph, `--linear`, FILE.vtu (each rank reads its own part)",
        "cubic cells of the plate with 100 holes",
        plate_cells,
-       {"--linear"}}};
+       {"--linear"}},
+      {vtu,
+       "the arcs drawn on the surface, `--vtp V`, FILE.vtu (the pieces draw them)",
+       "random cubic cells",
+       cells,
+       {"--vtp", vtp}},
+      {plate,
+       "the plate's Reeb graph with its arcs drawn, `--vtp V`, FILE.vtu (the pieces draw them)",
+       "cubic cells of the plate with 100 holes",
+       plate_cells,
+       {"--vtp", vtp}}};
   for (const Input &input : inputs) {
     const std::string plain_json = scratch.file("plain.json");
     std::vector<double> plain;
-    std::map<int, std::vector<double>> whole, piece, kept, sent, received, peak;
+    std::map<int, std::vector<double>> whole, piece, kept, sent, received, peak, arcs_received,
+        arcs_reports, arcs_neighbour, arcs_seconds;
+    std::map<int, std::string> arcs_rounds;
     std::map<int, bool> same, by_pieces;
     for (int i = 0; i < runs; ++i) {
       std::vector<std::string> one{hoct,           "tree",      input.file, "--json", plain_json,
@@ -664,6 +677,25 @@ void mpi_section(const Settings &s) {
               root_received = rk;
           }
         }
+        // "  arcs' paths: by the ranks, L by a rank ..., S straight; rank 0 received R KiB
+        // (components C), sent ... KiB; a rank sent the others at most N KiB; T s".
+        if (const std::size_t at = text.find("arcs' paths: by the ranks, ");
+            at != std::string::npos) {
+          const std::string line = text.substr(at, text.find('\n', at) - at);
+          double r = 0, c = 0, nb = 0, t = 0;
+          const std::size_t rec = line.find("rank 0 received"), most = line.find("at most");
+          if (rec != std::string::npos && most != std::string::npos &&
+              std::sscanf(line.c_str() + rec, "rank 0 received %lf KiB (components %lf)", &r, &c) ==
+                  2 &&
+              std::sscanf(line.c_str() + most, "at most %lf KiB; %lf s", &nb, &t) == 2) {
+            arcs_received[n].push_back(r);
+            arcs_reports[n].push_back(c);
+            arcs_neighbour[n].push_back(nb);
+            arcs_seconds[n].push_back(t);
+          }
+          const std::size_t from = std::string("arcs' paths: by the ranks, ").size();
+          arcs_rounds[n] = line.substr(from, line.find(';') - from);
+        }
         piece[n].push_back(max_piece);
         kept[n].push_back(max_kept);
         sent[n].push_back(max_sent);
@@ -673,7 +705,7 @@ void mpi_section(const Settings &s) {
     }
     std::string flags;
     for (const std::string &f : input.flags)
-      flags += " " + f;
+      flags += " " + (f == vtp ? std::string("V") : f);
     std::printf("## MPI, %s: `mpirun --oversubscribe -np N hoct tree FILE --json J --no-timings "
                 "--threads 1%s` (HOCT_MPI=1) on %lld %s, a fresh mpirun per run, rank counts "
                 "alternated with one plain process (`hoct tree FILE --threads 1%s`): medians of "
@@ -693,6 +725,18 @@ void mpi_section(const Settings &s) {
                   by_pieces[n] ? "yes" : "NO");
       std::fflush(stdout);
     }
+    std::printf("\n");
+    if (arcs_received.empty())
+      continue;
+    std::printf("The arcs' drawing (from the summary's \"arcs' paths\" line): medians; the rounds "
+                "of the last run\n\n| ranks | drawing (s) | KiB rank 0 received | of which "
+                "reports | most KiB a rank sent the others | arcs drawn |\n"
+                "|---|---|---|---|---|---|\n");
+    for (int n : counts)
+      if (!arcs_received[n].empty())
+        std::printf("| %d | %.3f | %.1f | %.1f | %.1f | %s |\n", n, median(arcs_seconds[n]),
+                    median(arcs_received[n]), median(arcs_reports[n]), median(arcs_neighbour[n]),
+                    arcs_rounds[n].c_str());
     std::printf("\n");
   }
 }
