@@ -1,6 +1,6 @@
 // The steps of exact/piece_arcs run over all pieces: the arcs drawn by pieces that may sit in
 // different processes (one per MPI rank: distributed/distributed_arc_paths) or all in this one
-// (InProcessLinks: the tests, the benchmark). `PieceLinks` carries the steps' bytes between
+// (InProcessLinks: the unit tests). `PieceLinks` carries the steps' bytes between
 // the pieces; the root (rank 0) routes the arcs and gets their paths.
 #pragma once
 

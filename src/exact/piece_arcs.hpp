@@ -132,9 +132,10 @@ struct Stretch {
   NodeKey from, to;
 };
 
-// 3. From every piece's components (by piece), the stretches each piece draws (by piece);
-// routed[k] set for the arcs which[k] that have a route.
-std::vector<std::vector<Stretch>> route_arcs(std::span<const std::vector<std::byte>> components,
+// 3. From every piece's component_report (by piece), the stretches each piece draws (by
+// piece): the route through the fewest components from one holding the lower end to one
+// holding the upper end; routed[k] set for the arcs which[k] that have one.
+std::vector<std::vector<Stretch>> route_arcs(std::span<const std::vector<std::byte>> reports,
                                              std::span<const int64_t> which,
                                              std::span<const ArcEnds> arcs,
                                              std::vector<uint8_t> &routed);
