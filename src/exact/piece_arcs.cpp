@@ -19,6 +19,29 @@ void PieceArcGraph::index_keys() {
   std::sort(by_key.begin(), by_key.end());
 }
 
+void PieceArcGraph::set_kept(int32_t number, const PieceTrees &trees, std::vector<int64_t> at) {
+  const std::size_t n = trees.nodes.size();
+  piece = number;
+  ids = std::move(at);
+  keys.resize(n);
+  values.resize(n);
+  spans.resize(n);
+  shared.resize(n);
+  chain_links.clear();
+  for (std::size_t k = 0; k < n; ++k) {
+    const PieceNode &node = trees.nodes[k];
+    keys[k] = node.key;
+    values[k] = node.value;
+    spans[k] = node.span;
+    shared[k] = node.span[0] != number || node.span[1] != number; // other pieces may hold it
+    if (k > 0 && keys[k] == keys[k - 1])
+      chain_links.push_back({static_cast<int64_t>(k - 1), static_cast<int64_t>(k)});
+  }
+  join_parent = trees.join_parent;
+  split_parent = trees.split_parent;
+  index_keys();
+}
+
 int64_t PieceArcGraph::find(const NodeKey &key) const {
   const auto it = std::lower_bound(by_key.begin(), by_key.end(), std::pair(key, int64_t{-1}));
   return it != by_key.end() && it->first == key ? it->second : -1;

@@ -55,6 +55,10 @@ struct PieceArcGraph {
   std::vector<std::array<int32_t, 2>> spans;
   std::vector<std::vector<int64_t>> common;
 
+  // The kept nodes of the piece `piece`'s trees, at graph nodes `ids` (in the trees' order):
+  // keys, values, spans, parents, and the copies of one point (one key, next to each other: a
+  // piece cut into disks) joined in chain_links; indexed for find.
+  void set_kept(int32_t piece, const PieceTrees &trees, std::vector<int64_t> ids);
   // The kept node with this key (index into ids), or -1.
   int64_t find(const NodeKey &key) const;
   // Sorted copy of keys with their indices (built by index_keys).

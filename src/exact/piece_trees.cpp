@@ -147,25 +147,10 @@ PieceTrees piece_trees(const Mesh &mesh, const PiecePlace &place, const ExactTre
   split_cell_time(b.totals, time);
   if (arcs) {
     PieceArcGraph &a = *arcs;
-    a.ids = kt.nodes;
-    a.keys.resize(out.nodes.size());
-    a.values.resize(out.nodes.size());
-    a.shared.resize(out.nodes.size());
-    a.spans.resize(out.nodes.size());
-    a.piece = place.piece;
-    for (std::size_t i = 0; i < out.nodes.size(); ++i) {
-      a.keys[i] = out.nodes[i].key;
-      a.values[i] = out.nodes[i].value;
-      a.spans[i] = keys.span(kt.nodes[i]);
-      a.shared[i] = !within(a.spans[i], place.piece, place.piece);
-    }
-    a.join_parent = kt.join_parent;
-    a.split_parent = kt.split_parent;
-    a.chain_links.clear();
+    a.set_kept(place.piece, out, kt.nodes);
     for (const SharedChain &c : out.chains)
       for (std::size_t k = 0; k + 1 < c.nodes.size(); ++k)
         a.chain_links.push_back({c.nodes[k].node, c.nodes[k + 1].node});
-    a.index_keys();
     a.graph = exact_arc_graph(mesh, en, g, eo, threads);
   }
   return out;

@@ -38,32 +38,9 @@ PieceTrees kept_trees(const PlPieceMesh &m, const PiecePlace &place,
   std::vector<int64_t> kept;
   PieceTrees trees = pl_kept_trees(m, place, values, edges, keep, order, m.point, threads, &kept);
   if (arcs) {
-    PieceArcGraph &a = *arcs;
-    const ScalarGraph g = pl.graph();
-    auto graph = std::make_shared<GeometricGraph>(pl.points, pl.values);
-    for (int64_t v = 0; v < g.size(); ++v)
-      for (const int64_t u : g.neighbors(v))
-        if (u > v)
-          graph->add_edge(v, u);
-    graph->finish();
-    a.graph = std::move(graph);
-    a.ids.resize(kept.size());
-    a.keys.resize(kept.size());
-    a.values.resize(kept.size());
-    a.shared.resize(kept.size());
-    a.spans.resize(kept.size());
-    a.piece = place.piece;
-    for (std::size_t k = 0; k < kept.size(); ++k) {
-      a.ids[k] = at(kept[k]);
-      a.keys[k] = trees.nodes[k].key;
-      a.values[k] = trees.nodes[k].value;
-      a.shared[k] = trees.nodes[k].shared;
-      a.spans[k] = trees.nodes[k].span;
-    }
-    a.join_parent = trees.join_parent;
-    a.split_parent = trees.split_parent;
-    a.chain_links.clear(); // the sweeps have every PL edge, shared or not
-    a.index_keys();
+    for (int64_t &k : kept)
+      k = at(k);
+    pl_arc_graph(m, place, trees, std::move(kept), *arcs);
   }
   return trees;
 }
@@ -89,6 +66,20 @@ PieceTrees pl_kept_trees(const PlPieceMesh &m, const PiecePlace &place,
     node.value = values[i];
   }
   return trees;
+}
+
+void pl_arc_graph(const PlPieceMesh &m, const PiecePlace &place, const PieceTrees &trees,
+                  std::vector<int64_t> points, PieceArcGraph &arcs) {
+  const PlMesh &pl = m.pl;
+  const ScalarGraph g = pl.graph();
+  auto graph = std::make_shared<GeometricGraph>(pl.points, pl.values);
+  for (int64_t v = 0; v < g.size(); ++v)
+    for (const int64_t u : g.neighbors(v))
+      if (u > v)
+        graph->add_edge(v, u);
+  graph->finish();
+  arcs.graph = std::move(graph);
+  arcs.set_kept(place.piece, trees, std::move(points));
 }
 
 PieceNode pl_piece_node(const PlPieceMesh &m, const PiecePlace &place, int64_t p) {

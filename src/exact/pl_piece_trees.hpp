@@ -52,6 +52,12 @@ struct PlPieceMesh {
 };
 PlPieceMesh linear_piece_mesh(const MeshInput &piece, const PiecePlace &place);
 PlPieceMesh refined_piece_mesh(const Mesh &mesh, const PiecePlace &place, int k);
+// The piece's PL graph to draw the whole tree's arcs through (exact/piece_arcs): its
+// 1-skeleton, with the kept nodes of `trees` at points `points` of pl (a cut piece's copies of
+// one point joined).
+void pl_arc_graph(const PlPieceMesh &m, const PiecePlace &place, const PieceTrees &trees,
+                  std::vector<int64_t> points, PieceArcGraph &arcs);
+
 // Point p of the piece's PL mesh as a kept node (its value left to the caller).
 PieceNode pl_piece_node(const PlPieceMesh &m, const PiecePlace &place, int64_t p);
 // The kept join and split trees (sweep_merge_trees) of vertices 0..n-1 over points of the

@@ -12,47 +12,6 @@
 #include <numeric>
 
 namespace hoct {
-namespace {
-
-// The piece's PL graph to draw arcs through: its uncut 1-skeleton, the kept copies (`kept`,
-// each a point of pl: `point`) found at their point, the copies of one point (one key, next to
-// each other) joined in the components.
-void pl_arc_graph(const PlPieceMesh &m, const PiecePlace &place, const PieceTrees &trees,
-                  std::span<const int64_t> kept, std::span<const int64_t> point, PieceArcGraph &a) {
-  const PlMesh &pl = m.pl;
-  const ScalarGraph g = pl.graph();
-  auto graph = std::make_shared<GeometricGraph>(pl.points, pl.values);
-  for (int64_t v = 0; v < g.size(); ++v)
-    for (const int64_t u : g.neighbors(v))
-      if (u > v)
-        graph->add_edge(v, u);
-  graph->finish();
-  a.graph = std::move(graph);
-  const std::size_t n = kept.size();
-  a.piece = place.piece;
-  a.ids.resize(n);
-  a.keys.resize(n);
-  a.values.resize(n);
-  a.spans.resize(n);
-  a.shared.resize(n);
-  a.chain_links.clear();
-  for (std::size_t k = 0; k < n; ++k) {
-    const PieceNode &node = trees.nodes[k];
-    a.ids[k] = point[static_cast<std::size_t>(kept[k])];
-    a.keys[k] = node.key;
-    a.values[k] = node.value;
-    a.spans[k] = node.span;
-    a.shared[k] = !within(node.span, place.piece, place.piece);
-    if (k > 0 && a.keys[k] == a.keys[k - 1])
-      a.chain_links.push_back({static_cast<int64_t>(k - 1), static_cast<int64_t>(k)});
-  }
-  a.join_parent = trees.join_parent;
-  a.split_parent = trees.split_parent;
-  a.index_keys();
-}
-
-} // namespace
-
 ReebGroup pl_reeb_group(const PlPieceMesh &m, const PiecePlace &place, bool augmented, int threads,
                         PieceArcGraph *arcs) {
   const PlMesh &pl = m.pl;
@@ -161,8 +120,12 @@ ReebGroup pl_reeb_group(const PlPieceMesh &m, const PiecePlace &place, bool augm
           ends[j] = cut.corner_vertex(topo, c, k);
     side(ends[0], ends[1], span);
   }
-  if (arcs)
-    pl_arc_graph(m, place, trees, kept_copies, point, *arcs);
+  if (arcs) {
+    std::vector<int64_t> points(kept_copies.size());
+    for (std::size_t k = 0; k < points.size(); ++k)
+      points[k] = point[static_cast<std::size_t>(kept_copies[k])];
+    pl_arc_graph(m, place, trees, std::move(points), *arcs);
+  }
   return reeb_group(trees, std::move(chains), augmented);
 }
 

@@ -91,32 +91,12 @@ PieceTrees reeb_piece(const Mesh &mesh, const PiecePlace &place, const ExactTree
   count_copies_once(cut, en, out.counts);
   split_cell_time(b.totals, time);
   if (arcs) {
+    // The copies of one point are one point of the surface: a link in the graph too.
     PieceArcGraph &a = *arcs;
-    const std::size_t n_kept = out.nodes.size();
-    a.piece = place.piece;
-    a.ids = kt.nodes;
-    a.keys.resize(n_kept);
-    a.values.resize(n_kept);
-    a.spans.resize(n_kept);
-    a.shared.resize(n_kept);
-    for (std::size_t i = 0; i < n_kept; ++i) {
-      a.keys[i] = out.nodes[i].key;
-      a.values[i] = out.nodes[i].value;
-      a.spans[i] = keys.span(kt.nodes[i]);
-      a.shared[i] = !within(a.spans[i], place.piece, place.piece);
-    }
-    a.join_parent = kt.join_parent;
-    a.split_parent = kt.split_parent;
-    // The copies of one point (one key, next to each other) are one point of the surface: a
-    // link in the graph, and joined in the components.
+    a.set_kept(place.piece, out, kt.nodes);
     std::vector<std::array<int64_t, 2>> links;
-    a.chain_links.clear();
-    for (std::size_t i = 1; i < n_kept; ++i)
-      if (a.keys[i] == a.keys[i - 1]) {
-        a.chain_links.push_back({static_cast<int64_t>(i - 1), static_cast<int64_t>(i)});
-        links.push_back({kt.nodes[i - 1], kt.nodes[i]});
-      }
-    a.index_keys();
+    for (const auto &[u, v] : a.chain_links)
+      links.push_back({a.ids[u], a.ids[v]});
     a.graph = exact_arc_graph(m, b.edge_nodes, g, eo, threads, links);
   }
   return out;
