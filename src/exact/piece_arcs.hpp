@@ -15,13 +15,15 @@
 //     of those nodes were exchanged once, border_offers), and reports to rank 0 only its
 //     components, their ends and the neighbours' components they touch (component_report):
 //     what rank 0 receives grows with the components, not with the pieces' borders;
-//  3. rank 0 finds a route from end to end through the fewest components (route_arcs), a
-//     stretch per piece, between nodes two pieces share;
-//  4. each piece draws its stretches within the round's values (draw_stretches), and the
-//     stretches are joined end to end (join_stretches).
+//  3. rank 0 finds a route from end to end through the fewest components (exact/arc_routes),
+//     a stretch per piece, between nodes two pieces share;
+//  4. each piece draws its stretches within the round's values (draw_stretches), and rank 0
+//     joins them end to end (exact/arc_routes).
 // An arc no round routes is drawn straight and counted.
 #pragma once
 
+#include "exact/arc_records.hpp"
+#include "exact/arc_routes.hpp"
 #include "exact/piece_trees.hpp"
 #include "tree/geometric_graph.hpp"
 #include "util/vec.hpp"
@@ -66,26 +68,9 @@ struct PieceArcGraph {
   void index_keys();
 };
 
-// An arc of the whole tree: its lower and upper end and their values (relative). Parallel arcs
-// (a Reeb graph's loops) have a group (else -1) and a level in it: each is drawn avoiding the
-// graph nodes of its group's lower levels' paths, as one process draws them.
-struct ArcEnds {
-  NodeKey lo_key, hi_key;
-  double lo = 0, hi = 0;
-  int32_t group = -1, level = 0;
-};
-
-// The rounds, in order: within the arc's values, below the upper one, above the lower one,
-// anywhere.
-enum class ArcRound : int32_t { Band = 0, Below = 1, Above = 2, Anywhere = 3 };
-constexpr int kArcRounds = 4;
-
 // The graph nodes of a piece that its parallel arcs' paths went through, by arc: what the
 // higher levels of their groups avoid.
 using ArcTrail = std::unordered_map<int64_t, std::vector<int64_t>>;
-
-// The values a round's paths stay within.
-std::array<double, 2> round_values(const ArcEnds &arc, ArcRound round);
 
 // 1. Of arcs `which`, those whose ends this piece both holds and joins by a search within the
 // round's values visiting at most max_visits nodes (avoiding the lower levels' nodes in
@@ -129,34 +114,10 @@ std::vector<std::byte> component_report(const PieceArcGraph &piece, const ArcCom
                                         std::span<const int64_t> which, ArcRound round,
                                         std::span<const std::vector<std::byte>> labels);
 
-// A piece's stretch of an arc: its place in the arc's route, and the keys it runs between.
-struct Stretch {
-  int64_t arc = 0;
-  int32_t step = 0, steps = 0;
-  NodeKey from, to;
-};
-
-// 3. From every piece's component_report (by piece), the stretches each piece draws (by
-// piece): the route through the fewest components from one holding the lower end to one
-// holding the upper end; routed[k] set for the arcs which[k] that have one.
-std::vector<std::vector<Stretch>> route_arcs(std::span<const std::vector<std::byte>> reports,
-                                             std::span<const int64_t> which,
-                                             std::span<const ArcEnds> arcs,
-                                             std::vector<uint8_t> &routed);
-
 // 4. The piece's stretches drawn within the round's values (avoiding their lower levels' nodes
 // in `trail`, where the parallel arcs' nodes are added), as bytes for join_stretches.
 std::vector<std::byte> draw_stretches(const PieceArcGraph &piece, std::span<const ArcEnds> arcs,
                                       std::span<const Stretch> stretches, ArcRound round,
                                       ArcTrail *trail = nullptr);
-
-// The stretches of all pieces (their draw_stretches bytes) joined into paths[arc] (the arcs
-// routed this round; each path was empty).
-void join_stretches(std::span<const std::vector<std::byte>> drawn,
-                    std::vector<std::vector<Vec3>> &paths);
-
-// Stretches as bytes, and back (a piece's share of route_arcs' answer).
-std::vector<std::byte> encode_stretches(std::span<const Stretch> stretches);
-std::vector<Stretch> decode_stretches(std::span<const std::byte> bytes);
 
 } // namespace hoct
