@@ -4,7 +4,8 @@
 // together (mesh/piece_surface: seams and shape; distributed/distributed_checks: duplicate
 // vertices), computes its piece's kept join and split trees (exact/piece_trees) and the ranks
 // merge them in a binary reduction tree; rank 0 finishes the tree (flat regions, branches,
-// simplification) as compute_tree does. Where the pieces find a problem, rank 0 checks the whole
+// simplification) as compute_tree does, and the pieces draw its arcs on the surface
+// (distributed_arc_paths) where asked. Where the pieces find a problem, rank 0 checks the whole
 // mesh alone, so that the report is the one a run without MPI gives. The tree is the one `hoct
 // tree` computes without MPI, for any number of ranks. Every rank must call it; errors on any rank
 // are thrown on all.
@@ -44,8 +45,8 @@ struct DistributedOutcome {
   // without MPI gives).
   std::string whole_check;
   // On rank 0: empty when the pieces computed the tree; else why rank 0 computed it from the
-  // whole mesh alone (a Reeb graph whose seams between pieces the gluing could not follow; the
-  // arcs' paths of a Reeb graph or a PL method; what the PL methods' pieces do not compute).
+  // whole mesh alone (a Reeb graph whose seams between pieces the gluing could not follow; what
+  // the PL methods' pieces do not compute).
   std::string whole_tree;
   // On rank 0: how the pieces drew the arcs on the surface (when asked to and they did).
   ArcPathCounts arc_paths;
