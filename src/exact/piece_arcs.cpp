@@ -64,21 +64,35 @@ std::array<double, 2> round_values(const ArcEnds &arc, ArcRound round) {
 
 namespace {
 
-// Sets s.avoid to the graph nodes of arc i's lower levels' paths in this piece (none: cleared);
-// whether its group has lower levels.
-bool avoid_lower_levels(std::span<const ArcEnds> arcs, int64_t i, const ArcTrail *trail,
-                        int64_t graph_size, GeometricGraph::Search &s) {
-  s.avoid.clear();
-  const ArcEnds &a = arcs[i];
-  if (!trail || a.group < 0 || a.level == 0)
-    return false;
-  s.avoid.assign(static_cast<std::size_t>(graph_size), 0);
-  for (const auto &[j, nodes] : *trail)
-    if (arcs[j].group == a.group && arcs[j].level < a.level)
-      for (const int64_t v : nodes)
-        s.avoid[v] = 1;
-  return true;
-}
+// The graph nodes a parallel arc avoids, flagged in a search's scratch (one LowerLevels per
+// scratch): only the flags set for the last arc are cleared, not a flag per node of the graph.
+class LowerLevels {
+public:
+  // Flags the graph nodes of arc i's lower levels' paths in this piece; whether its group has
+  // lower levels.
+  bool flag(std::span<const ArcEnds> arcs, int64_t i, const ArcTrail *trail, int64_t graph_size,
+            GeometricGraph::Search &s) {
+    for (const int64_t v : flagged_)
+      s.avoid[v] = 0;
+    flagged_.clear();
+    const ArcEnds &a = arcs[i];
+    if (!trail || a.group < 0 || a.level == 0)
+      return false;
+    if (s.avoid.size() != static_cast<std::size_t>(graph_size))
+      s.avoid.assign(static_cast<std::size_t>(graph_size), 0);
+    for (const auto &[j, nodes] : *trail)
+      if (arcs[j].group == a.group && arcs[j].level < a.level)
+        for (const int64_t v : nodes)
+          if (!s.avoid[v]) {
+            s.avoid[v] = 1;
+            flagged_.push_back(v);
+          }
+    return true;
+  }
+
+private:
+  std::vector<int64_t> flagged_;
+};
 
 } // namespace
 
@@ -95,25 +109,26 @@ draw_local_arcs(const PieceArcGraph &piece, std::span<const ArcEnds> arcs,
   const GeometricGraph &g = *piece.graph;
   const int used = threads_for(n, thread_count(threads), 16);
   std::vector<GeometricGraph::Search> scratch(static_cast<std::size_t>(used));
-  parallel_chunks(n, std::min<int64_t>(n, int64_t{used} * 256), used,
-                  [&](int64_t, int64_t begin, int64_t end, int worker) {
-                    GeometricGraph::Search &s = scratch[static_cast<std::size_t>(worker)];
-                    for (int64_t k = begin; k < end; ++k) {
-                      const ArcEnds &arc = arcs[which[k]];
-                      const int64_t a = piece.find(arc.lo_key), b = piece.find(arc.hi_key);
-                      if (a < 0 || b < 0)
-                        continue;
-                      avoid_lower_levels(arcs, which[k], trail, g.size(), s);
-                      const auto [lo, hi] = round_values(arc, round);
-                      std::vector<Vec3> p =
-                          g.band_path(piece.ids[a], piece.ids[b], lo, hi, max_visits, s);
-                      if (!s.nodes.empty()) {
-                        paths[k] = std::move(p);
-                        if (nodes)
-                          (*nodes)[k] = s.nodes;
-                      }
-                    }
-                  });
+  std::vector<LowerLevels> lower(static_cast<std::size_t>(used));
+  parallel_chunks(
+      n, std::min<int64_t>(n, int64_t{used} * 256), used,
+      [&](int64_t, int64_t begin, int64_t end, int worker) {
+        GeometricGraph::Search &s = scratch[static_cast<std::size_t>(worker)];
+        for (int64_t k = begin; k < end; ++k) {
+          const ArcEnds &arc = arcs[which[k]];
+          const int64_t a = piece.find(arc.lo_key), b = piece.find(arc.hi_key);
+          if (a < 0 || b < 0)
+            continue;
+          lower[static_cast<std::size_t>(worker)].flag(arcs, which[k], trail, g.size(), s);
+          const auto [lo, hi] = round_values(arc, round);
+          std::vector<Vec3> p = g.band_path(piece.ids[a], piece.ids[b], lo, hi, max_visits, s);
+          if (!s.nodes.empty()) {
+            paths[k] = std::move(p);
+            if (nodes)
+              (*nodes)[k] = s.nodes;
+          }
+        }
+      });
   return paths;
 }
 
@@ -198,6 +213,7 @@ ArcComponents piece_components(const PieceArcGraph &piece, std::span<const ArcEn
   out.count.assign(which.size(), 0);
   out.ends.assign(which.size(), {-1, -1});
   GeometricGraph::Search scratch;
+  LowerLevels lower;
   StampedSets sets(piece.ids.size());
   std::vector<int64_t> sources, graph_sources, label;
   for (std::size_t k = 0; k < which.size(); ++k) {
@@ -206,7 +222,7 @@ ArcComponents piece_components(const PieceArcGraph &piece, std::span<const ArcEn
     // The sources: the ends the piece holds, and its shared kept nodes within the values.
     const int64_t ends[2] = {piece.find(arc.lo_key), piece.find(arc.hi_key)};
     const bool avoiding =
-        piece.graph && avoid_lower_levels(arcs, which[k], trail, piece.graph->size(), scratch);
+        piece.graph && lower.flag(arcs, which[k], trail, piece.graph->size(), scratch);
     sources.clear();
     for (const int64_t x : ends)
       if (x >= 0)
@@ -375,6 +391,7 @@ std::vector<std::byte> draw_stretches(const PieceArcGraph &piece, std::span<cons
   std::vector<int64_t> arc, step, offset{0};
   std::vector<Vec3> points;
   GeometricGraph::Search s;
+  LowerLevels lower;
   constexpr double inf = std::numeric_limits<double>::infinity();
   for (const Stretch &st : stretches) {
     const int64_t a = piece.find(st.from), b = piece.find(st.to);
@@ -386,7 +403,7 @@ std::vector<std::byte> draw_stretches(const PieceArcGraph &piece, std::span<cons
     // Within the round's values: a search (the piece's components joined the two there), below
     // or above first within a short search, then the forest's path that stays there (not
     // while avoiding nodes: the forests know nothing of them).
-    const bool avoiding = avoid_lower_levels(arcs, st.arc, trail, g.size(), s);
+    const bool avoiding = lower.flag(arcs, st.arc, trail, g.size(), s);
     std::vector<Vec3> p;
     if (round == ArcRound::Band || round == ArcRound::Anywhere || avoiding) {
       p = g.band_path(x, y, lo, hi, std::numeric_limits<int64_t>::max(), s);
